@@ -1,0 +1,16 @@
+// Listing 2.4: connecting the triangles of a cavity (section 2.3.4).
+#pragma once
+
+#include <vector>
+
+#include "mesh.h"
+
+namespace dt {
+
+/// Sets F[k] of every pair of faces in `cavity` that share an edge (Listing 2.4, 2.3.4).
+/// O(N log N) for N faces: one std::map search and insert or erase per edge. An edge seen
+/// once is left as it was (it borders a face outside the list). Throws std::logic_error if
+/// an edge is shared by more than two faces (a non-manifold input).
+void computeAdjacencies(std::vector<Face*>& cavity);
+
+}  // namespace dt

@@ -1,0 +1,338 @@
+#include "predicates.h"
+
+#include <gmp.h>
+#include <mpfr.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace dt {
+
+namespace {
+PredicateCounters g_counters;
+thread_local int g_lastStage = 0;
+
+constexpr double kU = 0x1p-53;  // unit roundoff of binary64, round to nearest
+
+int signOf(double v) { return (v > 0) - (v < 0); }
+}  // namespace
+
+PredicateCounters& predicateCounters() { return g_counters; }
+int lastPredicateStage() { return g_lastStage; }
+
+// ---------------------------------------------------------------------------------------------
+// Naive evaluation: exactly the notes' formula, in the order written.
+//! [orient2dNaive]
+double orient2dNaiveValue(double ax, double ay, double bx, double by, double cx, double cy) {
+  return (ax - cx) * (by - cy) - (ay - cy) * (bx - cx);
+}
+//! [orient2dNaive]
+int orient2dNaive(double ax, double ay, double bx, double by, double cx, double cy) {
+  return signOf(orient2dNaiveValue(ax, ay, bx, by, cx, cy));
+}
+
+double incircleNaiveValue(double ax, double ay, double bx, double by, double cx, double cy,
+                          double dx, double dy) {
+  const double adx = ax - dx, ady = ay - dy;
+  const double bdx = bx - dx, bdy = by - dy;
+  const double cdx = cx - dx, cdy = cy - dy;
+  const double alift = adx * adx + ady * ady;
+  const double blift = bdx * bdx + bdy * bdy;
+  const double clift = cdx * cdx + cdy * cdy;
+  return alift * (bdx * cdy - cdx * bdy) + blift * (cdx * ady - adx * cdy) +
+         clift * (adx * bdy - bdx * ady);
+}
+int incircleNaive(double ax, double ay, double bx, double by, double cx, double cy, double dx,
+                  double dy) {
+  return signOf(incircleNaiveValue(ax, ay, bx, by, cx, cy, dx, dy));
+}
+
+// ---------------------------------------------------------------------------------------------
+// Exact signs with GMP integers.
+//
+// Every finite double is M * 2^E with M an integer of at most 53 bits. Multiplying all the
+// coordinates of one predicate by the same power of two 2^-Emin (Emin the smallest E among them)
+// turns them into integers without changing the sign of the determinant, which is homogeneous.
+// The determinant is then evaluated in exact integer arithmetic. The integers can reach about
+// 2100 bits (1e-308 beside 1e308) and are squared in incircle: GMP does not care.
+namespace {
+
+struct ExactWorkspace {
+  mpz_t v[8];
+  mpz_t t[10];
+  ExactWorkspace() {
+    for (auto& z : v) mpz_init(z);
+    for (auto& z : t) mpz_init(z);
+  }
+  ~ExactWorkspace() {
+    for (auto& z : v) mpz_clear(z);
+    for (auto& z : t) mpz_clear(z);
+  }
+  ExactWorkspace(const ExactWorkspace&) = delete;
+  ExactWorkspace& operator=(const ExactWorkspace&) = delete;
+};
+
+ExactWorkspace& workspace() {
+  thread_local ExactWorkspace ws;
+  return ws;
+}
+
+// Splits x (finite) into an integer mantissa and the exponent of its unit in the last place.
+void splitDouble(double x, double& mant, int& e) {
+  int ex = 0;
+  const double m = std::frexp(x, &ex);  // x = m 2^ex, 0.5 <= |m| < 1 (exact, also subnormals)
+  mant = std::ldexp(m, 53);             // integer, |mant| < 2^53
+  e = ex - 53;
+}
+
+// Loads n doubles into ws.v[0..n) as integers sharing one scale.
+void loadScaled(const double* x, int n, ExactWorkspace& ws) {
+  double mant[8];
+  int e[8];
+  int emin = 0;
+  bool any = false;
+  for (int i = 0; i < n; ++i) {
+    if (x[i] == 0) {
+      mant[i] = 0;
+      e[i] = 0;
+      continue;
+    }
+    splitDouble(x[i], mant[i], e[i]);
+    if (!any || e[i] < emin) emin = e[i];
+    any = true;
+  }
+  for (int i = 0; i < n; ++i) {
+    mpz_set_d(ws.v[i], mant[i]);  // exact: |mant| < 2^53 is an integer
+    if (mant[i] != 0) mpz_mul_2exp(ws.v[i], ws.v[i], static_cast<mp_bitcnt_t>(e[i] - emin));
+  }
+}
+
+}  // namespace
+
+int orient2dExact(double ax, double ay, double bx, double by, double cx, double cy) {
+  ExactWorkspace& ws = workspace();
+  const double in[6] = {ax, ay, bx, by, cx, cy};
+  loadScaled(in, 6, ws);
+  mpz_t* v = ws.v;
+  mpz_t* t = ws.t;
+  mpz_sub(t[0], v[0], v[4]);  // ax - cx
+  mpz_sub(t[1], v[3], v[5]);  // by - cy
+  mpz_sub(t[2], v[1], v[5]);  // ay - cy
+  mpz_sub(t[3], v[2], v[4]);  // bx - cx
+  mpz_mul(t[4], t[0], t[1]);
+  mpz_mul(t[5], t[2], t[3]);
+  return mpz_cmp(t[4], t[5]) > 0 ? 1 : (mpz_cmp(t[4], t[5]) < 0 ? -1 : 0);
+}
+
+int incircleExact(double ax, double ay, double bx, double by, double cx, double cy, double dx,
+                  double dy) {
+  ExactWorkspace& ws = workspace();
+  const double in[8] = {ax, ay, bx, by, cx, cy, dx, dy};
+  loadScaled(in, 8, ws);
+  mpz_t* v = ws.v;
+  mpz_t* t = ws.t;
+  // Differences to the pivot d, in place: v[0..5] become adx, ady, bdx, bdy, cdx, cdy.
+  for (int i = 0; i < 6; ++i) mpz_sub(v[i], v[i], v[6 + (i & 1)]);
+  mpz_t& adx = v[0];
+  mpz_t& ady = v[1];
+  mpz_t& bdx = v[2];
+  mpz_t& bdy = v[3];
+  mpz_t& cdx = v[4];
+  mpz_t& cdy = v[5];
+  mpz_t& det = t[9];
+  // alift (bdx cdy - cdx bdy)
+  mpz_mul(t[0], adx, adx);
+  mpz_addmul(t[0], ady, ady);
+  mpz_mul(t[1], bdx, cdy);
+  mpz_submul(t[1], cdx, bdy);
+  mpz_mul(det, t[0], t[1]);
+  // blift (cdx ady - adx cdy)
+  mpz_mul(t[0], bdx, bdx);
+  mpz_addmul(t[0], bdy, bdy);
+  mpz_mul(t[1], cdx, ady);
+  mpz_submul(t[1], adx, cdy);
+  mpz_addmul(det, t[0], t[1]);
+  // clift (adx bdy - bdx ady)
+  mpz_mul(t[0], cdx, cdx);
+  mpz_addmul(t[0], cdy, cdy);
+  mpz_mul(t[1], adx, bdy);
+  mpz_submul(t[1], bdx, ady);
+  mpz_addmul(det, t[0], t[1]);
+  return mpz_sgn(det);
+}
+
+// ---------------------------------------------------------------------------------------------
+// The notes' scheme: static filter, then MPFR with 200 bits of precision.
+namespace {
+
+struct Mpfr200 {
+  mpfr_t v[8];
+  mpfr_t t[8];
+  Mpfr200() {
+    for (auto& z : v) mpfr_init2(z, 200);
+    for (auto& z : t) mpfr_init2(z, 200);
+  }
+  ~Mpfr200() {
+    for (auto& z : v) mpfr_clear(z);
+    for (auto& z : t) mpfr_clear(z);
+  }
+  Mpfr200(const Mpfr200&) = delete;
+  Mpfr200& operator=(const Mpfr200&) = delete;
+};
+
+Mpfr200& mpfr200() {
+  thread_local Mpfr200 ws;
+  return ws;
+}
+
+}  // namespace
+
+int orient2dMPFR200(double ax, double ay, double bx, double by, double cx, double cy) {
+  Mpfr200& w = mpfr200();
+  const double in[6] = {ax, ay, bx, by, cx, cy};
+  for (int i = 0; i < 6; ++i) mpfr_set_d(w.v[i], in[i], MPFR_RNDN);  // exact: 53 <= 200 bits
+  mpfr_sub(w.t[0], w.v[0], w.v[4], MPFR_RNDN);
+  mpfr_sub(w.t[1], w.v[3], w.v[5], MPFR_RNDN);
+  mpfr_sub(w.t[2], w.v[1], w.v[5], MPFR_RNDN);
+  mpfr_sub(w.t[3], w.v[2], w.v[4], MPFR_RNDN);
+  mpfr_mul(w.t[4], w.t[0], w.t[1], MPFR_RNDN);
+  mpfr_mul(w.t[5], w.t[2], w.t[3], MPFR_RNDN);
+  mpfr_sub(w.t[6], w.t[4], w.t[5], MPFR_RNDN);
+  return mpfr_sgn(w.t[6]);
+}
+
+int incircleMPFR200(double ax, double ay, double bx, double by, double cx, double cy, double dx,
+                    double dy) {
+  Mpfr200& w = mpfr200();
+  const double in[8] = {ax, ay, bx, by, cx, cy, dx, dy};
+  for (int i = 0; i < 8; ++i) mpfr_set_d(w.v[i], in[i], MPFR_RNDN);
+  for (int i = 0; i < 6; ++i) mpfr_sub(w.v[i], w.v[i], w.v[6 + (i & 1)], MPFR_RNDN);
+  mpfr_t* v = w.v;
+  mpfr_t* t = w.t;
+  auto lift = [&](mpfr_t out, mpfr_t x, mpfr_t y) {
+    mpfr_mul(out, x, x, MPFR_RNDN);
+    mpfr_mul(t[7], y, y, MPFR_RNDN);
+    mpfr_add(out, out, t[7], MPFR_RNDN);
+  };
+  auto minor = [&](mpfr_t out, mpfr_t x1, mpfr_t y1, mpfr_t x2, mpfr_t y2) {
+    mpfr_mul(out, x1, y2, MPFR_RNDN);
+    mpfr_mul(t[7], x2, y1, MPFR_RNDN);
+    mpfr_sub(out, out, t[7], MPFR_RNDN);
+  };
+  lift(t[0], v[0], v[1]);
+  minor(t[1], v[2], v[3], v[4], v[5]);
+  mpfr_mul(t[6], t[0], t[1], MPFR_RNDN);
+  lift(t[0], v[2], v[3]);
+  minor(t[1], v[4], v[5], v[0], v[1]);
+  mpfr_mul(t[2], t[0], t[1], MPFR_RNDN);
+  mpfr_add(t[6], t[6], t[2], MPFR_RNDN);
+  lift(t[0], v[4], v[5]);
+  minor(t[1], v[0], v[1], v[2], v[3]);
+  mpfr_mul(t[2], t[0], t[1], MPFR_RNDN);
+  mpfr_add(t[6], t[6], t[2], MPFR_RNDN);
+  return mpfr_sgn(t[6]);
+}
+
+// As printed: "max(x_a, y_a, x_b, y_b, x_c, y_c)", a signed maximum (no absolute values).
+int orient2dNotes(double ax, double ay, double bx, double by, double cx, double cy) {
+  const double o = orient2dNaiveValue(ax, ay, bx, by, cx, cy);
+  const double m = std::max({ax, ay, bx, by, cx, cy});
+  if (std::fabs(o) > 1e-15 * m * m) return signOf(o);
+  return orient2dMPFR200(ax, ay, bx, by, cx, cy);
+}
+
+// The notes give only epsilon = 1e-11 for incircle; the determinant has degree 4, so the scale
+// is read as max(...)^4, with the same signed maximum as the orientation filter.
+int incircleNotes(double ax, double ay, double bx, double by, double cx, double cy, double dx,
+                  double dy) {
+  const double v = incircleNaiveValue(ax, ay, bx, by, cx, cy, dx, dy);
+  const double m = std::max({ax, ay, bx, by, cx, cy, dx, dy});
+  if (std::fabs(v) > 1e-11 * m * m * m * m) return signOf(v);
+  return incircleMPFR200(ax, ay, bx, by, cx, cy, dx, dy);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Robust predicates: a safe static-dynamic filter, then the exact sign.
+//
+// Error bound for orient2d (u = 2^-53, round to nearest, no FMA: -ffp-contract=off).
+// Write each rounded operation as an exact one times (1 + d), |d| <= u. The computed value is
+//   fl( fl(fl(ax-cx) fl(by-cy)) - fl(fl(ay-cy) fl(bx-cx)) ),
+// so each of the two exact products L = (ax-cx)(by-cy), R = (ay-cy)(bx-cx) reaches the result
+// multiplied by at most four factors (1+d): two differences, one product, one subtraction.
+// Hence |computed - (L - R)| <= g4 (|L| + |R|), g4 = 4u/(1-4u). The computed
+// detsum = fl(|fl(L)| + |fl(R)|) satisfies |L| + |R| <= detsum (1+u)/(1-g3) < detsum (1 + 5u).
+// So the error is below 4u(1 + 9u) detsum, which 5u detsum exceeds; computing 5u detsum itself
+// rounds by a relative u at most, still above. Two caveats the textbook bound ignores:
+//  - underflow: a product below 2^-1022 has an absolute (not relative) error of up to 2^-1075.
+//    Requiring detsum >= 2^-960 makes the margin (5u - 4u(1+9u)) detsum > 2^-1014 dwarf it;
+//    smaller inputs go to the exact stage.
+//  - overflow: any infinity or NaN makes the comparison false, so the exact stage decides.
+// The notes' rule |O| > 1e-15 max(...)^2 is not of this form: it ignores the cancellation in
+// the differences (it uses the coordinates, not |L| + |R|) and the sign of the coordinates.
+//! [orient2d]
+int orient2d(double ax, double ay, double bx, double by, double cx, double cy) {
+  ++g_counters.orient;
+  const double detleft = (ax - cx) * (by - cy);
+  const double detright = (ay - cy) * (bx - cx);
+  const double det = detleft - detright;
+  const double detsum = std::fabs(detleft) + std::fabs(detright);
+  if (detsum >= 0x1p-960) {
+    const double bound = 5 * kU * detsum;
+    if (det > bound || -det > bound) {
+      g_lastStage = 0;
+      return det > 0 ? 1 : -1;
+    }
+  }
+  g_lastStage = 1;
+  ++g_counters.orientExact;
+  return orient2dExact(ax, ay, bx, by, cx, cy);
+}
+//! [orient2d]
+
+// Error bound for incircle, in the same style. The determinant is
+//   alift (bdx cdy - cdx bdy) + blift (cdx ady - adx cdy) + clift (adx bdy - bdx ady)
+// with differences to d. Expanded, it is a sum of 24 monomials of degree 4; in floating point
+// each reaches the result through at most 11 rounded operations: 2 differences and 1 product
+// and 1 sum in the lift (4), 2 differences and 1 product and 1 subtraction in the minor (4),
+// the product lift x minor (1), and the two final additions (2). So the error is at most
+// g11 P, where P is the sum of the absolute values of the monomials: the "permanent",
+// computed below as alift (|bdx cdy| + |cdx bdy|) + ... Its own rounding (at most 8
+// operations) gives P <= permanent (1 + 9u), so 12u permanent is a safe bound (11u(1 + 10u)
+// < 12u (1-u)). Underflow: if every nonzero difference is at least 2^-511 in magnitude, no
+// degree-2 product underflows; a degree-4 product may, with an absolute error of at most
+// 2^-1075, which the margin u permanent covers once permanent >= 2^-900. Otherwise, and on
+// overflow (infinity or NaN), the exact stage decides.
+//! [incircle]
+int incircle(double ax, double ay, double bx, double by, double cx, double cy, double dx,
+             double dy) {
+  ++g_counters.incircle;
+  const double adx = ax - dx, ady = ay - dy;
+  const double bdx = bx - dx, bdy = by - dy;
+  const double cdx = cx - dx, cdy = cy - dy;
+  const double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy;
+  const double cdxady = cdx * ady, adxcdy = adx * cdy;
+  const double adxbdy = adx * bdy, bdxady = bdx * ady;
+  const double alift = adx * adx + ady * ady;
+  const double blift = bdx * bdx + bdy * bdy;
+  const double clift = cdx * cdx + cdy * cdy;
+  const double det = alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy) +
+                     clift * (adxbdy - bdxady);
+  const double permanent = (std::fabs(bdxcdy) + std::fabs(cdxbdy)) * alift +
+                           (std::fabs(cdxady) + std::fabs(adxcdy)) * blift +
+                           (std::fabs(adxbdy) + std::fabs(bdxady)) * clift;
+  auto big = [](double v) { return v == 0 || std::fabs(v) >= 0x1p-511; };
+  if (permanent >= 0x1p-900 && big(adx) && big(ady) && big(bdx) && big(bdy) && big(cdx) &&
+      big(cdy)) {
+    const double bound = 12 * kU * permanent;
+    if (det > bound || -det > bound) {
+      g_lastStage = 0;
+      return det > 0 ? 1 : -1;
+    }
+  }
+  g_lastStage = 1;
+  ++g_counters.incircleExact;
+  return incircleExact(ax, ay, bx, by, cx, cy, dx, dy);
+}
+//! [incircle]
+
+}  // namespace dt

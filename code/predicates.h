@@ -1,0 +1,70 @@
+// Geometric predicates of section 2.3.1: orientation and incircle.
+//
+// Four families, from fastest to safest, so that section 2.3.1 can show each one at work:
+//   - naive:    the formula of the notes evaluated in double precision (wrong near degeneracy);
+//   - notes:    the notes' static filter (1e-15, 1e-11) with a 200-bit MPFR fallback;
+//   - exact:    the exact sign, computed with GMP integers (the oracle);
+//   - robust:   a floating-point evaluation behind a provably safe error bound, falling back
+//               to the exact sign. This is the one the kernel uses.
+//
+// Conventions. orient2d(a,b,c) > 0 iff a, b, c turn counter-clockwise; the value computed is the
+// notes' (xa-xc)(yb-yc) - (ya-yc)(xb-xc), pivoting on c. incircle(a,b,c,d) > 0 iff d lies
+// strictly inside the circle through a, b, c when a, b, c are counter-clockwise (the sign flips
+// for a clockwise triangle); it pivots on d.
+#pragma once
+
+#include <cstdint>
+
+namespace dt {
+
+/// Counters of predicate calls; the chapter programs read them (share of exact fallbacks,
+/// share of time spent in the orientation test). Not thread-safe: one triangulation at a time.
+struct PredicateCounters {
+  std::uint64_t orient = 0;       ///< calls of orient2d (robust)
+  std::uint64_t orientExact = 0;  ///< of which reached the exact stage
+  std::uint64_t incircle = 0;     ///< calls of incircle (robust)
+  std::uint64_t incircleExact = 0;///< of which reached the exact stage
+  void reset() { *this = PredicateCounters{}; }
+};
+PredicateCounters& predicateCounters();
+
+/// The notes' orientation value (2.3.1), in plain double arithmetic, pivot c. Its sign is wrong
+/// near degeneracy: this is what Figure 2.7 plots.
+double orient2dNaiveValue(double ax, double ay, double bx, double by, double cx, double cy);
+/// Sign of orient2dNaiveValue: -1, 0 or +1.
+int orient2dNaive(double ax, double ay, double bx, double by, double cx, double cy);
+/// The incircle determinant in plain double arithmetic, pivot d (3x3 lifted form).
+double incircleNaiveValue(double ax, double ay, double bx, double by, double cx, double cy,
+                          double dx, double dy);
+int incircleNaive(double ax, double ay, double bx, double by, double cx, double cy, double dx,
+                  double dy);
+
+/// Exact sign of the orientation determinant for any finite doubles (GMP integers).
+int orient2dExact(double ax, double ay, double bx, double by, double cx, double cy);
+/// Exact sign of the incircle determinant for any finite doubles (GMP integers).
+int incircleExact(double ax, double ay, double bx, double by, double cx, double cy, double dx,
+                  double dy);
+
+/// The notes' scheme (2.3.1): trust the double result if |O| > 1e-15 max(|coords|)^2, otherwise
+/// recompute with 200-bit MPFR floats. Kept to show where it fails; not used by the kernel.
+int orient2dNotes(double ax, double ay, double bx, double by, double cx, double cy);
+/// The notes' incircle scheme: filter 1e-11 max(|coords|)^4, then 200-bit MPFR.
+int incircleNotes(double ax, double ay, double bx, double by, double cx, double cy, double dx,
+                  double dy);
+/// The 200-bit MPFR evaluation alone (no filter), to show that 200 bits are not always enough.
+int orient2dMPFR200(double ax, double ay, double bx, double by, double cx, double cy);
+int incircleMPFR200(double ax, double ay, double bx, double by, double cx, double cy, double dx,
+                    double dy);
+
+/// Robust orientation (2.3.1): double evaluation + safe error bound, exact fallback.
+/// The sign is exact for every input of finite doubles.
+int orient2d(double ax, double ay, double bx, double by, double cx, double cy);
+/// Robust incircle (2.3.1): double evaluation + safe error bound, exact fallback.
+int incircle(double ax, double ay, double bx, double by, double cx, double cy, double dx,
+             double dy);
+
+/// Stage that decided the last robust call (for tests and the 2.3.1 program): 0 = filter,
+/// 1 = exact.
+int lastPredicateStage();
+
+}  // namespace dt

@@ -1,0 +1,19 @@
+#!/usr/bin/env bash
+# The main job: installs what is missing, builds everything (Release), runs every chapter
+# program (regenerating all figures and tables into build/output) and builds the book.
+# Options are passed to every chapter program, e.g. "--quick" for a smaller run.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/deps.sh
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release > /dev/null
+cmake --build build -j"$(nproc)"
+for src in chapters/ch2/*.cpp; do
+  [ -e "$src" ] || continue
+  prog=build/$(basename "$src" .cpp)
+  echo "=== $prog $*"
+  "$prog" "$@"
+done
+if cmake --build build --target help | grep -q '^\.\.\. book'; then
+  cmake --build build --target book
+  echo "book: build/book/html/index.html"
+fi
