@@ -1,0 +1,185 @@
+// Shared plumbing of the chapter programs: options, output files, gnuplot, tables, progress.
+// Header-only so that every chapters/ch2/*.cpp stays a single self-contained program.
+#pragma once
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "io.h"
+
+namespace ch {
+
+/// Command-line options common to all chapter programs.
+///   --out DIR    where to write (default: DT_OUTPUT_DIR/ch2, i.e. build/output/ch2)
+///   --quick      a smaller run (smaller sizes; for slow laptops and smoke tests)
+///   --max-n N    the largest point count of the size tables
+///   --no-plot    write data and tables but do not call gnuplot
+struct Options {
+  std::string out = std::string(DT_OUTPUT_DIR) + "/ch2";
+  bool quick = false;
+  bool plot = true;
+  long maxN = 0;  // 0: the program's default
+  std::vector<std::string> rest;  // options a program handles itself
+};
+
+inline Options parseOptions(int argc, char** argv) {
+  Options o;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--out" && i + 1 < argc) {
+      o.out = argv[++i];
+    } else if (a == "--quick") {
+      o.quick = true;
+    } else if (a == "--no-plot") {
+      o.plot = false;
+    } else if (a == "--max-n" && i + 1 < argc) {
+      o.maxN = std::atol(argv[++i]);
+      if (o.maxN <= 0) {
+        std::cerr << argv[0] << ": --max-n needs a positive integer\n";
+        std::exit(2);
+      }
+    } else {
+      o.rest.push_back(a);
+    }
+  }
+  std::string cmd = "mkdir -p '" + o.out + "'";
+  if (std::system(cmd.c_str()) != 0) {
+    std::cerr << argv[0] << ": cannot create " << o.out << "\n";
+    std::exit(1);
+  }
+  return o;
+}
+
+/// Writes a file into the output directory and says so.
+inline std::string writeOut(const Options& o, const std::string& name, const std::string& text) {
+  const std::string path = o.out + "/" + name;
+  dt::writeFileAtomic(path, text);
+  std::cout << "wrote " << path << "\n";
+  return path;
+}
+
+/// Runs figures/ch2/<script> with gnuplot; the script reads its data from `datadir` and
+/// writes into `outdir` (both set with -e). Returns false (and says why) on failure.
+inline bool runGnuplot(const Options& o, const std::string& script) {
+  if (!o.plot) return true;
+  const std::string path = std::string(DT_SOURCE_DIR) + "/figures/ch2/" + script;
+  const std::string cmd = "gnuplot -e \"datadir='" + o.out + "'; outdir='" + o.out + "'\" '" +
+                          path + "'";
+  const int rc = std::system(cmd.c_str());
+  if (rc != 0) {
+    std::cerr << "gnuplot failed (" << rc << ") on " << path << "\n";
+    return false;
+  }
+  std::cout << "plotted " << path << " into " << o.out << "\n";
+  return true;
+}
+
+/// A table printed as Markdown on stdout and written as .md, .csv and .html (the book
+/// includes the .html fragment with \htmlinclude).
+struct Table {
+  std::string caption;
+  std::vector<std::string> header;
+  std::vector<std::vector<std::string>> rows;
+
+  void add(std::vector<std::string> row) { rows.push_back(std::move(row)); }
+
+  std::string markdown() const {
+    std::ostringstream s;
+    if (!caption.empty()) s << caption << "\n\n";
+    s << "|";
+    for (const auto& h : header) s << " " << h << " |";
+    s << "\n|";
+    for (std::size_t i = 0; i < header.size(); ++i) s << (i ? " ---: |" : " :--- |");
+    s << "\n";
+    for (const auto& r : rows) {
+      s << "|";
+      for (const auto& c : r) s << " " << c << " |";
+      s << "\n";
+    }
+    return s.str();
+  }
+  std::string csv() const {
+    std::ostringstream s;
+    for (std::size_t i = 0; i < header.size(); ++i) s << (i ? "," : "") << header[i];
+    s << "\n";
+    for (const auto& r : rows) {
+      for (std::size_t i = 0; i < r.size(); ++i) s << (i ? "," : "") << r[i];
+      s << "\n";
+    }
+    return s.str();
+  }
+  std::string html() const {
+    std::ostringstream s;
+    s << "<table class=\"doxtable\">\n";
+    if (!caption.empty()) s << "<caption>" << caption << "</caption>\n";
+    s << "<tr>";
+    for (const auto& h : header) s << "<th>" << h << "</th>";
+    s << "</tr>\n";
+    for (const auto& r : rows) {
+      s << "<tr>";
+      for (const auto& c : r) s << "<td>" << c << "</td>";
+      s << "</tr>\n";
+    }
+    s << "</table>\n";
+    return s.str();
+  }
+  /// Prints the Markdown and writes <stem>.md, <stem>.csv, <stem>.html.
+  void emit(const Options& o, const std::string& stem) const {
+    std::cout << "\n" << markdown() << "\n";
+    writeOut(o, stem + ".md", markdown());
+    writeOut(o, stem + ".csv", csv());
+    writeOut(o, stem + ".html", html());
+  }
+};
+
+/// printf-style formatting into a std::string.
+template <class... A>
+std::string fmt(const char* f, A... a) {
+  char buf[256];
+  std::snprintf(buf, sizeof buf, f, a...);
+  return buf;
+}
+
+/// Progress of a long run on stderr, at most a few times per second; silent unless stderr is
+/// a terminal (logs of the main command stay readable).
+class Progress {
+ public:
+  Progress(std::string what, std::uint64_t total)
+      : what_(std::move(what)), total_(total), tty_(isatty(2)),
+        t0_(std::chrono::steady_clock::now()), last_(t0_) {}
+  void update(std::uint64_t done) {
+    if (!tty_) return;
+    const auto now = std::chrono::steady_clock::now();
+    if (done < total_ && std::chrono::duration<double>(now - last_).count() < 0.25) return;
+    last_ = now;
+    const double el = std::chrono::duration<double>(now - t0_).count();
+    const double rate = el > 0 ? double(done) / el : 0;
+    const double left = rate > 0 ? double(total_ - done) / rate : 0;
+    std::fprintf(stderr, "\r%s: %llu/%llu (%.0f/s, %.0f s left)   ", what_.c_str(),
+                 (unsigned long long)done, (unsigned long long)total_, rate, left);
+    if (done >= total_) std::fprintf(stderr, "\n");
+  }
+
+ private:
+  std::string what_;
+  std::uint64_t total_;
+  bool tty_;
+  std::chrono::steady_clock::time_point t0_, last_;
+};
+
+/// Seconds since `t0`.
+inline double secondsSince(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+}  // namespace ch
