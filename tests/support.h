@@ -2,8 +2,16 @@
 // "triangulate and check exactly".
 #pragma once
 
+#include <sys/wait.h>
+
+#include <array>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
 #include <random>
+#include <sstream>
+#include <string>
 #include <vector>
 
 #include "check.h"
@@ -70,4 +78,69 @@ inline dt::CheckReport triangulateAndCheck(const XY& p, dt::InsertionStats* st =
   return dt::checkDelaunay(m.xy, m.tri);
 }
 
+// ---- running the command-line triangulator -------------------------------------------------
+
+inline std::string tmpPath(const std::string& name) {
+  std::system((std::string("mkdir -p '") + DT_TEST_TMP + "'").c_str());
+  return std::string(DT_TEST_TMP) + "/" + name;
+}
+
+inline void writeText(const std::string& path, const std::string& text) {
+  std::ofstream(path, std::ios::binary) << text;
+}
+
+inline std::string readText(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+inline bool fileExists(const std::string& path) { return std::ifstream(path).good(); }
+
+struct CliResult {
+  int status = -1;      // exit status of delaunay2d
+  std::string out, err; // its stdout and stderr
+};
+
+/// Runs build/delaunay2d with the given arguments (shell-quoted by the caller if needed).
+inline CliResult runCli(const std::string& args) {
+  static int counter = 0;
+  const std::string o = tmpPath("cli_out_" + std::to_string(counter)),
+                    e = tmpPath("cli_err_" + std::to_string(counter++));
+  const int rc = std::system((std::string(DT_CLI) + " " + args + " > '" + o + "' 2> '" + e + "'").c_str());
+  CliResult r;
+  r.status = WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
+  r.out = readText(o);
+  r.err = readText(e);
+  return r;
+}
+
+/// Writes points as a Triangle .node file numbered from `first`.
+inline std::string nodeText(const XY& p, int first = 1) {
+  std::string s = std::to_string(p.size() / 2) + " 2 0 0\n";
+  char buf[128];
+  for (std::size_t i = 0; i < p.size() / 2; ++i) {
+    std::snprintf(buf, sizeof buf, "%zu %.17g %.17g\n", i + first, p[2 * i], p[2 * i + 1]);
+    s += buf;
+  }
+  return s;
+}
+
+/// Reads a Triangle .ele file into 0-based triangles, given the numbering base.
+inline std::vector<std::array<int, 3>> readEle(const std::string& path, int first) {
+  std::istringstream in(readText(path));
+  std::size_t n = 0;
+  int nodes = 0, attrs = 0;
+  in >> n >> nodes >> attrs;
+  std::vector<std::array<int, 3>> t(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    long num;
+    in >> num >> t[i][0] >> t[i][1] >> t[i][2];
+    for (int& v : t[i]) v -= first;
+  }
+  return t;
+}
+
 }  // namespace dttest
+
