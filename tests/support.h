@@ -3,6 +3,7 @@
 #pragma once
 
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <array>
 #include <cmath>
@@ -106,8 +107,9 @@ struct CliResult {
 /// Runs build/delaunay2d with the given arguments (shell-quoted by the caller if needed).
 inline CliResult runCli(const std::string& args) {
   static int counter = 0;
-  const std::string o = tmpPath("cli_out_" + std::to_string(counter)),
-                    e = tmpPath("cli_err_" + std::to_string(counter++));
+  // The pid keeps parallel ctest entries (one process per test file) apart.
+  const std::string tag = std::to_string(::getpid()) + "_" + std::to_string(counter++);
+  const std::string o = tmpPath("cli_out_" + tag), e = tmpPath("cli_err_" + tag);
   const int rc = std::system((std::string(DT_CLI) + " " + args + " > '" + o + "' 2> '" + e + "'").c_str());
   CliResult r;
   r.status = WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
