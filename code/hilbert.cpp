@@ -1,0 +1,246 @@
+#include "hilbert.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+namespace dt {
+
+//! [HilbertCoord]
+void HilbertCoord(double x, double y, double x0, double y0, double xRed, double yRed,
+                  double xBlue, double yBlue, int d, int bits[]) {
+  // The printed listing let a NaN fail all four tests, so bits[i] was never written.
+  if (!std::isfinite(x) || !std::isfinite(y))
+    throw std::invalid_argument("HilbertCoord: coordinate is not finite");
+  if (d < 0) throw std::invalid_argument("HilbertCoord: negative depth");
+  for (int i = 0; i < d; i++) {
+    const double coordRed = (x - x0) * xRed + (y - y0) * yRed;
+    const double coordBlue = (x - x0) * xBlue + (y - y0) * yBlue;
+    xRed /= 2; yRed /= 2; xBlue /= 2; yBlue /= 2;
+    // Ties: the printed tests overlapped on the dividing lines (<= and >=) and only their
+    // order decided. Here the chain is explicit: a point on a line goes to the lower quadrant,
+    // and the last branch is unconditional, so every point gets exactly one quadrant.
+    if (coordRed <= 0) {
+      if (coordBlue <= 0) {  // quadrant 0: b <- r/2, r <- b/2
+        x0 -= (xBlue + xRed); y0 -= (yBlue + yRed);
+        std::swap(xRed, xBlue); std::swap(yRed, yBlue);
+        bits[i] = 0;
+      } else {               // quadrant 1: b <- b/2, r <- r/2
+        x0 += (xBlue - xRed); y0 += (yBlue - yRed);
+        bits[i] = 1;
+      }
+    } else {
+      if (coordBlue >= 0) {  // quadrant 2: b <- b/2, r <- r/2
+        x0 += (xBlue + xRed); y0 += (yBlue + yRed);
+        bits[i] = 2;
+      } else {               // quadrant 3: b <- -r/2, r <- -b/2
+        x0 += (-xBlue + xRed); y0 += (-yBlue + yRed);
+        std::swap(xRed, xBlue); std::swap(yRed, yBlue);
+        xBlue = -xBlue; yBlue = -yBlue;
+        xRed = -xRed; yRed = -yRed;
+        bits[i] = 3;
+      }
+    }
+  }
+}
+//! [HilbertCoord]
+
+HilbertFrame hilbertChild(const HilbertFrame& f, int q) {
+  if (q < 0 || q > 3) throw std::invalid_argument("hilbertChild: quadrant must be 0..3");
+  HilbertFrame c = f;
+  const double xr = f.xRed / 2, yr = f.yRed / 2, xb = f.xBlue / 2, yb = f.yBlue / 2;
+  c.xRed = xr; c.yRed = yr; c.xBlue = xb; c.yBlue = yb;
+  switch (q) {
+    case 0:
+      c.x0 -= xb + xr; c.y0 -= yb + yr;
+      c.xRed = xb; c.yRed = yb; c.xBlue = xr; c.yBlue = yr;
+      break;
+    case 1: c.x0 += xb - xr; c.y0 += yb - yr; break;
+    case 2: c.x0 += xb + xr; c.y0 += yb + yr; break;
+    default:
+      c.x0 += xr - xb; c.y0 += yr - yb;
+      c.xRed = -xb; c.yRed = -yb; c.xBlue = -xr; c.yBlue = -yr;
+      break;
+  }
+  return c;
+}
+
+std::uint64_t hilbertPack(const int bits[], int d) {
+  std::uint64_t key = 0;
+  for (int i = 0; i < d; ++i) key = (key << 2) | std::uint64_t(bits[i] & 3);
+  return key;
+}
+
+//! [hilbertIndex]
+std::uint64_t hilbertIndex(std::uint32_t i, std::uint32_t j, int depth) {
+  // Listing 2.8 on integers. The frame is (axis, sign) of red and blue; a cell of the grid is
+  // on the + side of an axis at level s iff bit s of its coordinate along that axis is 1.
+  int redAxis = 0, blueAxis = 1;  // red = +x, blue = +y at the root
+  bool redNeg = false, blueNeg = false;
+  std::uint64_t key = 0;
+  for (int s = depth - 1; s >= 0; --s) {
+    const bool bit[2] = {((i >> s) & 1u) != 0, ((j >> s) & 1u) != 0};
+    const bool plusRed = bit[redAxis] != redNeg;
+    const bool plusBlue = bit[blueAxis] != blueNeg;
+    const unsigned q = plusRed ? (plusBlue ? 2u : 3u) : (plusBlue ? 1u : 0u);
+    key = (key << 2) | q;
+    if (q == 0 || q == 3) {  // both swap red and blue; quadrant 3 also reverses them
+      std::swap(redAxis, blueAxis);
+      std::swap(redNeg, blueNeg);
+      if (q == 3) {
+        redNeg = !redNeg;
+        blueNeg = !blueNeg;
+      }
+    }
+  }
+  return key;
+}
+//! [hilbertIndex]
+
+HilbertBox hilbertBox(const std::vector<double>& xy) {
+  if (xy.size() % 2 != 0) throw std::invalid_argument("hilbertBox: odd number of coordinates");
+  double xmin = 0, xmax = 0, ymin = 0, ymax = 0;
+  for (std::size_t k = 0; k < xy.size(); k += 2) {
+    const double x = xy[k], y = xy[k + 1];
+    if (!std::isfinite(x) || !std::isfinite(y))
+      throw std::invalid_argument("Hilbert sort: point " + std::to_string(k / 2) +
+                                  " has a coordinate that is not finite");
+    if (k == 0) {
+      xmin = xmax = x;
+      ymin = ymax = y;
+    } else {
+      xmin = std::min(xmin, x); xmax = std::max(xmax, x);
+      ymin = std::min(ymin, y); ymax = std::max(ymax, y);
+    }
+  }
+  // Halved differences: xmax - xmin overflows for coordinates near +-1e308, the halves do not.
+  return {xmin, ymin, std::max(xmax / 2 - xmin / 2, ymax / 2 - ymin / 2)};
+}
+
+int hilbertAutoDepth(std::size_t n) {
+  int d = 0;
+  while (d < 31 && (std::uint64_t{1} << (2 * d)) < n) ++d;
+  return std::min(31, d + 8);
+}
+
+namespace {
+
+int checkedDepth(int depth, std::size_t n) {
+  if (depth < 0 || depth > 31)
+    throw std::invalid_argument("Hilbert sort: depth must be 0 (auto) .. 31, not " +
+                                std::to_string(depth));
+  return depth == 0 ? hilbertAutoDepth(n) : depth;
+}
+
+// Cell coordinate of v along one axis: floor(t 2^depth) with t = (v - lo) / side in [0, 1].
+// Each operation rounds monotonically, so the map is monotone: equal inputs get equal cells
+// and a point on a boundary lands on one side consistently.
+std::uint32_t cellOf(double v, double lo, double halfSide, int depth) {
+  if (!(halfSide > 0)) return 0;  // all points share this coordinate
+  const double t = (v / 2 - lo / 2) / halfSide;  // in [0, 1] by construction of the box
+  const double c = std::floor(std::ldexp(t, depth));
+  const double top = std::ldexp(1.0, depth) - 1;
+  return std::uint32_t(c < top ? c : top);
+}
+
+}  // namespace
+
+std::vector<std::uint64_t> hilbertKeys(const std::vector<double>& xy, int depth) {
+  const HilbertBox box = hilbertBox(xy);
+  const std::size_t n = xy.size() / 2;
+  depth = checkedDepth(depth, n);
+  std::vector<std::uint64_t> keys(n);
+  for (std::size_t k = 0; k < n; ++k)
+    keys[k] = hilbertIndex(cellOf(xy[2 * k], box.xmin, box.halfSide, depth),
+                           cellOf(xy[2 * k + 1], box.ymin, box.halfSide, depth), depth);
+  return keys;
+}
+
+std::vector<std::uint64_t> hilbertKeysListing(const std::vector<double>& xy, int depth) {
+  const HilbertBox box = hilbertBox(xy);
+  const std::size_t n = xy.size() / 2;
+  depth = checkedDepth(depth, n);
+  const double h = box.halfSide > 0 ? box.halfSide : 1;
+  const double cx = box.xmin + h, cy = box.ymin + h;
+  std::vector<std::uint64_t> keys(n);
+  int bits[31];
+  for (std::size_t k = 0; k < n; ++k) {
+    HilbertCoord(xy[2 * k], xy[2 * k + 1], cx, cy, h, 0, 0, h, depth, bits);
+    keys[k] = hilbertPack(bits, depth);
+  }
+  return keys;
+}
+
+namespace {
+
+// Sorts idx[lo, hi) by key, ties by index (so the order is reproducible and stable).
+void sortByKey(std::vector<std::size_t>& idx, std::size_t lo, std::size_t hi,
+               const std::vector<std::uint64_t>& keys) {
+  std::vector<std::pair<std::uint64_t, std::size_t>> kv;
+  kv.reserve(hi - lo);
+  for (std::size_t k = lo; k < hi; ++k) kv.emplace_back(keys[idx[k]], idx[k]);
+  std::sort(kv.begin(), kv.end());
+  for (std::size_t k = lo; k < hi; ++k) idx[k] = kv[k - lo].second;
+}
+
+// splitmix64: a small, fully specified generator, so BRIO orders are the same everywhere.
+std::uint64_t splitmix(std::uint64_t& s) {
+  std::uint64_t z = (s += 0x9e3779b97f4a7c15ULL);
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+  return z ^ (z >> 31);
+}
+
+}  // namespace
+
+std::vector<std::size_t> hilbertOrder(const std::vector<double>& xy, int depth) {
+  const std::vector<std::uint64_t> keys = hilbertKeys(xy, depth);
+  std::vector<std::size_t> idx(keys.size());
+  std::iota(idx.begin(), idx.end(), std::size_t{0});
+  sortByKey(idx, 0, idx.size(), keys);
+  return idx;
+}
+
+std::vector<std::size_t> brioRoundSizes(std::size_t n, std::size_t firstRound) {
+  if (firstRound == 0) firstRound = 1;
+  std::vector<std::size_t> sizes;  // last round first, reversed below
+  while (n > firstRound) {
+    const std::size_t last = n - n / 2;  // the larger half goes to the later round
+    sizes.push_back(last);
+    n -= last;
+  }
+  if (n > 0) sizes.push_back(n);
+  std::reverse(sizes.begin(), sizes.end());
+  return sizes;
+}
+
+//! [brioOrder]
+std::vector<std::size_t> brioOrder(const std::vector<double>& xy, std::uint64_t seed, int depth,
+                                   std::vector<std::size_t>* roundStart) {
+  const std::vector<std::uint64_t> keys = hilbertKeys(xy, depth);  // one box for all rounds
+  const std::size_t n = keys.size();
+  std::vector<std::size_t> idx(n);
+  std::iota(idx.begin(), idx.end(), std::size_t{0});
+  // A uniform random permutation (Fisher-Yates), so each round is a random sample of the
+  // points: the randomness that gives the expected O(n log n) bound whatever the input.
+  std::uint64_t state = seed;
+  for (std::size_t i = n; i > 1; --i) {
+    const std::size_t j = std::size_t(splitmix(state) % i);  // bias below i / 2^64: negligible
+    std::swap(idx[i - 1], idx[j]);
+  }
+  // Then locality inside each round: the Hilbert sort of that round alone.
+  if (roundStart) roundStart->clear();
+  std::size_t start = 0;
+  for (std::size_t size : brioRoundSizes(n)) {
+    if (roundStart) roundStart->push_back(start);
+    sortByKey(idx, start, start + size, keys);
+    start += size;
+  }
+  return idx;
+}
+//! [brioOrder]
+
+}  // namespace dt

@@ -1,0 +1,78 @@
+// Section 2.3.5: Hilbert curves (Listing 2.8, corrected), the Hilbert sort of a point set, and
+// BRIO (biased randomized insertion order), which the notes leave as "explain brio".
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace dt {
+
+/// Listing 2.8: the first d Hilbert "coordinates" bits[0..d-1] (each 0..3) of the point (x, y),
+/// in the quadrant of centre (x0, y0) whose half-sides are the orthogonal vectors
+/// red = (xRed, yRed) and blue = (xBlue, yBlue). Quadrant 0 is x0 - (b+r)/2, 1 is x0 + (b-r)/2,
+/// 2 is x0 + (b+r)/2, 3 is x0 + (r-b)/2 (r, b as half-sides). A point on a dividing line goes
+/// to the lowest-numbered quadrant that touches it. Throws std::invalid_argument if a
+/// coordinate is not finite or d < 0.
+void HilbertCoord(double x, double y, double x0, double y0, double xRed, double yRed,
+                  double xBlue, double yBlue, int d, int bits[]);
+
+/// One node of the recursion of Listing 2.8: a quadrant's centre and half-side vectors.
+struct HilbertFrame {
+  double x0, y0, xRed, yRed, xBlue, yBlue;
+};
+
+/// The frame of sub-quadrant q (0..3) of f, exactly as HilbertCoord descends (Figure 2.11).
+HilbertFrame hilbertChild(const HilbertFrame& f, int q);
+
+/// Packs d base-4 digits (most significant first) into an integer: key = sum bits[i] 4^(d-1-i).
+std::uint64_t hilbertPack(const int bits[], int d);
+
+/// The Hilbert index, on the curve H_depth, of cell (i, j) of the 2^depth x 2^depth grid
+/// (i along x, j along y; 0 <= i, j < 2^depth, depth <= 31), with the orientation of Listing
+/// 2.8 started from red = +x, blue = +y. Integer only, hence exact; equal to
+/// hilbertPack(HilbertCoord(cell centre)) for every cell.
+std::uint64_t hilbertIndex(std::uint32_t i, std::uint32_t j, int depth);
+
+/// The square box that hilbertKeys maps onto the grid: [xmin, xmin + side] x [ymin, ymin +
+/// side], side the larger extent of the data. Throws std::invalid_argument on a non-finite
+/// coordinate (NaN or infinity).
+struct HilbertBox {
+  double xmin, ymin;
+  double halfSide;  ///< side / 2 (kept halved so that it never overflows, even for +-1e308)
+};
+HilbertBox hilbertBox(const std::vector<double>& xy);
+
+/// The curve depth used when a caller passes depth = 0: ceil(log4 n) + 8 levels, at most 31.
+/// log4 n levels would leave about one point per cell on uniform data; 8 more (a factor
+/// 4^8 = 65536 in density) keep clustered data separated too (see the depth table of 2.3.5).
+int hilbertAutoDepth(std::size_t n);
+
+/// Hilbert keys of the points xy = x0 y0 x1 y1 ... on H_depth (depth 1..31, 0 = auto): each
+/// point is mapped to its cell of the 2^depth grid over hilbertBox(xy) (a monotone map, so
+/// points on cell boundaries are assigned consistently), then to hilbertIndex. A key fits in
+/// 62 bits. Throws std::invalid_argument on NaN/infinite coordinates or depth outside 0..31.
+std::vector<std::uint64_t> hilbertKeys(const std::vector<double>& xy, int depth);
+
+/// The same keys computed with Listing 2.8 itself (floating-point frames), for comparison and
+/// timing. Points within rounding of a cell boundary may get the neighbouring cell's key.
+std::vector<std::uint64_t> hilbertKeysListing(const std::vector<double>& xy, int depth);
+
+/// The Hilbert sort of 2.3.5: indices of the points ordered by Hilbert key; equal keys
+/// (duplicates, or points sharing a deepest cell) keep their input order, so the result is
+/// deterministic. depth = 0 chooses hilbertAutoDepth(n).
+std::vector<std::size_t> hilbertOrder(const std::vector<double>& xy, int depth = 0);
+
+/// Sizes of the BRIO rounds for n points, first round first: the last round holds the larger
+/// half of the points, the one before half of the rest, and so on down to a first round of at
+/// most `firstRound` points. Sizes double from round to round (Amenta, Choi, Rote 2003).
+std::vector<std::size_t> brioRoundSizes(std::size_t n, std::size_t firstRound = 64);
+
+/// BRIO: a random permutation (seeded, reproducible) cut into rounds of sizes brioRoundSizes(n),
+/// each round then Hilbert-sorted on keys over the whole data box. Returns the insertion
+/// order; if roundStart is given it receives the index in that order where each round starts.
+std::vector<std::size_t> brioOrder(const std::vector<double>& xy, std::uint64_t seed,
+                                   int depth = 0,
+                                   std::vector<std::size_t>* roundStart = nullptr);
+
+}  // namespace dt
