@@ -1,0 +1,166 @@
+// Section 2.3.2, "More on adjacencies": Figure 2.9 (a triangulation with n = 12, n_h = 9, each
+// vertex labelled with its number of triangles) and a table of the counts n, n_h, n_f, n_e,
+// n_vf, n_ve measured on random, grid, convex-position and cocircular inputs, beside Euler's
+// n_f = 2(n-1) - n_h, n_e = 3(n-1) - n_h and eqs. (2.2)-(2.3).
+//
+//   sec2_3_2_adjacencies [--out DIR] [--quick] [--max-n N] [--no-plot]
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include "check.h"
+#include "common.h"
+#include "stats.h"
+#include "triangulate.h"
+
+namespace {
+
+struct Result {
+  dt::PlainMesh mesh;
+  dt::MeshCounts counts;
+};
+
+// DT(S) of the points (ghost faces, no super-triangles), checked exactly.
+Result triangulate(const std::vector<double>& xy) {
+  dt::Triangulation T;
+  std::vector<dt::Vertex*> S;
+  for (std::size_t i = 0; i < xy.size() / 2; ++i)
+    S.push_back(T.addVertex(xy[2 * i], xy[2 * i + 1], long(i)));
+  dt::delaunayTrglHull(T, S, dt::StartRule::LastCavity);
+  Result r;
+  r.mesh = dt::extractMesh(T, true);
+  const dt::CheckReport rep = dt::checkDelaunay(r.mesh.xy, r.mesh.tri);
+  if (!rep.ok) throw std::runtime_error("invalid triangulation: " + rep.error);
+  r.counts = dt::meshCounts(r.mesh.xy.size() / 2, r.mesh.tri);
+  return r;
+}
+
+std::vector<double> uniform(std::size_t n, unsigned seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<double> p(2 * n);
+  for (double& c : p) c = u(rng);
+  return p;
+}
+
+void shuffle(std::vector<double>& p, unsigned seed) {
+  std::mt19937_64 rng(seed);
+  for (std::size_t i = p.size() / 2; i > 1; --i) {
+    const std::size_t j = std::uniform_int_distribution<std::size_t>(0, i - 1)(rng);
+    std::swap(p[2 * (i - 1)], p[2 * j]);
+    std::swap(p[2 * (i - 1) + 1], p[2 * j + 1]);
+  }
+}
+
+// Figure 2.9: nine points on a slightly irregular ellipse (all on the hull) and three inside.
+void figure29(const ch::Options& o) {
+  const std::vector<double> xy = {1.285,  0.149,  0.843,  0.735,  0.033,  1.020,  -0.803, 0.774,
+                                  -1.287, 0.200,  -1.119, -0.469, -0.474, -0.931, 0.423,  -0.967,
+                                  1.098,  -0.516, -0.45,  0.15,   0.35,   0.3,    0.05,   -0.4};
+  const Result r = triangulate(xy);
+  const dt::MeshCounts& c = r.counts;
+  if (c.n != 12 || c.nh != 9 || c.sumVF != 39)
+    throw std::runtime_error("Figure 2.9: expected n = 12, n_h = 9, 39 corners");
+  ch::writeOut(o, "fig2_9_tri.dat", dt::gnuplotTriangles(r.mesh.xy, r.mesh.tri));
+  std::string labels = "# x y n_vf(vertex) n_ve(vertex) on_hull\n";
+  // A boundary vertex has one edge more than triangles (its fan is open); inner ones as many.
+  for (std::size_t v = 0; v < c.vf.size(); ++v)
+    labels += ch::fmt("%.17g %.17g %d %d %d\n", r.mesh.xy[2 * v], r.mesh.xy[2 * v + 1], c.vf[v],
+                      c.ve[v], int(c.vf[v] < c.ve[v]));
+  ch::writeOut(o, "fig2_9_vertices.dat", labels);
+  ch::writeOut(o, "fig2_9_title.txt",
+               ch::fmt("n = %ld, n_h = %ld (yellow): n_{vf} = %ld/%ld = %.2f;  eq. (2.2): 6 - "
+                       "(3 {\303\227} %ld + 6)/%ld = %.2f",
+                       c.n, c.nh, c.sumVF, c.n, c.meanVF(), c.nh, c.n, c.eq22()));
+  std::cout << "Figure 2.9: n = " << c.n << ", n_h = " << c.nh << ", sum of n_vf = " << c.sumVF
+            << ", average n_vf = " << ch::fmt("%.4g", c.meanVF())
+            << ", eq. (2.2) = " << ch::fmt("%.4g", c.eq22())
+            << "; average n_ve = " << ch::fmt("%.4g", c.meanVE())
+            << ", eq. (2.3) = " << ch::fmt("%.4g", c.eq23()) << "\n";
+  ch::runGnuplot(o, "fig2_9.gp");
+}
+
+void countsTable(const ch::Options& o) {
+  struct Input {
+    std::string name;
+    std::vector<double> xy;
+  };
+  const long maxN = o.maxN > 0 ? o.maxN : (o.quick ? 10000 : 100000);
+  std::vector<Input> inputs;
+  for (long n : {100L, 10000L, 100000L})
+    if (n <= maxN) inputs.push_back({"uniform random", uniform(std::size_t(n), 232u + unsigned(n))});
+  for (long k : {10L, 100L, 300L})
+    if (k * k <= maxN) {
+      std::vector<double> g;
+      for (long i = 0; i < k; ++i)
+        for (long j = 0; j < k; ++j) {
+          g.push_back(double(i));
+          g.push_back(double(j));
+        }
+      shuffle(g, 7u);
+      inputs.push_back({ch::fmt("grid %ldx%ld", k, k), g});
+    }
+  for (long n : {100L, 2000L})
+    if (n <= maxN) {
+      // convex position: (i, i^2) are exact doubles, every point a hull vertex
+      std::vector<double> c;
+      for (long i = 0; i < n; ++i) {
+        c.push_back(double(i));
+        c.push_back(double(i) * double(i));
+      }
+      shuffle(c, 11u);
+      inputs.push_back({"convex (parabola)", c});
+    }
+  {
+    // 1000 points rounded onto the unit circle: nearly cocircular, a hard case for the
+    // predicates; the measured n_h says whether rounding left them all in convex position.
+    std::vector<double> c;
+    const long n = std::min(1000L, maxN);
+    for (long i = 0; i < n; ++i) {
+      const double t = 2 * M_PI * double(i) / double(n);
+      c.push_back(std::cos(t));
+      c.push_back(std::sin(t));
+    }
+    shuffle(c, 13u);
+    inputs.push_back({"circle (rounded)", c});
+  }
+  ch::Table t;
+  t.caption = "Counts of section 2.3.2 measured on Delaunay triangulations (exactly checked), "
+              "beside Euler's relations and eqs. (2.2)-(2.3)";
+  t.header = {"input", "n", "n_h", "n_f", "2(n-1)-n_h", "n_e", "3(n-1)-n_h", "n_vf measured",
+              "eq. (2.2)", "n_ve measured", "eq. (2.3)", "min..max n_vf"};
+  ch::Progress prog("2.3.2 counts", inputs.size());
+  std::size_t done = 0;
+  for (const Input& in : inputs) {
+    const Result r = triangulate(in.xy);
+    const dt::MeshCounts& c = r.counts;
+    int lo = 1 << 30, hi = 0;
+    for (int d : c.vf)
+      if (d > 0) {
+        lo = std::min(lo, d);
+        hi = std::max(hi, d);
+      }
+    t.add({in.name, std::to_string(c.n), std::to_string(c.nh), std::to_string(c.nf),
+           std::to_string(c.eulerNF()), std::to_string(c.ne), std::to_string(c.eulerNE()),
+           ch::fmt("%.6f", c.meanVF()), ch::fmt("%.6f", c.eq22()), ch::fmt("%.6f", c.meanVE()),
+           ch::fmt("%.6f", c.eq23()), ch::fmt("%d..%d", lo, hi)});
+    if (c.nf != c.eulerNF() || c.ne != c.eulerNE() || c.sumVF != 3 * c.nf || c.sumVE != 2 * c.ne)
+      throw std::runtime_error(in.name + ": a count of section 2.3.2 does not hold");
+    prog.update(++done);
+  }
+  t.emit(o, "table_adjacency_counts");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const ch::Options o = ch::parseOptions(argc, argv);
+  try {
+    figure29(o);
+    countsTable(o);
+  } catch (const std::exception& e) {
+    std::cerr << "sec2_3_2_adjacencies: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}

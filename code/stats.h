@@ -1,0 +1,83 @@
+// Counting a triangulation (sections 2.3.2-2.3.4): vertex degrees and Euler's counts, the
+// pointer counts of the data structures of 2.3.3, the vertex star of the face-based structure,
+// and a second way of connecting faces. Solutions of the exercises of those sections.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "mesh.h"
+
+namespace dt {
+
+//! [MeshCounts]
+/// The counts of section 2.3.2 measured on a list of triangles: n, n_h, n_f, n_e, and for each
+/// vertex its number of adjacent triangles (vf) and edges (ve). Vertices that no triangle uses
+/// are not counted. n_h is the number of vertices on boundary edges (edges with one triangle).
+struct MeshCounts {
+  long n = 0, nh = 0, nf = 0, ne = 0;
+  std::vector<int> vf, ve;  ///< per point index (0 for unused points)
+  long sumVF = 0, sumVE = 0;
+  double meanVF() const { return n ? double(sumVF) / double(n) : 0; }  ///< measured n_vf
+  double meanVE() const { return n ? double(sumVE) / double(n) : 0; }  ///< measured n_ve
+  long eulerNF() const { return 2 * (n - 1) - nh; }                    ///< 2(n-1) - n_h
+  long eulerNE() const { return 3 * (n - 1) - nh; }                    ///< 3(n-1) - n_h
+  double eq22() const { return 6.0 - double(3 * nh + 6) / double(n); }  ///< eq. (2.2)
+  double eq23() const { return 6.0 - double(2 * nh + 6) / double(n); }  ///< eq. (2.3)
+};
+//! [MeshCounts]
+
+/// Counts of the triangles `tri` on `np` points (indices 0..np-1). Edges are found by sorting
+/// the 3 n_f directed edges, O(n_f log n_f); no geometry is used.
+MeshCounts meshCounts(std::size_t np, const std::vector<std::array<int, 3>>& tri);
+
+/// Exercise 2.3.2.1: the Delaunay triangulation of an nx x ny grid (nx, ny >= 2) has
+/// n = nx ny, n_h = 2(nx + ny) - 4, n_f = 2(nx - 1)(ny - 1), n_e = 3 nx ny - 2 nx - 2 ny + 1,
+/// whatever diagonal each square gets. Returns {n, n_h, n_f, n_e}.
+std::array<long, 4> gridCounts(long nx, long ny);
+
+/// Exercise 2.3.2.2: a vertex with at most 5 edges (one exists: eq. (2.3) gives n_ve < 6).
+/// Returns its index, or -1 if every used vertex has 6 edges or more (impossible).
+int lowDegreeVertex(const MeshCounts& c);
+
+//! [pointerCounts]
+/// The data structures of section 2.3.3 and their pointer counts N_p, one pointer per
+/// explicit entity plus one per stored adjacency. `exact` uses n_f, n_e, n_vf, n_ve of a
+/// triangulation with n vertices and n_h on the hull; otherwise the notes' asymptotic values
+/// n_e = 3n, n_f = 2n, n_ve = n_vf = 6, n_ef = 2.
+struct PointerCount {
+  std::string name;
+  double perVertex;  ///< N_p / n
+};
+std::vector<PointerCount> pointerCounts(double n, double nh, bool exact);
+//! [pointerCounts]
+
+/// Exercise 2.3.3.1: N_p of a half-edge structure (not in the notes): each of the 2 n_e
+/// half-edges stores origin, twin, next and face (+1 for itself); vertices and faces store one
+/// half-edge (+1 each). With the notes' asymptotic counts: 36 n.
+double halfEdgePointers(double n, double nh, bool exact);
+
+//! [vertexStar]
+/// Exercise 2.3.3.2: the face-based structure has no vertex -> face link. One Face* per
+/// vertex (N_p = 16 n) is enough to list the star of a vertex in time proportional to its
+/// degree, turning around it through F[]. The star of a hull vertex is open: the turn stops at
+/// the boundary (F == nullptr) or at a ghost face, and is completed from the other side.
+/// Throws std::logic_error if v is not a vertex of f, or if the turn exceeds `maxFaces` faces
+/// (a corrupted mesh), instead of spinning forever.
+std::vector<Face*> vertexStar(Face* f, const Vertex* v, std::size_t maxFaces = 1u << 30);
+//! [vertexStar]
+
+/// Exercise 2.3.4.1: computeAdjacencies without std::map: sort the 3N edges once and link
+/// equal neighbours, O(N log N) with one allocation. Same contract as computeAdjacencies.
+void computeAdjacenciesSorted(std::vector<Face*>& faces);
+
+/// Exercise 2.3.4.2 (backward analysis of N_cavity): in DT(S0 u S) built on the super-triangles,
+/// the cavity of the point inserted last had deg(p) - 2 faces, deg(p) its triangles in the final
+/// mesh. If the last point is a uniformly random one of the n, its expected cavity is the mean
+/// of deg - 2 over the real vertices (id >= 0), which equals 4 + (6 - D)/n, D the number of
+/// triangle corners at the four super-vertices. Returns {that mean, D}.
+std::array<double, 2> backwardCavityMean(const Triangulation& T);
+
+}  // namespace dt
