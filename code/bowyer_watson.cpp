@@ -1,0 +1,177 @@
+#include "bowyer_watson.h"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include "predicates.h"
+#include "triangulate.h"
+
+namespace dt {
+
+//! [delaunayKernelStep]
+KernelStep delaunayKernelStep(const std::vector<double>& xy, std::vector<Tri>& tri, int ip,
+                              std::uint64_t* incircleTests) {
+  const double px = xy[2 * ip], py = xy[2 * ip + 1];
+  auto X = [&](int i) { return xy[2 * i]; };
+  auto Y = [&](int i) { return xy[2 * i + 1]; };
+  std::vector<Tri> cavity;
+  // Algorithm 1 removed tau_j from DT_{i-1} inside "for j = 1 to size(DT_{i-1})": removing
+  // shifts the next triangle into slot j, which the loop then skips. Compact in place instead.
+  std::size_t kept = 0;
+  for (std::size_t j = 0; j < tri.size(); ++j) {
+    const Tri t = tri[j];
+    // "Contains" is the open disk, decided exactly: a point on the circle (cocircular input)
+    // leaves the triangle in place, and the cavity stays star-shaped (Proposition 2.1.1).
+    if (incircle(X(t[0]), Y(t[0]), X(t[1]), Y(t[1]), X(t[2]), Y(t[2]), px, py) > 0)
+      cavity.push_back(t);
+    else
+      tri[kept++] = t;
+  }
+  if (incircleTests) *incircleTests += tri.size();
+  tri.resize(kept);
+  // Algorithm 1 indented the loop over the cavity inside the loop over DT_{i-1}: the ball must
+  // be built once, after the whole cavity is known.
+  // Its "e_jk is not shared by any other triangle of C" compared each edge with every other
+  // triangle (O(|C|^2)); an edge a->b is shared iff b->a is also a cavity edge: sort and search.
+  std::vector<std::pair<int, int>> edges;
+  edges.reserve(3 * cavity.size());
+  for (const Tri& t : cavity)
+    for (int k = 0; k < 3; ++k) edges.emplace_back(t[k], t[(k + 1) % 3]);
+  std::sort(edges.begin(), edges.end());
+  KernelStep step;
+  step.cavity = cavity.size();
+  for (const auto& [a, b] : edges)
+    if (!std::binary_search(edges.begin(), edges.end(), std::make_pair(b, a))) {
+      // Algorithm 1 said "add a new triangle e_jk, p_i" without an orientation; keeping the
+      // edge's direction in its cavity triangle makes (a, b, p) counter-clockwise.
+      tri.push_back({a, b, ip});
+      ++step.ball;
+    }
+  return step;
+}
+//! [delaunayKernelStep]
+
+//! [bowyerWatson]
+BowyerWatsonResult bowyerWatson(const std::vector<double>& xy, double factor) {
+  BowyerWatsonResult r;
+  const std::size_t n = xy.size() / 2;
+  if (n == 0) throw std::invalid_argument("bowyerWatson: no points");
+  double x0 = xy[0], x1 = xy[0], y0 = xy[1], y1 = xy[1];
+  for (std::size_t i = 0; i < n; ++i) {
+    x0 = std::min(x0, xy[2 * i]), x1 = std::max(x1, xy[2 * i]);
+    y0 = std::min(y0, xy[2 * i + 1]), y1 = std::max(y1, xy[2 * i + 1]);
+  }
+  // DT_0: the same super-vertices p_{-1}..p_{-4} and triangles as initSuperTriangles.
+  Triangulation T0;
+  initSuperTriangles(T0, x0, y0, x1, y1, factor);
+  for (const Vertex& v : T0.vertices()) {
+    r.xy.push_back(v.x);
+    r.xy.push_back(v.y);
+    r.ids.push_back(v.id);
+  }
+  r.tri = {{0, 1, 2}, {1, 0, 3}};  // p_{-1} p_{-2} p_{-3} and p_{-2} p_{-1} p_{-4}
+  for (std::size_t i = 0; i < n; ++i) {
+    r.xy.push_back(xy[2 * i]);
+    r.xy.push_back(xy[2 * i + 1]);
+    r.ids.push_back(long(i));
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    const int ip = int(4 + i);
+    const KernelStep s = delaunayKernelStep(r.xy, r.tri, ip, &r.incircleTests);
+    if (s.cavity == 0) {
+      // Algorithm 1 does not say: an empty cavity means the point is on a vertex (a point
+      // inside a triangle or on an edge is strictly inside its circle) or outside DT_0.
+      bool dup = false;
+      for (int v = 0; v < ip && !dup; ++v)
+        dup = r.xy[2 * v] == r.xy[2 * ip] && r.xy[2 * v + 1] == r.xy[2 * ip + 1];
+      if (!dup) throw std::out_of_range("bowyerWatson: point " + std::to_string(i) +
+                                        " lies outside the super-triangles");
+      ++r.duplicates;
+      continue;
+    }
+    r.cavityFaces += s.cavity;
+  }
+  return r;
+}
+//! [bowyerWatson]
+
+std::vector<std::array<long, 3>> canonicalTriangles(const std::vector<long>& ids,
+                                                    const std::vector<Tri>& tri) {
+  std::vector<std::array<long, 3>> out;
+  out.reserve(tri.size());
+  for (const Tri& t : tri) {
+    std::array<long, 3> a = {ids[t[0]], ids[t[1]], ids[t[2]]};
+    while (a[0] > a[1] || a[0] > a[2]) std::rotate(a.begin(), a.begin() + 1, a.end());
+    out.push_back(a);
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+std::vector<std::array<long, 2>> hullEdgesNotCovered(const std::vector<double>& xy,
+                                                     const std::vector<long>& ids,
+                                                     const std::vector<Tri>& tri) {
+  auto X = [&](int i) { return xy[2 * i]; };
+  auto Y = [&](int i) { return xy[2 * i + 1]; };
+  std::vector<int> pts;
+  for (std::size_t i = 0; i < ids.size(); ++i)
+    if (ids[i] >= 0) pts.push_back(int(i));
+  std::sort(pts.begin(), pts.end(), [&](int a, int b) {
+    return X(a) < X(b) || (X(a) == X(b) && Y(a) < Y(b));
+  });
+  pts.erase(std::unique(pts.begin(), pts.end(),
+                        [&](int a, int b) { return X(a) == X(b) && Y(a) == Y(b); }),
+            pts.end());
+  // Andrew's monotone chain with exact orientation; popping only on a right turn keeps the
+  // collinear points of the hull, so that every hull edge is an edge of DT(S).
+  std::vector<int> hull;
+  for (int pass = 0; pass < 2; ++pass) {
+    const std::size_t base = hull.size();
+    for (std::size_t k = 0; k < pts.size(); ++k) {
+      const int p = pass == 0 ? pts[k] : pts[pts.size() - 1 - k];
+      while (hull.size() >= base + 2 &&
+             orient2d(X(hull[hull.size() - 2]), Y(hull[hull.size() - 2]), X(hull.back()),
+                      Y(hull.back()), X(p), Y(p)) < 0)
+        hull.pop_back();
+      hull.push_back(p);
+    }
+    hull.pop_back();  // the last point of one chain is the first of the other
+  }
+  std::vector<std::pair<int, int>> kept;  // directed edges of triangles free of super-vertices
+  for (const Tri& t : tri) {
+    if (ids[t[0]] < 0 || ids[t[1]] < 0 || ids[t[2]] < 0) continue;
+    for (int k = 0; k < 3; ++k) kept.emplace_back(t[k], t[(k + 1) % 3]);
+  }
+  std::sort(kept.begin(), kept.end());
+  std::vector<std::array<long, 2>> missing;
+  for (std::size_t k = 0; k < hull.size(); ++k) {
+    const int a = hull[k], b = hull[(k + 1) % hull.size()];  // counter-clockwise: a -> b
+    if (!std::binary_search(kept.begin(), kept.end(), std::make_pair(a, b)))
+      missing.push_back({ids[a], ids[b]});
+  }
+  return missing;
+}
+
+std::vector<Tri> bruteForceDelaunay(const std::vector<double>& xy) {
+  const int n = int(xy.size() / 2);
+  auto X = [&](int i) { return xy[2 * i]; };
+  auto Y = [&](int i) { return xy[2 * i + 1]; };
+  std::vector<Tri> out;
+  for (int a = 0; a < n; ++a)
+    for (int b = a + 1; b < n; ++b)
+      for (int c = b + 1; c < n; ++c) {
+        const int o = orient2d(X(a), Y(a), X(b), Y(b), X(c), Y(c));
+        if (o == 0) continue;
+        const Tri t = o > 0 ? Tri{a, b, c} : Tri{a, c, b};
+        bool empty = true;
+        for (int d = 0; d < n && empty; ++d)
+          if (d != a && d != b && d != c)
+            empty = incircle(X(t[0]), Y(t[0]), X(t[1]), Y(t[1]), X(t[2]), Y(t[2]), X(d), Y(d)) <= 0;
+        if (empty) out.push_back(t);
+      }
+  return out;
+}
+
+}  // namespace dt
