@@ -86,6 +86,7 @@ void splitDouble(double x, double& mant, int& e) {
 }
 
 // Loads n doubles into ws.v[0..n) as integers sharing one scale.
+//! [loadScaled]
 void loadScaled(const double* x, int n, ExactWorkspace& ws) {
   double mant[8];
   int e[8];
@@ -106,9 +107,11 @@ void loadScaled(const double* x, int n, ExactWorkspace& ws) {
     if (mant[i] != 0) mpz_mul_2exp(ws.v[i], ws.v[i], static_cast<mp_bitcnt_t>(e[i] - emin));
   }
 }
+//! [loadScaled]
 
 }  // namespace
 
+//! [orient2dExact]
 int orient2dExact(double ax, double ay, double bx, double by, double cx, double cy) {
   ExactWorkspace& ws = workspace();
   const double in[6] = {ax, ay, bx, by, cx, cy};
@@ -121,8 +124,10 @@ int orient2dExact(double ax, double ay, double bx, double by, double cx, double 
   mpz_sub(t[3], v[2], v[4]);  // bx - cx
   mpz_mul(t[4], t[0], t[1]);
   mpz_mul(t[5], t[2], t[3]);
-  return mpz_cmp(t[4], t[5]) > 0 ? 1 : (mpz_cmp(t[4], t[5]) < 0 ? -1 : 0);
+  const int cmp = mpz_cmp(t[4], t[5]);
+  return (cmp > 0) - (cmp < 0);
 }
+//! [orient2dExact]
 
 int incircleExact(double ax, double ay, double bx, double by, double cx, double cy, double dx,
                   double dy) {
@@ -165,32 +170,44 @@ int incircleExact(double ax, double ay, double bx, double by, double cx, double 
 // The notes' scheme: static filter, then MPFR with 200 bits of precision.
 namespace {
 
-struct Mpfr200 {
+// MPFR variables of one precision, reused from call to call (set_prec only when it changes).
+struct MpfrWork {
   mpfr_t v[8];
   mpfr_t t[8];
-  Mpfr200() {
-    for (auto& z : v) mpfr_init2(z, 200);
-    for (auto& z : t) mpfr_init2(z, 200);
+  int bits = 200;
+  MpfrWork() {
+    for (auto& z : v) mpfr_init2(z, bits);
+    for (auto& z : t) mpfr_init2(z, bits);
   }
-  ~Mpfr200() {
+  ~MpfrWork() {
     for (auto& z : v) mpfr_clear(z);
     for (auto& z : t) mpfr_clear(z);
   }
-  Mpfr200(const Mpfr200&) = delete;
-  Mpfr200& operator=(const Mpfr200&) = delete;
+  void precision(int b) {
+    if (b == bits) return;
+    bits = b;
+    for (auto& z : v) mpfr_set_prec(z, b);
+    for (auto& z : t) mpfr_set_prec(z, b);
+  }
+  MpfrWork(const MpfrWork&) = delete;
+  MpfrWork& operator=(const MpfrWork&) = delete;
 };
 
-Mpfr200& mpfr200() {
-  thread_local Mpfr200 ws;
+MpfrWork& mpfrWork(int bits) {
+  thread_local MpfrWork ws;
+  ws.precision(bits);
   return ws;
 }
 
 }  // namespace
 
-int orient2dMPFR200(double ax, double ay, double bx, double by, double cx, double cy) {
-  Mpfr200& w = mpfr200();
+//! [orient2dMPFR]
+int orient2dMPFR(int bits, double ax, double ay, double bx, double by, double cx, double cy) {
+  MpfrWork& w = mpfrWork(bits);
   const double in[6] = {ax, ay, bx, by, cx, cy};
-  for (int i = 0; i < 6; ++i) mpfr_set_d(w.v[i], in[i], MPFR_RNDN);  // exact: 53 <= 200 bits
+  for (int i = 0; i < 6; ++i) mpfr_set_d(w.v[i], in[i], MPFR_RNDN);  // exact when bits >= 53
+  // Each operation rounds to `bits` bits: a difference of doubles whose exponents are far
+  // apart, or a product of two long differences, does not fit, and the sign can be lost.
   mpfr_sub(w.t[0], w.v[0], w.v[4], MPFR_RNDN);
   mpfr_sub(w.t[1], w.v[3], w.v[5], MPFR_RNDN);
   mpfr_sub(w.t[2], w.v[1], w.v[5], MPFR_RNDN);
@@ -200,10 +217,11 @@ int orient2dMPFR200(double ax, double ay, double bx, double by, double cx, doubl
   mpfr_sub(w.t[6], w.t[4], w.t[5], MPFR_RNDN);
   return mpfr_sgn(w.t[6]);
 }
+//! [orient2dMPFR]
 
-int incircleMPFR200(double ax, double ay, double bx, double by, double cx, double cy, double dx,
-                    double dy) {
-  Mpfr200& w = mpfr200();
+int incircleMPFR(int bits, double ax, double ay, double bx, double by, double cx, double cy,
+                 double dx, double dy) {
+  MpfrWork& w = mpfrWork(bits);
   const double in[8] = {ax, ay, bx, by, cx, cy, dx, dy};
   for (int i = 0; i < 8; ++i) mpfr_set_d(w.v[i], in[i], MPFR_RNDN);
   for (int i = 0; i < 6; ++i) mpfr_sub(w.v[i], w.v[i], w.v[6 + (i & 1)], MPFR_RNDN);
@@ -233,13 +251,54 @@ int incircleMPFR200(double ax, double ay, double bx, double by, double cx, doubl
   return mpfr_sgn(t[6]);
 }
 
+int orient2dMPFR200(double ax, double ay, double bx, double by, double cx, double cy) {
+  return orient2dMPFR(200, ax, ay, bx, by, cx, cy);
+}
+int incircleMPFR200(double ax, double ay, double bx, double by, double cx, double cy, double dx,
+                    double dy) {
+  return incircleMPFR(200, ax, ay, bx, by, cx, cy, dx, dy);
+}
+
+// Exercise: how many bits make MPFR exact? Scaled as in the exact stage, the inputs are integers
+// of at most B bits. Then |differences| < 2^(B+1), products < 2^(2B+2), and the orientation
+// value < 2^(2B+3); the incircle lifts and minors are < 2^(2B+3), their products < 2^(4B+6), the
+// sum of three < 2^(4B+8). An integer below 2^k has at most k significant bits, so with k bits
+// of precision no operation rounds.
+namespace {
+int scaledBits(const double* x, int n) {
+  int emin = 0, emax = 0;
+  bool any = false;
+  for (int i = 0; i < n; ++i) {
+    if (x[i] == 0) continue;
+    int ex = 0;
+    std::frexp(x[i], &ex);  // |x| < 2^ex, unit in the last place 2^(ex-53)
+    if (!any || ex - 53 < emin) emin = ex - 53;
+    if (!any || ex > emax) emax = ex;
+    any = true;
+  }
+  return any ? emax - emin : 1;
+}
+}  // namespace
+
+int exactBitsOrient2d(double ax, double ay, double bx, double by, double cx, double cy) {
+  const double in[6] = {ax, ay, bx, by, cx, cy};
+  return 2 * scaledBits(in, 6) + 3;
+}
+int exactBitsIncircle(double ax, double ay, double bx, double by, double cx, double cy, double dx,
+                      double dy) {
+  const double in[8] = {ax, ay, bx, by, cx, cy, dx, dy};
+  return 4 * scaledBits(in, 8) + 8;
+}
+
 // As printed: "max(x_a, y_a, x_b, y_b, x_c, y_c)", a signed maximum (no absolute values).
+//! [orient2dNotes]
 int orient2dNotes(double ax, double ay, double bx, double by, double cx, double cy) {
   const double o = orient2dNaiveValue(ax, ay, bx, by, cx, cy);
   const double m = std::max({ax, ay, bx, by, cx, cy});
   if (std::fabs(o) > 1e-15 * m * m) return signOf(o);
   return orient2dMPFR200(ax, ay, bx, by, cx, cy);
 }
+//! [orient2dNotes]
 
 // The notes give only epsilon = 1e-11 for incircle; the determinant has degree 4, so the scale
 // is read as max(...)^4, with the same signed maximum as the orientation filter.
@@ -247,6 +306,23 @@ int incircleNotes(double ax, double ay, double bx, double by, double cx, double 
                   double dy) {
   const double v = incircleNaiveValue(ax, ay, bx, by, cx, cy, dx, dy);
   const double m = std::max({ax, ay, bx, by, cx, cy, dx, dy});
+  if (std::fabs(v) > 1e-11 * m * m * m * m) return signOf(v);
+  return incircleMPFR200(ax, ay, bx, by, cx, cy, dx, dy);
+}
+
+int orient2dNotesAbs(double ax, double ay, double bx, double by, double cx, double cy) {
+  const double o = orient2dNaiveValue(ax, ay, bx, by, cx, cy);
+  const double m = std::max({std::fabs(ax), std::fabs(ay), std::fabs(bx), std::fabs(by),
+                             std::fabs(cx), std::fabs(cy)});
+  if (std::fabs(o) > 1e-15 * m * m) return signOf(o);
+  return orient2dMPFR200(ax, ay, bx, by, cx, cy);
+}
+
+int incircleNotesAbs(double ax, double ay, double bx, double by, double cx, double cy, double dx,
+                     double dy) {
+  const double v = incircleNaiveValue(ax, ay, bx, by, cx, cy, dx, dy);
+  const double m = std::max({std::fabs(ax), std::fabs(ay), std::fabs(bx), std::fabs(by),
+                             std::fabs(cx), std::fabs(cy), std::fabs(dx), std::fabs(dy)});
   if (std::fabs(v) > 1e-11 * m * m * m * m) return signOf(v);
   return incircleMPFR200(ax, ay, bx, by, cx, cy, dx, dy);
 }
@@ -296,9 +372,13 @@ int orient2d(double ax, double ay, double bx, double by, double cx, double cy) {
 // and 1 sum in the lift (4), 2 differences and 1 product and 1 subtraction in the minor (4),
 // the product lift x minor (1), and the two final additions (2). So the error is at most
 // g11 P, where P is the sum of the absolute values of the monomials: the "permanent",
-// computed below as alift (|bdx cdy| + |cdx bdy|) + ... Its own rounding (at most 8
-// operations) gives P <= permanent (1 + 9u), so 12u permanent is a safe bound (11u(1 + 10u)
-// < 12u (1-u)). Underflow: if every nonzero difference is at least 2^-511 in magnitude, no
+// computed below as alift (|bdx cdy| + |cdx bdy|) + ... P is taken on the exact differences,
+// so each of its monomials also reaches the computed permanent through 11 roundings (the same
+// 2 + 2 differences, 1 square, 1 lift sum, 1 product, 1 sum of absolute values, 1 product by
+// the lift, 2 final sums): P <= permanent / (1-u)^11 < permanent (1 + 12u). The error is thus
+// below g11 (1 + 12u) permanent < 11u (1 + 24u) permanent, and the computed 12u permanent,
+// at least 12u (1-u) permanent, exceeds it.
+// Underflow: if every nonzero difference is at least 2^-511 in magnitude, no
 // degree-2 product underflows; a degree-4 product may, with an absolute error of at most
 // 2^-1075, which the margin u permanent covers once permanent >= 2^-900. Otherwise, and on
 // overflow (infinity or NaN), the exact stage decides.

@@ -51,10 +51,25 @@ int orient2dNotes(double ax, double ay, double bx, double by, double cx, double 
 /// The notes' incircle scheme: filter 1e-11 max(|coords|)^4, then 200-bit MPFR.
 int incircleNotes(double ax, double ay, double bx, double by, double cx, double cy, double dx,
                   double dy);
+/// The notes' filters read charitably, with max(|coords|) instead of the printed signed max.
+/// Still not safe (section 2.3.1 of the book shows counterexamples); not used by the kernel.
+int orient2dNotesAbs(double ax, double ay, double bx, double by, double cx, double cy);
+int incircleNotesAbs(double ax, double ay, double bx, double by, double cx, double cy, double dx,
+                     double dy);
 /// The 200-bit MPFR evaluation alone (no filter), to show that 200 bits are not always enough.
 int orient2dMPFR200(double ax, double ay, double bx, double by, double cx, double cy);
 int incircleMPFR200(double ax, double ay, double bx, double by, double cx, double cy, double dx,
                     double dy);
+/// The same evaluation order with `bits` bits of MPFR precision (round to nearest).
+int orient2dMPFR(int bits, double ax, double ay, double bx, double by, double cx, double cy);
+int incircleMPFR(int bits, double ax, double ay, double bx, double by, double cx, double cy,
+                 double dx, double dy);
+/// A precision (in bits) with which every MPFR operation of orient2dMPFR / incircleMPFR is exact
+/// on these inputs, hence the sign too (exercise of section 2.3.1). It grows with the spread of
+/// the exponents: 109 bits for doubles of one binade, about 2100 for 1e-308 beside 1e308.
+int exactBitsOrient2d(double ax, double ay, double bx, double by, double cx, double cy);
+int exactBitsIncircle(double ax, double ay, double bx, double by, double cx, double cy, double dx,
+                      double dy);
 
 /// Robust orientation (2.3.1): double evaluation + safe error bound, exact fallback.
 /// The sign is exact for every input of finite doubles.

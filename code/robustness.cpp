@@ -1,0 +1,121 @@
+#include "robustness.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <utility>
+
+#include "predicates.h"
+
+namespace dt {
+
+SignMap orientMap(OrientFn f, OrientOrder order, int n, double eps) {
+  using C = Figure27;
+  SignMap m;
+  m.n = n;
+  m.s.resize(static_cast<std::size_t>(n) * n);
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const double ax = C::x0 + i * eps, ay = C::y0 + j * eps;  // exact: i eps is a multiple of ulp
+      int v = 0;
+      switch (order) {
+        case OrientOrder::ABC: v = f(ax, ay, C::bx, C::by, C::cx, C::cy); break;
+        case OrientOrder::CBA: v = f(C::cx, C::cy, C::bx, C::by, ax, ay); break;
+        case OrientOrder::BCA: v = f(C::bx, C::by, C::cx, C::cy, ax, ay); break;
+      }
+      m.s[static_cast<std::size_t>(j) * n + i] = static_cast<signed char>(v);
+    }
+  return m;
+}
+
+SignMap incircleMap(IncircleFn f, IncircleOrder order, int n, double eps) {
+  using C = IncircleConfig;
+  SignMap m;
+  m.n = n;
+  m.s.resize(static_cast<std::size_t>(n) * n);
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const double dx = C::x0 + i * eps, dy = C::y0 + j * eps;
+      const int v = order == IncircleOrder::ABCD
+                        ? f(C::ax, C::ay, C::bx, C::by, C::cx, C::cy, dx, dy)
+                        : f(dx, dy, C::cx, C::cy, C::bx, C::by, C::ax, C::ay);
+      m.s[static_cast<std::size_t>(j) * n + i] = static_cast<signed char>(v);
+    }
+  return m;
+}
+
+MapErrors compareMaps(const SignMap& got, const SignMap& exact) {
+  MapErrors e;
+  for (int j = 0; j < got.n; ++j)
+    for (int i = 0; i < got.n; ++i) {
+      ++e.cells;
+      const int g = got.at(i, j), x = exact.at(i, j);
+      if (g == x) continue;
+      ++e.wrong;
+      if (g == 0)
+        ++e.wrongZeros;
+      else if (x == 0)
+        ++e.spurious;
+      else
+        ++e.flipped;
+      if (std::abs(i - j) > e.farthest) {
+        e.farthest = std::abs(i - j);
+        e.fi = i;
+        e.fj = j;
+      }
+    }
+  return e;
+}
+
+long agreeingCells(const SignMap& a, const SignMap& b, int factor) {
+  long k = 0;
+  for (std::size_t c = 0; c < a.s.size(); ++c) k += a.s[c] == factor * b.s[c];
+  return k;
+}
+
+//! [orient2dNaiveCanonical]
+int orient2dNaiveCanonical(double ax, double ay, double bx, double by, double cx, double cy) {
+  struct P {
+    double x, y;
+    bool operator<(const P& o) const { return x < o.x || (x == o.x && y < o.y); }
+  };
+  P p[3] = {{ax, ay}, {bx, by}, {cx, cy}};
+  int parity = 1;  // each swap of two points negates the orientation
+  if (p[1] < p[0]) std::swap(p[0], p[1]), parity = -parity;
+  if (p[2] < p[1]) std::swap(p[1], p[2]), parity = -parity;
+  if (p[1] < p[0]) std::swap(p[0], p[1]), parity = -parity;
+  return parity * orient2dNaive(p[0].x, p[0].y, p[1].x, p[1].y, p[2].x, p[2].y);
+}
+//! [orient2dNaiveCanonical]
+
+bool segmentsCrossNotes(double px, double py, double qx, double qy, double rx, double ry,
+                        double sx, double sy) {
+  return orient2d(px, py, qx, qy, rx, ry) * orient2d(px, py, qx, qy, sx, sy) < 0 &&
+         orient2d(rx, ry, sx, sy, px, py) * orient2d(rx, ry, sx, sy, qx, qy) < 0;
+}
+
+//! [segmentsIntersect]
+namespace {
+// For r on the line pq: is r within the bounding box of p and q? Comparisons are exact.
+bool onSegment(double px, double py, double qx, double qy, double rx, double ry) {
+  return std::min(px, qx) <= rx && rx <= std::max(px, qx) && std::min(py, qy) <= ry &&
+         ry <= std::max(py, qy);
+}
+}  // namespace
+
+bool segmentsIntersect(double px, double py, double qx, double qy, double rx, double ry,
+                       double sx, double sy) {
+  const int o1 = orient2d(px, py, qx, qy, rx, ry), o2 = orient2d(px, py, qx, qy, sx, sy);
+  const int o3 = orient2d(rx, ry, sx, sy, px, py), o4 = orient2d(rx, ry, sx, sy, qx, qy);
+  if (o1 * o2 < 0 && o3 * o4 < 0) return true;  // proper crossing: the notes' case
+  // Otherwise they meet only at an endpoint lying on the other segment: on its line (exact
+  // zero) and in its bounding box. This also covers a segment of length zero (p = q): then
+  // every orientation with p, q is 0, and the box test alone says whether r is p.
+  if (o1 == 0 && onSegment(px, py, qx, qy, rx, ry)) return true;
+  if (o2 == 0 && onSegment(px, py, qx, qy, sx, sy)) return true;
+  if (o3 == 0 && onSegment(rx, ry, sx, sy, px, py)) return true;
+  if (o4 == 0 && onSegment(rx, ry, sx, sy, qx, qy)) return true;
+  return false;
+}
+//! [segmentsIntersect]
+
+}  // namespace dt
