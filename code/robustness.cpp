@@ -72,6 +72,32 @@ long agreeingCells(const SignMap& a, const SignMap& b, int factor) {
   return k;
 }
 
+// Products pi^s conj(pi)^(2e-s) of the Gaussian primes pi = 2+i, 3+2i, 4+i dividing r.
+std::vector<std::pair<double, double>> cocircularIntegerPoints() {
+  using I = long long;  // |x|, |y| <= r < 2^51 and the factors are below 5: products < 2^54
+  struct G {
+    I x, y;
+  };
+  auto mul = [](G a, G b) { return G{a.x * b.x - a.y * b.y, a.x * b.y + a.y * b.x}; };
+  const std::pair<G, int> factors[] = {{{2, 1}, 12}, {{3, 2}, 4}, {{4, 1}, 2}};
+  std::vector<G> pts = {{1, 0}};
+  for (const auto& [g, e] : factors) {
+    std::vector<G> next;
+    const G c{g.x, -g.y};
+    for (const G& z : pts)
+      for (int s = 0; s <= 2 * e; ++s) {
+        G w = z;
+        for (int k = 0; k < s; ++k) w = mul(w, g);
+        for (int k = 0; k < 2 * e - s; ++k) w = mul(w, c);
+        next.push_back(w);
+      }
+    pts = next;
+  }
+  std::vector<std::pair<double, double>> out;
+  for (const G& z : pts) out.emplace_back(double(z.x), double(z.y));  // < 2^53: exact
+  return out;
+}
+
 //! [orient2dNaiveCanonical]
 int orient2dNaiveCanonical(double ax, double ay, double bx, double by, double cx, double cy) {
   struct P {

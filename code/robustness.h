@@ -4,6 +4,7 @@
 // tests check the very maps the figures show.
 #pragma once
 
+#include <utility>
 #include <vector>
 
 namespace dt {
@@ -62,6 +63,10 @@ MapErrors compareMaps(const SignMap& got, const SignMap& exact);
 
 /// Number of cells where a = factor * b (factor +1 or -1).
 long agreeingCells(const SignMap& a, const SignMap& b, int factor);
+
+/// Integer points on the circle x^2 + y^2 = r^2, r = 5^12 13^4 17^2 (about 2^50.8), all exactly
+/// representable: any four are exactly cocircular, and the incircle terms need about 205 bits.
+std::vector<std::pair<double, double>> cocircularIntegerPoints();
 
 // ---- exercises of section 2.3.1 (the book states them; tests check the solutions) -------------
 

@@ -384,33 +384,6 @@ void notesFilters(const ch::Options& o) {
 // ---------------------------------------------------------------------------------------------
 // 4. Is 200-bit MPFR exact?
 
-// Integer points on the circle x^2 + y^2 = r^2, r = 5^12 13^4 17^2 (about 2^50.8): products of
-// Gaussian integers pi^s conj(pi)^(2e-s) over the factors pi = 2+i, 3+2i, 4+i of r.
-std::vector<std::pair<double, double>> bigCocircularPoints() {
-  using I = long long;  // |x|, |y| <= r < 2^51 and the factors are below 5: products < 2^54
-  struct G {
-    I x, y;
-  };
-  auto mul = [](G a, G b) { return G{a.x * b.x - a.y * b.y, a.x * b.y + a.y * b.x}; };
-  const std::pair<G, int> factors[] = {{{2, 1}, 12}, {{3, 2}, 4}, {{4, 1}, 2}};
-  std::vector<G> pts = {{1, 0}};
-  for (const auto& [g, e] : factors) {
-    std::vector<G> next;
-    const G c{g.x, -g.y};
-    for (const G& z : pts)
-      for (int s = 0; s <= 2 * e; ++s) {
-        G w = z;
-        for (int k = 0; k < s; ++k) w = mul(w, g);
-        for (int k = 0; k < 2 * e - s; ++k) w = mul(w, c);
-        next.push_back(w);
-      }
-    pts = next;
-  }
-  std::vector<std::pair<double, double>> out;
-  for (const G& z : pts) out.emplace_back(double(z.x), double(z.y));  // |x|, |y| < 2^53: exact
-  return out;
-}
-
 void mpfr200(const ch::Options& o) {
   ch::Table t;
   t.caption = "Is 200-bit MPFR exact? Its sign against the exact one (GMP integers)";
@@ -464,7 +437,7 @@ void mpfr200(const ch::Options& o) {
   }
   {  // incircle: exactly cocircular integer points of about 51 bits
     Tally y;
-    const auto P = bigCocircularPoints();
+    const auto P = dt::cocircularIntegerPoints();
     std::uniform_int_distribution<std::size_t> pick(0, P.size() - 1);
     for (long i = 0; i < n / 10; ++i) {
       double v[8];
