@@ -75,26 +75,41 @@ std::uint64_t hilbertPack(const int bits[], int d) {
 }
 
 //! [hilbertIndex]
+namespace {
+
+// Listing 2.8 on integers. Its frames (red, blue) take only four values from the root
+// (+x, +y): swapped or not, negated or not (quadrant 0 swaps, quadrant 3 swaps and negates,
+// and both vectors always share a sign). A state s = 2 neg + swapped and the two bits of the
+// cell at one level give the quadrant q and the next state: a 16-entry table, built here from
+// the listing's rules, replaces its branches.
+struct HilbertTable {
+  unsigned char next[16];  // (s << 2 | bx << 1 | by) -> (nextState << 2 | q)
+  constexpr HilbertTable() : next() {
+    for (int s = 0; s < 4; ++s)
+      for (int bx = 0; bx < 2; ++bx)
+        for (int by = 0; by < 2; ++by) {
+          const bool swapped = (s & 1) != 0, neg = (s & 2) != 0;
+          const bool plusRed = (swapped ? by : bx) != neg;   // red is +-x, or +-y if swapped
+          const bool plusBlue = (swapped ? bx : by) != neg;
+          const int q = plusRed ? (plusBlue ? 2 : 3) : (plusBlue ? 1 : 0);
+          int t = s;
+          if (q == 0) t ^= 1;  // b <- r/2, r <- b/2
+          if (q == 3) t ^= 3;  // b <- -r/2, r <- -b/2
+          next[s << 2 | bx << 1 | by] = static_cast<unsigned char>(t << 2 | q);
+        }
+  }
+};
+constexpr HilbertTable kHilbert;
+
+}  // namespace
+
 std::uint64_t hilbertIndex(std::uint32_t i, std::uint32_t j, int depth) {
-  // Listing 2.8 on integers. The frame is (axis, sign) of red and blue; a cell of the grid is
-  // on the + side of an axis at level s iff bit s of its coordinate along that axis is 1.
-  int redAxis = 0, blueAxis = 1;  // red = +x, blue = +y at the root
-  bool redNeg = false, blueNeg = false;
+  unsigned state = 0;  // the root frame: red = +x, blue = +y
   std::uint64_t key = 0;
   for (int s = depth - 1; s >= 0; --s) {
-    const bool bit[2] = {((i >> s) & 1u) != 0, ((j >> s) & 1u) != 0};
-    const bool plusRed = bit[redAxis] != redNeg;
-    const bool plusBlue = bit[blueAxis] != blueNeg;
-    const unsigned q = plusRed ? (plusBlue ? 2u : 3u) : (plusBlue ? 1u : 0u);
-    key = (key << 2) | q;
-    if (q == 0 || q == 3) {  // both swap red and blue; quadrant 3 also reverses them
-      std::swap(redAxis, blueAxis);
-      std::swap(redNeg, blueNeg);
-      if (q == 3) {
-        redNeg = !redNeg;
-        blueNeg = !blueNeg;
-      }
-    }
+    const unsigned e = kHilbert.next[state << 2 | ((i >> s) & 1u) << 1 | ((j >> s) & 1u)];
+    key = key << 2 | (e & 3u);
+    state = e >> 2;
   }
   return key;
 }

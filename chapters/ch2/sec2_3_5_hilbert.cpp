@@ -1,0 +1,445 @@
+// Section 2.3.5: Hilbert curves, the Hilbert sort, Table 2.2, and BRIO.
+//
+// Regenerates Figure 2.11 (H1, H2 and the local frames x0, b, r of Listing 2.8), Figure 2.12
+// (10^3 and 10^4 points joined in Hilbert order), Table 2.2 (delaunayTrgl on Hilbert-sorted
+// random points, super-triangles, walk started in the previous cavity), the effect of the curve
+// depth, the cost of the keys against the sort, and BRIO against Hilbert-only and random order
+// on four kinds of input.
+//
+//   sec2_3_5_hilbert [--out DIR] [--quick] [--max-n N] [--huge] [--no-plot]
+//     --huge   add n = 10^7 to Table 2.2 (about 2 GB of memory and a minute or two)
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <iostream>
+#include <numeric>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "check.h"
+#include "common.h"
+#include "hilbert.h"
+#include "triangulate.h"
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+using XY = std::vector<double>;
+
+// ---- inputs (fixed seeds) ------------------------------------------------------------------
+
+XY uniform(std::size_t n, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0, 1);
+  XY p(2 * n);
+  for (double& v : p) v = u(rng);
+  return p;
+}
+
+// Gaussian blobs whose widths range over a factor 50, so densities differ by ~2500.
+XY clustered(std::size_t n, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0, 1);
+  const int blobs = 12;
+  std::vector<double> cx(blobs), cy(blobs), s(blobs);
+  for (int b = 0; b < blobs; ++b) {
+    cx[b] = 0.1 + 0.8 * u(rng);
+    cy[b] = 0.1 + 0.8 * u(rng);
+    s[b] = 0.001 * std::pow(50.0, u(rng));
+  }
+  std::normal_distribution<double> g(0, 1);
+  XY p(2 * n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const int b = int(u(rng) * blobs) % blobs;
+    p[2 * i] = cx[b] + s[b] * g(rng);
+    p[2 * i + 1] = cy[b] + s[b] * g(rng);
+  }
+  return p;
+}
+
+// Points on the parabola y = x^2 (rounded): every point is on the hull of the others, the
+// classic bad case for insertion orders that follow the curve.
+XY parabola(std::size_t n, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(-1, 1);
+  XY p(2 * n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double x = u(rng);
+    p[2 * i] = x;
+    p[2 * i + 1] = x * x;
+  }
+  return p;
+}
+
+// A square grid, each point moved by at most 10% of the spacing: nearly cocircular quadruples
+// everywhere, in random input order.
+XY jitteredGrid(std::size_t n, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(-0.1, 0.1);
+  const std::size_t m = std::size_t(std::ceil(std::sqrt(double(n))));
+  XY p;
+  p.reserve(2 * n);
+  for (std::size_t k = 0; k < n; ++k) {
+    p.push_back((double(k % m) + u(rng)) / double(m));
+    p.push_back((double(k / m) + u(rng)) / double(m));
+  }
+  std::vector<std::size_t> perm(n);
+  std::iota(perm.begin(), perm.end(), std::size_t{0});
+  std::shuffle(perm.begin(), perm.end(), rng);
+  XY q(2 * n);
+  for (std::size_t k = 0; k < n; ++k) {
+    q[2 * k] = p[2 * perm[k]];
+    q[2 * k + 1] = p[2 * perm[k] + 1];
+  }
+  return q;
+}
+
+// ---- one measured triangulation ------------------------------------------------------------
+
+enum class Order { Random, Hilbert, Brio };
+const char* orderName(Order o) {
+  return o == Order::Random ? "random" : (o == Order::Hilbert ? "Hilbert" : "BRIO");
+}
+
+struct Run {
+  double tSort = 0, tTotal = 0;  // seconds: ordering, and ordering + insertions
+  double nSearch = 0, nCavity = 0;
+  bool checked = false;
+};
+
+// delaunayTrgl with two super-triangles (2.2.1) and the start rule LastCavity; the input order
+// of `p` is already random, so Order::Random inserts the points as they come.
+Run triangulate(const XY& p, Order order, int depth, bool check, std::uint64_t seed = 7) {
+  Run r;
+  const std::size_t n = p.size() / 2;
+  const auto t0 = Clock::now();
+  std::vector<std::size_t> idx;
+  if (order == Order::Hilbert) {
+    idx = dt::hilbertOrder(p, depth);
+  } else if (order == Order::Brio) {
+    idx = dt::brioOrder(p, seed, depth);
+  } else {
+    idx.resize(n);
+    std::iota(idx.begin(), idx.end(), std::size_t{0});
+  }
+  r.tSort = ch::secondsSince(t0);
+  double xmin = p[0], xmax = p[0], ymin = p[1], ymax = p[1];
+  for (std::size_t i = 0; i < n; ++i) {
+    xmin = std::min(xmin, p[2 * i]); xmax = std::max(xmax, p[2 * i]);
+    ymin = std::min(ymin, p[2 * i + 1]); ymax = std::max(ymax, p[2 * i + 1]);
+  }
+  dt::Triangulation T;
+  dt::initSuperTriangles(T, xmin, ymin, xmax, ymax);
+  std::vector<dt::Vertex*> S;
+  S.reserve(n);
+  for (std::size_t k : idx) S.push_back(T.addVertex(p[2 * k], p[2 * k + 1], long(k)));
+  dt::InsertionStats st;
+  const auto t1 = Clock::now();
+  dt::delaunayTrgl(T, S, dt::StartRule::LastCavity, &st);
+  r.tTotal = r.tSort + ch::secondsSince(t1);
+  r.nSearch = st.meanSearch();
+  r.nCavity = st.meanCavity();
+  if (check) {
+    const dt::CheckReport rep = dt::checkTriangulation(T);
+    if (!rep.ok || st.insertions + st.duplicates != n)
+      throw std::runtime_error("exact check failed: " + rep.error);
+    r.checked = true;
+  }
+  return r;
+}
+
+std::string sci(std::size_t n) {
+  const int e = int(std::lround(std::log10(double(n))));
+  if (std::size_t(std::llround(std::pow(10.0, e))) == n) return "10^" + std::to_string(e);
+  return std::to_string(n);
+}
+
+// ---- Figure 2.11 ---------------------------------------------------------------------------
+
+void figure211(const ch::Options& o) {
+  const dt::HilbertFrame root{0.5, 0.5, 0.5, 0, 0, 0.5};  // red = +x, blue = +y (half-sides)
+  for (int k = 1; k <= 2; ++k) {
+    const int m = 1 << k;
+    std::vector<std::pair<std::uint64_t, std::string>> cells;
+    int bits[2];
+    for (int i = 0; i < m; ++i)
+      for (int j = 0; j < m; ++j) {
+        const double x = (i + 0.5) / m, y = (j + 0.5) / m;
+        dt::HilbertCoord(x, y, root.x0, root.y0, root.xRed, root.yRed, root.xBlue, root.yBlue, k,
+                         bits);
+        std::ostringstream s;
+        s << x << " " << y << " \"(" << bits[0];
+        if (k == 2) s << "," << bits[1];
+        s << ")\"";
+        cells.emplace_back(dt::hilbertPack(bits, k), s.str());
+      }
+    std::sort(cells.begin(), cells.end());
+    std::ostringstream curve;
+    curve << "# x y label: cell centres of H" << k << " in the order of Listing 2.8\n";
+    for (const auto& c : cells) curve << c.second << "\n";
+    ch::writeOut(o, "fig2_11_h" + std::to_string(k) + ".dat", curve.str());
+    // The frames that Listing 2.8 uses to number these cells: the root for H1, its four
+    // children (hilbertChild, the same update as HilbertCoord) for H2.
+    std::vector<dt::HilbertFrame> frames = {root};
+    if (k == 2) frames = {dt::hilbertChild(root, 0), dt::hilbertChild(root, 1),
+                          dt::hilbertChild(root, 2), dt::hilbertChild(root, 3)};
+    std::ostringstream fr;
+    fr << "# x0 y0 xRed yRed xBlue yBlue\n";
+    for (const auto& f : frames)
+      fr << f.x0 << " " << f.y0 << " " << f.xRed << " " << f.yRed << " " << f.xBlue << " "
+         << f.yBlue << "\n";
+    ch::writeOut(o, "fig2_11_frames" + std::to_string(k) + ".dat", fr.str());
+  }
+  ch::runGnuplot(o, "fig2_11.gp");
+}
+
+// ---- Figure 2.12 ---------------------------------------------------------------------------
+
+void figure212(const ch::Options& o) {
+  for (std::size_t n : {std::size_t(1000), std::size_t(10000)}) {
+    const XY p = uniform(n, 2012 + n);
+    const std::vector<std::size_t> idx = dt::hilbertOrder(p);
+    std::ostringstream s;
+    s << "# x y rank: " << n << " random points in Hilbert order (depth "
+      << dt::hilbertAutoDepth(n) << ")\n";
+    for (std::size_t r = 0; r < n; ++r)
+      s << p[2 * idx[r]] << " " << p[2 * idx[r] + 1] << " " << r << "\n";
+    ch::writeOut(o, "fig2_12_" + std::to_string(n) + ".dat", s.str());
+  }
+  ch::runGnuplot(o, "fig2_12.gp");
+}
+
+// ---- Table 2.2 -----------------------------------------------------------------------------
+
+void table22(const ch::Options& o, const std::vector<std::size_t>& sizes,
+             std::size_t checkLimit) {
+  struct NotesRow { double ns, nc, t; };
+  const NotesRow notes[] = {{2.34, 4.06, 0.0097}, {2.46, 4.13, 0.090}, {2.50, 4.16, 0.92},
+                            {2.50, 4.17, 9.2}};
+  ch::Table tab;
+  tab.caption = "Table 2.2 regenerated: delaunayTrgl on n uniform random points in the unit "
+                "square, Hilbert-sorted (hilbertOrder, curve depth ceil(log4 n) + 8), two "
+                "super-triangles, each walk started from a face of the previous cavity "
+                "(StartRule::LastCavity). t = sort + insertions (wall clock, this machine); "
+                "the notes' values on the right.";
+  tab.header = {"n", "depth", "N_search", "N_cavity", "t (s)", "t sort (s)", "t/n (us)",
+                "checked", "notes N_search", "notes N_cavity", "notes t (s)"};
+  std::ostringstream dat;
+  dat << "# n nsearch ncavity t tsort us_per_point\n";
+  ch::Progress prog("Table 2.2", sizes.size());
+  std::size_t done = 0;
+  for (std::size_t n : sizes) {
+    const XY p = uniform(n, 22 + n);
+    const Run r = triangulate(p, Order::Hilbert, 0, n <= checkLimit);
+    const int e = int(std::lround(std::log10(double(n))));
+    std::vector<std::string> row = {sci(n), std::to_string(dt::hilbertAutoDepth(n)),
+                                    ch::fmt("%.2f", r.nSearch), ch::fmt("%.2f", r.nCavity),
+                                    ch::fmt("%.3g", r.tTotal), ch::fmt("%.3g", r.tSort),
+                                    ch::fmt("%.2f", 1e6 * r.tTotal / double(n)),
+                                    r.checked ? "exact" : "no"};
+    if (e >= 3 && e <= 6 && sci(n).rfind("10^", 0) == 0) {
+      const NotesRow& nr = notes[e - 3];
+      row.insert(row.end(), {ch::fmt("%.2f", nr.ns), ch::fmt("%.2f", nr.nc), ch::fmt("%.3g", nr.t)});
+    } else {
+      row.insert(row.end(), {"", "", ""});
+    }
+    tab.add(row);
+    dat << n << " " << r.nSearch << " " << r.nCavity << " " << r.tTotal << " " << r.tSort << " "
+        << 1e6 * r.tTotal / double(n) << "\n";
+    prog.update(++done);
+  }
+  tab.emit(o, "table2_2");
+  ch::writeOut(o, "table2_2.dat", dat.str());
+}
+
+// ---- depth -----------------------------------------------------------------------------------
+
+void depthTable(const ch::Options& o, std::size_t n) {
+  const XY pu = uniform(n, 35);
+  const XY pc = clustered(n, 36);
+  const int autoDepth = dt::hilbertAutoDepth(n);
+  std::vector<int> depths = {1, 2, 3, 4, 5, 6, 7, 8, 10, 12, 16, 20, 31};
+  if (std::find(depths.begin(), depths.end(), autoDepth) == depths.end()) depths.push_back(autoDepth);
+  std::sort(depths.begin(), depths.end());
+  ch::Table tab;
+  tab.caption = "How the curve depth d changes the counts (n = " + sci(n) +
+                ", Hilbert order, super-triangles, LastCavity). With 4^d << n many points share "
+                "a cell and keep their random order: the walks grow. The auto depth is " +
+                std::to_string(autoDepth) + ".";
+  tab.header = {"depth d", "4^d / n", "uniform N_search", "uniform N_cavity", "uniform t (s)",
+                "clustered N_search", "clustered N_cavity", "clustered t (s)"};
+  std::ostringstream dat;
+  dat << "# depth nsU ncU tU nsC ncC tC\n";
+  ch::Progress prog("depth table", depths.size());
+  std::size_t done = 0;
+  for (int d : depths) {
+    const Run u = triangulate(pu, Order::Hilbert, d, true);
+    const Run c = triangulate(pc, Order::Hilbert, d, true);
+    tab.add({std::to_string(d) + (d == autoDepth ? " (auto)" : ""),
+             ch::fmt("%.3g", std::pow(4.0, d) / double(n)), ch::fmt("%.2f", u.nSearch),
+             ch::fmt("%.2f", u.nCavity), ch::fmt("%.3g", u.tTotal), ch::fmt("%.2f", c.nSearch),
+             ch::fmt("%.2f", c.nCavity), ch::fmt("%.3g", c.tTotal)});
+    dat << d << " " << u.nSearch << " " << u.nCavity << " " << u.tTotal << " " << c.nSearch << " "
+        << c.nCavity << " " << c.tTotal << "\n";
+    prog.update(++done);
+  }
+  tab.emit(o, "table_hilbert_depth");
+  ch::writeOut(o, "hilbert_depth.dat", dat.str());
+}
+
+// ---- keys against sort -----------------------------------------------------------------------
+
+void keysVersusSort(const ch::Options& o, std::size_t n) {
+  const XY p = uniform(n, 44);
+  const int depth = dt::hilbertAutoDepth(n);
+  const int reps = 3;  // best of 3: the machine is shared
+  double tInt = 1e30, tList = 1e30, tSort = 1e30, tOrder = 1e30;
+  std::size_t differ = 0;
+  for (int r = 0; r < reps; ++r) {
+    auto t0 = Clock::now();
+    const std::vector<std::uint64_t> k1 = dt::hilbertKeys(p, depth);
+    tInt = std::min(tInt, ch::secondsSince(t0));
+    t0 = Clock::now();
+    const std::vector<std::uint64_t> k2 = dt::hilbertKeysListing(p, depth);
+    tList = std::min(tList, ch::secondsSince(t0));
+    differ = 0;
+    for (std::size_t i = 0; i < n; ++i) differ += k1[i] != k2[i];
+    std::vector<std::pair<std::uint64_t, std::size_t>> kv(n);
+    for (std::size_t i = 0; i < n; ++i) kv[i] = {k1[i], i};
+    t0 = Clock::now();
+    std::sort(kv.begin(), kv.end());
+    tSort = std::min(tSort, ch::secondsSince(t0));
+    t0 = Clock::now();
+    const std::vector<std::size_t> idx = dt::hilbertOrder(p, depth);
+    tOrder = std::min(tOrder, ch::secondsSince(t0));
+  }
+  ch::Table tab;
+  tab.caption = "The cost of the keys against the cost of the sort, n = " + sci(n) +
+                " uniform points, depth " + std::to_string(depth) +
+                " (best of 3). The notes: \"the main cost of sorting points is on the sorting "
+                "algorithm itself and not on the computation of the Hilbert curve "
+                "coordinates\".";
+  tab.header = {"step", "t (s)", "share of hilbertOrder"};
+  tab.add({"keys, hilbertIndex (integer)", ch::fmt("%.3g", tInt), ch::fmt("%.0f%%", 100 * tInt / tOrder)});
+  tab.add({"keys, Listing 2.8 (HilbertCoord)", ch::fmt("%.3g", tList), ch::fmt("%.0f%%", 100 * tList / tOrder)});
+  tab.add({"std::sort of (key, index) pairs", ch::fmt("%.3g", tSort), ch::fmt("%.0f%%", 100 * tSort / tOrder)});
+  tab.add({"hilbertOrder (box + keys + sort)", ch::fmt("%.3g", tOrder), "100%"});
+  tab.add({"keys that differ between the two", std::to_string(differ), ""});
+  tab.emit(o, "table_hilbert_keys");
+}
+
+// ---- BRIO --------------------------------------------------------------------------------------
+
+void brioFigure(const ch::Options& o) {
+  const std::size_t n = 4000;
+  const XY p = uniform(n, 77);
+  std::vector<std::size_t> starts;
+  const std::vector<std::size_t> idx = dt::brioOrder(p, 5, 0, &starts);
+  std::ostringstream s;
+  s << "# x y round: " << n << " uniform points in BRIO order; one block per round\n";
+  starts.push_back(n);
+  for (std::size_t r = 0; r + 1 < starts.size(); ++r) {
+    for (std::size_t k = starts[r]; k < starts[r + 1]; ++k)
+      s << p[2 * idx[k]] << " " << p[2 * idx[k] + 1] << " " << r << "\n";
+    s << "\n\n";
+  }
+  ch::writeOut(o, "fig_brio_rounds.dat", s.str());
+  std::ostringstream info;
+  info << "rounds=" << starts.size() - 1 << "\n";
+  for (std::size_t r = 0; r + 1 < starts.size(); ++r) info << starts[r + 1] - starts[r] << " ";
+  info << "\n";
+  ch::writeOut(o, "fig_brio_rounds.info", info.str());
+  ch::runGnuplot(o, "fig_brio_rounds.gp");
+}
+
+void brioComparison(const ch::Options& o, const std::vector<std::size_t>& sizes,
+                    std::size_t randomMax, std::size_t checkLimit) {
+  struct Input { const char* name; XY (*make)(std::size_t, std::uint64_t); };
+  const Input inputs[] = {{"uniform", uniform}, {"clustered", clustered},
+                          {"parabola", parabola}, {"jittered grid", jitteredGrid}};
+  ch::Table tab;
+  tab.caption = "BRIO against Hilbert-only and random insertion order: delaunayTrgl with "
+                "super-triangles and LastCavity; t includes the ordering. Random order only up "
+                "to n = " + sci(randomMax) + ": its walks grow like sqrt(n).";
+  tab.header = {"input", "n", "order", "N_search", "N_cavity", "t (s)", "t/n (us)", "checked"};
+  // One block of rows per (input, order), so that gnuplot joins each series.
+  std::ostringstream dat[4][3];
+  std::size_t total = 0, done = 0;
+  for (std::size_t n : sizes) total += 4 * (n <= randomMax ? 3 : 2);
+  ch::Progress prog("BRIO comparison", total);
+  for (int in = 0; in < 4; ++in) {
+    // A series stops once N_search + N_cavity exceeds 200: the work per point grows like n
+    // there (quadratic total), and the next size would take about 100 times longer.
+    bool quadratic[3] = {false, false, false};
+    for (std::size_t n : sizes) {
+      const XY p = inputs[in].make(n, 1000 + 10 * n + std::size_t(in));
+      for (Order ord : {Order::Random, Order::Hilbert, Order::Brio}) {
+        if (ord == Order::Random && n > randomMax) continue;
+        const int k = int(ord);
+        if (quadratic[k]) {
+          tab.add({inputs[in].name, sci(n), orderName(ord), "", "", "skipped: quadratic", "", ""});
+          prog.update(++done);
+          continue;
+        }
+        const Run r = triangulate(p, ord, 0, n <= checkLimit);
+        quadratic[k] = r.nSearch + r.nCavity > 200;
+        tab.add({inputs[in].name, sci(n), orderName(ord), ch::fmt("%.2f", r.nSearch),
+                 ch::fmt("%.2f", r.nCavity), ch::fmt("%.3g", r.tTotal),
+                 ch::fmt("%.2f", 1e6 * r.tTotal / double(n)), r.checked ? "exact" : "no"});
+        dat[in][k] << in << " " << n << " " << k << " " << r.nSearch << " " << r.nCavity << " "
+                   << r.tTotal << " " << 1e6 * r.tTotal / double(n) << "\n";
+        prog.update(++done);
+      }
+    }
+  }
+  tab.emit(o, "table_brio");
+  std::string all = "# input(0 uniform,1 clustered,2 parabola,3 jittered grid) n "
+                    "order(0 random,1 Hilbert,2 BRIO) nsearch ncavity t us_per_point\n";
+  for (auto& byInput : dat)
+    for (auto& series : byInput) all += series.str();
+  ch::writeOut(o, "brio_compare.dat", all);
+  ch::runGnuplot(o, "fig_brio_compare.gp");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  ch::Options o = ch::parseOptions(argc, argv);
+  bool huge = false;
+  for (const std::string& a : o.rest) {
+    if (a == "--huge") {
+      huge = true;
+    } else {
+      std::cerr << argv[0] << ": unknown option " << a
+                << "\nusage: " << argv[0]
+                << " [--out DIR] [--quick] [--max-n N] [--huge] [--no-plot]\n";
+      return 2;
+    }
+  }
+  try {
+    const std::size_t maxN = o.maxN > 0 ? std::size_t(o.maxN)
+                                        : (o.quick ? 10000 : (huge ? 10000000 : 1000000));
+    auto upTo = [&](std::vector<std::size_t> v) {
+      v.erase(std::remove_if(v.begin(), v.end(), [&](std::size_t n) { return n > maxN; }),
+              v.end());
+      return v;
+    };
+    figure211(o);
+    figure212(o);
+    // Every triangulation up to 10^6 points is checked exactly (outside the timings); at 10^7
+    // the check alone would take minutes.
+    table22(o, upTo({1000, 10000, 100000, 1000000, 10000000}), 1000000);
+    depthTable(o, std::min<std::size_t>(maxN, o.quick ? 10000 : 100000));
+    keysVersusSort(o, std::min<std::size_t>(maxN, o.quick ? 100000 : 1000000));
+    brioFigure(o);
+    brioComparison(o, upTo({1000, 10000, 100000, 1000000}), o.quick ? 10000 : 30000,
+                   o.quick ? 10000 : 100000);
+  } catch (const std::exception& e) {
+    std::cerr << argv[0] << ": " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}
