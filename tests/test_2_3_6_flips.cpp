@@ -1,0 +1,335 @@
+/// \file test_2_3_6_flips.cpp Tests of section 2.3.6 (edge flip, Lawson, recovery of DT(S) from DT(S0 ∪ S)) and the flip claim of 2.3.3.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <map>
+#include <random>
+#include <set>
+
+#include "flip.h"
+#include "hull.h"
+#include "predicates.h"
+#include "support.h"
+
+namespace {
+
+using dttest::XY;
+
+// Structural validity without the Delaunay property: every link symmetric and across the shared
+// edge, every finite face strictly counter-clockwise (exact), and Euler's count n_f = 2(n-1) - n_h
+// with n_h read from the ghost ring. Together with a convex hull ring this makes T a
+// triangulation of the hull of its vertices.
+std::string structure(const dt::Triangulation& T) {
+  std::set<const dt::Vertex*> used;
+  std::size_t nf = 0;
+  for (const dt::Face& f : T.faces()) {
+    if (f.deleted) return "deleted face";
+    for (int k = 0; k < 3; ++k) {
+      const dt::Face* g = f.F[k];
+      if (g == nullptr) return "missing link";
+      const int j = dt::neighbourIndex(g, &f);
+      if (j < 0 || g->V[j] != f.V[(k + 1) % 3] || g->V[(j + 1) % 3] != f.V[k])
+        return "bad link";
+    }
+    if (f.isGhost()) continue;
+    ++nf;
+    if (dt::orientationTest(f.V[0], f.V[1], f.V[2]) <= 0) return "face not counter-clockwise";
+    for (const dt::Vertex* v : f.V) used.insert(v);
+  }
+  const auto hull = dt::hullEdges(T);
+  for (std::size_t i = 0; i < hull.size(); ++i) {
+    const auto& e = hull[i];
+    const auto& n = hull[(i + 1) % hull.size()];
+    if (e.b != n.a || dt::orientationTest(e.a, e.b, n.b) < 0) return "hull not convex";
+  }
+  const long n = long(used.size()), nh = long(hull.size());
+  if (long(nf) != 2 * (n - 1) - nh) return "Euler count fails";
+  return "";
+}
+
+std::vector<dt::Vertex*> addPoints(dt::Triangulation& T, const XY& p) {
+  std::vector<dt::Vertex*> S;
+  for (std::size_t i = 0; i < p.size() / 2; ++i)
+    S.push_back(T.addVertex(p[2 * i], p[2 * i + 1], long(i)));
+  return S;
+}
+
+// Number of finite faces around each vertex.
+std::map<const dt::Vertex*, int> degrees(const dt::Triangulation& T) {
+  std::map<const dt::Vertex*, int> deg;
+  for (const dt::Face* f : T.finiteFaces())
+    for (const dt::Vertex* v : f->V) ++deg[v];
+  return deg;
+}
+
+// Sorted triangles as sorted triples of input ids: a canonical form to compare two DT(S).
+std::vector<std::array<long, 3>> canonical(const dt::Triangulation& T) {
+  std::vector<std::array<long, 3>> out;
+  for (const dt::Face* f : T.finiteFaces()) {
+    std::array<long, 3> t = {f->V[0]->id, f->V[1]->id, f->V[2]->id};
+    std::sort(t.begin(), t.end());
+    out.push_back(t);
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+// DT(S0 ∪ S) with super-triangles `factor` times the bounding box.
+void superDT(dt::Triangulation& T, const XY& p, double factor) {
+  double x0 = p[0], x1 = p[0], y0 = p[1], y1 = p[1];
+  for (std::size_t i = 0; i < p.size() / 2; ++i) {
+    x0 = std::min(x0, p[2 * i]), x1 = std::max(x1, p[2 * i]);
+    y0 = std::min(y0, p[2 * i + 1]), y1 = std::max(y1, p[2 * i + 1]);
+  }
+  dt::initSuperTriangles(T, x0, y0, x1, y1, factor);
+  const auto S = addPoints(T, p);
+  dt::delaunayTrgl(T, S, dt::StartRule::LastCavity);
+}
+
+// DT(S0 ∪ S), then the recovery of DT(S).
+dt::FlipStats superThenRecover(dt::Triangulation& T, const XY& p, double factor,
+                               dt::RecoveryRule rule = dt::RecoveryRule::Full) {
+  superDT(T, p, factor);
+  return dt::recoverDelaunay(T, rule);
+}
+
+// Points on a slightly bent line (a flat parabolic arc): all are on the hull, every triangle is
+// nearly flat and its huge circumcircle swallows any reasonable super vertex.
+// Random abscissae, so that no four points are cocircular (a symmetric sample would have
+// isosceles trapezoids, hence several Delaunay triangulations).
+XY bentLine(std::size_t n, double bend, unsigned seed = 1) {
+  const XY u = dttest::uniformPoints(n, seed);
+  XY p;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double t = u[2 * i];
+    p.push_back(t);
+    p.push_back(bend * t * (1 - t));
+  }
+  return p;
+}
+
+// Points on a short arc of a huge circle (radius R), plus two inner points.
+XY hugeCircleArc(std::size_t n, double R) {
+  XY p;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double t = -0.5e-3 + 1e-3 * double(i) / double(n - 1);
+    p.push_back(R * std::sin(t));
+    p.push_back(R * std::cos(t) - R);
+  }
+  p.push_back(0.0);
+  p.push_back(-0.2 * R * 1e-3);
+  p.push_back(0.1 * R * 1e-3);
+  p.push_back(-0.1 * R * 1e-3);
+  return p;
+}
+
+}  // namespace
+
+TEST_CASE("2.3.3: a flip changes the degrees of the four vertices by -1, -1, +1, +1") {
+  dt::Triangulation T;
+  const auto S = addPoints(T, dttest::uniformPoints(300, 2336));
+  dt::delaunayTrglHull(T, S, dt::StartRule::LastCavity);
+  REQUIRE(dt::checkTriangulation(T).ok);
+  int flipped = 0, refused = 0;
+  std::mt19937 rng(7);
+  for (int trial = 0; trial < 400; ++trial) {
+    std::vector<dt::Face*> live;
+    for (dt::Face& f : T.faces())
+      if (!f.isGhost()) live.push_back(&f);
+    dt::Face* f = live[rng() % live.size()];
+    const int k = int(rng() % 3);
+    if (!dt::isFlippable(f, k)) {
+      ++refused;
+      continue;
+    }
+    const dt::Vertex* a = f->V[k];
+    const dt::Vertex* b = f->V[(k + 1) % 3];
+    const dt::Vertex* c = f->V[(k + 2) % 3];
+    const dt::Face* g = f->F[k];
+    const dt::Vertex* d = g->V[(dt::neighbourIndex(g, f) + 2) % 3];
+    auto before = degrees(T);
+    REQUIRE(dt::flipEdge(f, k));
+    auto after = degrees(T);
+    CHECK(after[a] == before[a] - 1);
+    CHECK(after[b] == before[b] - 1);
+    CHECK(after[c] == before[c] + 1);
+    CHECK(after[d] == before[d] + 1);
+    int changed = 0;
+    for (const auto& [v, dv] : after) changed += (before[v] != dv);
+    CHECK(changed == 4);  // nobody else
+    REQUIRE(structure(T) == "");
+    ++flipped;
+  }
+  CHECK(flipped > 100);
+  CHECK(refused > 0);  // hull edges (next to ghosts) and reflex quadrilaterals are refused
+  // The random flips left a valid but non-Delaunay triangulation; Lawson repairs it.
+  CHECK_FALSE(dt::checkTriangulation(T).ok);
+  const dt::FlipStats st = dt::lawsonFlip(T);
+  CHECK(st.flips > 0);
+  CHECK(dt::checkTriangulation(T).ok);
+}
+
+TEST_CASE("2.3.6: flipEdge refuses reflex or flat quadrilaterals and ghost edges, unchanged") {
+  dt::Triangulation T;
+  // a d b c with d inside triangle a b c's side so that a d b c is reflex at d.
+  dt::Vertex* a = T.addVertex(0, 0, 0);
+  dt::Vertex* b = T.addVertex(4, 0, 1);
+  dt::Vertex* c = T.addVertex(2, 3, 2);
+  dt::Vertex* d = T.addVertex(2, -1, 3);
+  dt::Vertex* e = T.addVertex(1, 1, 4);  // inside a b c
+  dt::delaunayTrglHull(T, {a, b, c, d, e}, dt::StartRule::LastCavity);
+  REQUIRE(dt::checkTriangulation(T).ok);
+  for (dt::Face& f : T.faces())
+    for (int k = 0; k < 3; ++k) {
+      const dt::Face* g = f.F[k];
+      const bool ghostEdge = f.isGhost() || g->isGhost();
+      const dt::Vertex* x = f.V[(k + 2) % 3];
+      const dt::Vertex* y = g->V[(dt::neighbourIndex(g, &f) + 2) % 3];
+      const bool convex = !ghostEdge &&
+                          dt::orientationTest(x, f.V[k], y) > 0 &&
+                          dt::orientationTest(y, f.V[(k + 1) % 3], x) > 0;
+      CHECK(dt::isFlippable(&f, k) == convex);
+      if (!convex) {
+        const dt::Face copy = f;
+        CHECK_FALSE(dt::flipEdge(&f, k));
+        CHECK(std::equal(f.V, f.V + 3, copy.V));
+        CHECK(std::equal(f.F, f.F + 3, copy.F));
+      }
+    }
+  // Three collinear points: the quadrilateral (0,0) (1,0) (2,0) (1,1) is flat at (1,0).
+  dt::Triangulation U;
+  auto P = addPoints(U, {0, 0, 2, 0, 1, 1, 1, 0});
+  dt::delaunayTrglHull(U, P, dt::StartRule::LastCavity);
+  REQUIRE(dt::checkTriangulation(U).ok);
+  for (dt::Face& f : U.faces())
+    for (int k = 0; k < 3; ++k) CHECK_FALSE(dt::isFlippable(&f, k));
+}
+
+TEST_CASE("2.3.6: Lawson's flips turn any triangulation into the Delaunay triangulation") {
+  struct Family {
+    std::string name;
+    XY p;
+  };
+  XY grid = dttest::gridPoints(15, 12);
+  dttest::shuffle(grid, 3);
+  const Family fams[] = {
+      {"uniform", dttest::uniformPoints(2000, 11)},
+      {"grid (cocircular)", grid},
+      {"circle (all on the hull)", dttest::circlePoints(200)},
+      {"bent line", bentLine(300, 1e-6)},
+      {"huge coordinates", dttest::uniformPoints(500, 12, 1e150, 1.0000001e150)},
+  };
+  for (const Family& fam : fams) {
+    CAPTURE(fam.name);
+    dt::Triangulation T;
+    const auto S = addPoints(T, fam.p);
+    dt::sweepTriangulation(T, S);
+    REQUIRE(structure(T) == "");
+    const std::size_t nf = T.numFiniteFaces();
+    const dt::FlipStats st = dt::lawsonFlip(T);
+    const dt::CheckReport r = dt::checkTriangulation(T);
+    CHECK_MESSAGE(r.ok, r.error);
+    CHECK(T.numFiniteFaces() == nf);  // flips keep the number of triangles
+    CHECK(st.tests >= 3 * nf / 2);  // every finite edge tested at least once
+  }
+  // The sweep is not Delaunay on random points, so Lawson has real work to do.
+  dt::Triangulation T;
+  const auto S = addPoints(T, dttest::uniformPoints(1000, 5));
+  dt::sweepTriangulation(T, S);
+  CHECK_FALSE(dt::checkTriangulation(T).ok);
+  CHECK(dt::lawsonFlip(T).flips > 500);
+}
+
+TEST_CASE("2.2.1/2.3.6: the recovery from DT(S0 ∪ S) gives DT(S) for super-triangles of any size") {
+  XY grid = dttest::gridPoints(12, 9, 0.5);
+  dttest::shuffle(grid, 4);
+  XY circle = dttest::circlePoints(120, 3);
+  dttest::shuffle(circle, 5);
+  XY bent = bentLine(200, 1e-4);
+  dttest::shuffle(bent, 6);
+  XY huge = hugeCircleArc(150, 1e6);
+  dttest::shuffle(huge, 7);
+  struct Family {
+    std::string name;
+    XY p;
+    bool generic;  // no four cocircular points on an empty circle: DT(S) is unique
+  };
+  const Family fams[] = {
+      {"uniform", dttest::uniformPoints(1500, 21), true},
+      {"grid", grid, false},
+      {"circle", circle, false},
+      {"bent line", bent, true},
+      {"huge circle arc", huge, true},
+  };
+  // Factors from "barely enclosing" to "far": 2.2.1 says no size is right a priori.
+  for (double factor : {1.0001, 1.01, 1.5, 10.0, 1e4}) {
+    for (const Family& fam : fams) {
+      CAPTURE(fam.name);
+      CAPTURE(factor);
+      dt::Triangulation T;
+      const dt::FlipStats st = superThenRecover(T, fam.p, factor);
+      const dt::CheckReport r = dt::checkTriangulation(T);
+      REQUIRE_MESSAGE(r.ok, r.error);
+      CHECK(r.nVertices == fam.p.size() / 2);
+      CHECK(st.removedFaces == r.nHull + 4);  // n_f(S0 ∪ S) - n_f(S) = (2n+2) - (2n-2-n_h)
+      // Same as the hull method (2.2.2).
+      dt::Triangulation H;
+      dt::delaunayTrglHull(H, addPoints(H, fam.p), dt::StartRule::LastCavity);
+      REQUIRE(dt::checkTriangulation(H).ok);
+      if (fam.generic) CHECK(canonical(T) == canonical(H));
+      CHECK(dt::convexHull(T).size() == dt::convexHull(H).size());
+    }
+  }
+}
+
+TEST_CASE("2.2.1: flat hull triangles put small super vertices inside circumcircles; the notes' "
+          "flips alone then fail, the completed rule does not") {
+  // On the bent line every lower-hull triangle is nearly flat: its circumcircle is huge and
+  // contains the super vertices unless they are very far.
+  const XY p = bentLine(60, 1e-3);
+  int notesFailures = 0, naiveFailures = 0;
+  for (double factor : {1.01, 2.0, 10.0, 100.0}) {
+    CAPTURE(factor);
+    dt::Triangulation N;
+    const dt::FlipStats sn = superThenRecover(N, p, factor, dt::RecoveryRule::NotesOnly);
+    const dt::PlainMesh m = dt::extractMesh(N, true);
+    notesFailures += !dt::checkDelaunay(m.xy, m.tri).ok;
+    CHECK(sn.superOpposite + sn.superSuper + sn.realReal == 0);  // only 2.2.1's kind of flip
+    // The naive removal (no flip at all).
+    dt::Triangulation Z;
+    superDT(Z, p, factor);
+    const dt::PlainMesh z = dt::extractMesh(Z, true);
+    naiveFailures += !dt::checkDelaunay(z.xy, z.tri).ok;
+    dt::Triangulation F;
+    superThenRecover(F, p, factor);
+    CHECK(dt::checkTriangulation(F).ok);
+  }
+  MESSAGE("bent line: naive removal fails for " << naiveFailures << " of 4 sizes, the notes' "
+          "flips alone for " << notesFailures);
+  CHECK(naiveFailures == 4);   // removing the super faces never suffices here
+  CHECK(notesFailures >= 1);   // and the notes' flips alone not always
+}
+
+TEST_CASE("2.3.6: superInCircle agrees with incircle on points of S and pushes super vertices away") {
+  dt::Triangulation T;
+  dt::Vertex* a = T.addVertex(0, 0, 0);
+  dt::Vertex* b = T.addVertex(1, 0, 1);
+  dt::Vertex* c = T.addVertex(0, 1, 2);
+  dt::Vertex* in = T.addVertex(0.5, 0.5, 3);
+  dt::Vertex* out = T.addVertex(2, 2, 4);
+  dt::Vertex* on = T.addVertex(1, 1, 5);
+  CHECK(dt::superInCircle(a, b, c, in) > 0);
+  CHECK(dt::superInCircle(a, b, c, out) < 0);
+  CHECK(dt::superInCircle(a, b, c, on) == 0);
+  // A super vertex as the query is never in conflict, even when geometrically inside.
+  dt::Vertex* s = T.addVertex(0.4, 0.4, -1);
+  CHECK(dt::incircle(0, 0, 1, 0, 0, 1, 0.4, 0.4) > 0);
+  CHECK(dt::superInCircle(a, b, c, s) < 0);
+  // A super vertex of the triangle: the circle becomes the half-plane on its side of the
+  // opposite edge.
+  dt::Vertex* far = T.addVertex(0.5, 0.2, -2);  // triangle a b far, counter-clockwise
+  CHECK(dt::superInCircle(a, b, far, T.addVertex(5, 0.001, 6)) > 0);   // above line a b
+  CHECK(dt::superInCircle(a, b, far, T.addVertex(0.5, -1e-9, 7)) < 0); // below
+  // Two super vertices: the one with the larger id (p_{-1} before p_{-2}) decides.
+  CHECK(dt::superInCircle(a, far, c, s) < 0);  // s is the query and outranks far
+}
