@@ -1,6 +1,7 @@
 // delaunay2d: the Delaunay triangulation DT(S) of a point file, exact for every input.
 //
-//   delaunay2d points.node -o out [--stats] [--svg out.svg] [--msh out.msh] [--no-check]
+//   delaunay2d points.node -o out [--method hull|super] [--stats] [--svg out.svg] [--msh out.msh]
+//              [--no-check]
 //
 // Reads a Triangle .node file or a plain "x y" file, writes out.ele (Triangle format,
 // counter-clockwise triangles, vertices numbered as in the input). Exit status: 0 on success,
@@ -17,6 +18,7 @@
 #include "check.h"
 #include "io.h"
 #include "predicates.h"
+#include "flip.h"
 #include "triangulate.h"
 
 namespace {
@@ -30,11 +32,16 @@ const char* kUsage =
     "  --svg FILE     also write an SVG drawing of the mesh\n"
     "  --msh FILE     also write a Gmsh ASCII (2.2) mesh\n"
     "  --no-check     skip the exact validation of the result (on by default)\n"
+    "  --method M     how DT(S) is built: 'hull' (default; ghost faces, points outside the\n"
+    "                 hull inserted directly, section 2.2.2) or 'super' (super-triangles,\n"
+    "                 then DT(S) recovered from DT(S0 u S) by flips, 2.2.1 and 2.3.6); both\n"
+    "                 give the exact DT(S); with --stats, 'super' also prints recovery_flips\n"
     "  -h, --help     this help\n";
 
 struct Options {
   std::string input, out, svg, msh;
   bool stats = false, check = true;
+  bool superMethod = false;  // --method super
 };
 
 [[noreturn]] void usageError(const std::string& why) {
@@ -61,6 +68,10 @@ Options parse(int argc, char** argv) {
       o.svg = value("--svg");
     } else if (a == "--msh") {
       o.msh = value("--msh");
+    } else if (a == "--method") {
+      const std::string m = value("--method");
+      if (m != "hull" && m != "super") usageError("--method must be 'hull' or 'super'");
+      o.superMethod = m == "super";
     } else if (a == "--no-check") {
       o.check = false;
     } else if (!a.empty() && a[0] == '-' && a != "-") {
@@ -115,7 +126,35 @@ int main(int argc, char** argv) {
 
     dt::InsertionStats st;
     const auto t0 = std::chrono::steady_clock::now();
-    dt::delaunayTrglHull(T, S, dt::StartRule::LastCavity, &st);
+    dt::FlipStats fs;
+    if (opt.superMethod) {
+      // 2.2.1: super-triangles around the box, DT(S0 u S), then the flips of 2.3.6. A flat or
+      // collinear input is rejected as by the hull method (it has no DT(S)).
+      if (S.size() < 3) throw dt::DegenerateInput("fewer than 3 distinct points");
+      bool flat = true;
+      for (std::size_t i = 2; i < S.size() && flat; ++i)
+        flat = dt::orientationTest(S[0], S[1], S[i]) == 0;
+      if (flat) throw dt::DegenerateInput("all points are collinear");
+      double x0 = S[0]->x, x1 = x0, y0 = S[0]->y, y1 = y0;
+      for (const dt::Vertex* v : S) {
+        x0 = std::min(x0, v->x), x1 = std::max(x1, v->x);
+        y0 = std::min(y0, v->y), y1 = std::max(y1, v->y);
+      }
+      // Any enclosing size gives the exact DT(S) (2.3.6); near the overflow threshold the
+      // default factor 10 may not fit in doubles, so smaller ones are tried.
+      for (double factor : {10.0, 2.0, 1.01}) {
+        try {
+          dt::initSuperTriangles(T, x0, y0, x1, y1, factor);
+          break;
+        } catch (const dt::DegenerateInput&) {
+          if (factor == 1.01) throw std::runtime_error("super-triangles do not fit in doubles");
+        }
+      }
+      dt::delaunayTrgl(T, S, dt::StartRule::LastCavity, &st);
+      fs = dt::recoverDelaunay(T);
+    } else {
+      dt::delaunayTrglHull(T, S, dt::StartRule::LastCavity, &st);
+    }
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
@@ -139,6 +178,8 @@ int main(int argc, char** argv) {
                   seconds);
       std::printf("duplicates: %zu\nmean_walk_steps: %.4f\nmean_cavity_size: %.4f\n", nDup,
                   st.meanSearch(), st.meanCavity());
+      if (opt.superMethod)
+        std::printf("recovery_flips: %llu\n", (unsigned long long)fs.flips);
     }
     return 0;
   } catch (const dt::InputError& e) {
