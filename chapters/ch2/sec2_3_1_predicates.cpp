@@ -356,7 +356,7 @@ void notesFilters(const ch::Options& o) {
   orientRows("Figure 2.7 grid, all coordinates negated", "max of absolute values", negNotesAbs);
   orientRows("Figure 2.7 grid scaled by 2^-534 (subnormal products)", "max of absolute values",
              tinyNotesAbs);
-  const long nOrient = o.quick ? 2000000 : 20000000;
+  const long nOrient = o.quick ? 2000000 : 10000000;
   const SearchResult so = searchOrientAbs(nOrient, 20231);
   t.add({"a, b near (1,1), c near (-1,-1), random ulps (mixed signs)", "max of absolute values",
          ch::fmt("%ld / %ld", so.wrong, so.trials),
