@@ -1,0 +1,303 @@
+// Section 2.2: the Bowyer-Watson algorithm and its super-triangles.
+//
+// Regenerates Figure 2.5 (9 points in the two super-triangles, then the triangulation after 1,
+// 2, 3, 4 and all 9 insertions) with table_fig2_5 (its triangle counts), an animation of those
+// insertions (fig2_5_anim_NN.png frames and fig2_5_anim.gif: the cavity, then the ball),
+// Figure 2.6 (a configuration, found by a search over fixed seeds, where deleting the triangles
+// of the super-triangles leaves part of the convex hull uncovered), and table_bowyer_watson
+// (Algorithm 1, corrected, against Listing 2.7: same triangles, n(n+1) incircle tests, time).
+//
+//   sec2_2_bowyer_watson [--out DIR] [--quick] [--max-n N] [--no-plot]
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+#include <map>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "bowyer_watson.h"
+#include "check.h"
+#include "common.h"
+#include "predicates.h"
+#include "star.h"
+#include "triangulate.h"
+
+namespace {
+
+using XY = std::vector<double>;
+using Clock = std::chrono::steady_clock;
+
+XY uniform(std::size_t n, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0, 1);
+  XY p(2 * n);
+  for (double& v : p) v = u(rng);
+  return p;
+}
+
+std::string num(double v) { return ch::fmt("%.10g", v); }
+
+// The label of a point of Algorithm 1's numbering: p_{-1}..p_{-4}, p_1..p_n.
+std::string pname(long id) { return id < 0 ? "p_{" + std::to_string(id) + "}" : "p_{" + std::to_string(id + 1) + "}"; }
+
+// The boundary of a set of triangles that forms a disk, as a closed polyline (counter-clockwise).
+std::string boundaryPolyline(const XY& xy, const std::vector<dt::Tri>& tris) {
+  std::map<std::pair<int, int>, int> dir;
+  for (const dt::Tri& t : tris)
+    for (int k = 0; k < 3; ++k) dir[{t[k], t[(k + 1) % 3]}] = 1;
+  std::map<int, int> next;
+  for (const auto& [e, one] : dir)
+    if (!dir.count({e.second, e.first})) next[e.first] = e.second;
+  if (next.empty()) return "";
+  std::string s;
+  const int start = next.begin()->first;
+  int v = start;
+  std::size_t steps = 0;
+  do {
+    s += num(xy[2 * v]) + " " + num(xy[2 * v + 1]) + "\n";
+    v = next[v];
+  } while (v != start && ++steps <= next.size());
+  return s + num(xy[2 * start]) + " " + num(xy[2 * start + 1]) + "\n";
+}
+
+struct CircleXY {
+  double x, y, r;
+};
+CircleXY circumcircle(const XY& xy, int a, int b, int c) {
+  const double ax = xy[2 * a], ay = xy[2 * a + 1];
+  const double bx = xy[2 * b] - ax, by = xy[2 * b + 1] - ay, cx = xy[2 * c] - ax, cy = xy[2 * c + 1] - ay;
+  const double d = 2 * (bx * cy - by * cx);
+  const double ux = (cy * (bx * bx + by * by) - by * (cx * cx + cy * cy)) / d;
+  const double uy = (bx * (cx * cx + cy * cy) - cx * (bx * bx + by * by)) / d;
+  return {ax + ux, ay + uy, std::hypot(ux, uy)};
+}
+
+// ---- Figure 2.5 and its animation -----------------------------------------------------------
+
+// The 9 points of Figure 2.5 in insertion order (tests/test_2_2_bowyer_watson.cpp uses them too).
+const XY kFig25 = {0.22, 0.31, 0.74, 0.27, 0.51, 0.62, 0.29, 0.83, 0.88, 0.71,
+                   0.07, 0.52, 0.61, 0.09, 0.43, 0.38, 0.69, 0.94};
+const double kFig25Factor = 1.5;  // super-square 1.5 times the box: small enough to see
+
+void figure25(const ch::Options& o) {
+  // DT_0 and the points, numbered as Algorithm 1 does (super-vertices first).
+  const dt::BowyerWatsonResult all = dt::bowyerWatson(kFig25, kFig25Factor);
+  XY xy = all.xy;
+  std::vector<dt::Tri> tri = {{0, 1, 2}, {1, 0, 3}};
+  std::string pts, sup;
+  for (std::size_t i = 0; i < all.ids.size(); ++i) {
+    const std::string line = num(xy[2 * i]) + " " + num(xy[2 * i + 1]) + " " + pname(all.ids[i]) + "\n";
+    (all.ids[i] < 0 ? sup : pts) += line;
+  }
+  ch::writeOut(o, "fig2_5_points.dat", pts);
+  ch::writeOut(o, "fig2_5_super.dat", sup);
+  ch::Table tab;
+  tab.caption = "Figure 2.5: triangles of DT_k after k insertions into the two super-triangles "
+                "(Algorithm 1); each insertion removes the cavity C and adds |C| + 2 triangles";
+  tab.header = {"k", "cavity size", "ball size", "triangles"};
+  tab.add({"0", "", "", std::to_string(tri.size())});
+  ch::writeOut(o, "fig2_5_0.dat", dt::gnuplotTriangles(xy, tri));
+  // Animation frames: 00 is DT_0; then for each point, the cavity (odd) and the ball (even).
+  int frame = 0;
+  std::string titles;
+  auto writeFrame = [&](const std::vector<dt::Tri>& mesh, const std::vector<dt::Tri>& fill, int ip,
+                        const std::string& title) {
+    const std::string stem = ch::fmt("fig2_5_anim_%02d", frame);
+    dt::writeFileAtomic(o.out + "/" + stem + "_tri.dat", dt::gnuplotTriangles(xy, mesh));
+    dt::writeFileAtomic(o.out + "/" + stem + "_fill.dat", fill.empty() ? "" : boundaryPolyline(xy, fill));
+    dt::writeFileAtomic(o.out + "/" + stem + "_p.dat",
+                        ip < 0 ? "" : num(xy[2 * ip]) + " " + num(xy[2 * ip + 1]) + " " + pname(all.ids[ip]) + "\n");
+    titles += title + "\n";
+    ++frame;
+  };
+  writeFrame(tri, {}, -1, "DT_0: the two super-triangles");
+  for (int k = 1; k <= 9; ++k) {
+    const int ip = 3 + k;
+    const std::vector<dt::Tri> before = tri;
+    std::vector<dt::Tri> cavity;
+    for (const dt::Tri& t : before)
+      if (dt::incircle(xy[2 * t[0]], xy[2 * t[0] + 1], xy[2 * t[1]], xy[2 * t[1] + 1], xy[2 * t[2]],
+                       xy[2 * t[2] + 1], xy[2 * ip], xy[2 * ip + 1]) > 0)
+        cavity.push_back(t);
+    const dt::KernelStep s = dt::delaunayKernelStep(xy, tri, ip);
+    std::vector<dt::Tri> ball(tri.end() - long(s.ball), tri.end());
+    writeFrame(before, cavity, ip, "inserting " + pname(all.ids[ip]) + ": the cavity (" + std::to_string(s.cavity) + " triangles)");
+    writeFrame(tri, ball, ip, "inserting " + pname(all.ids[ip]) + ": the ball (" + std::to_string(s.ball) + " triangles)");
+    tab.add({std::to_string(k), std::to_string(s.cavity), std::to_string(s.ball), std::to_string(tri.size())});
+    if (k <= 4 || k == 9) ch::writeOut(o, ch::fmt("fig2_5_%d.dat", k), dt::gnuplotTriangles(xy, tri));
+  }
+  std::cout << "wrote " << frame << " animation data sets " << o.out << "/fig2_5_anim_NN_*.dat\n";
+  ch::writeOut(o, "fig2_5_anim_titles.dat", titles);
+  ch::writeOut(o, "fig2_5_anim_count.dat", std::to_string(frame) + "\n");
+  tab.emit(o, "table_fig2_5");
+  ch::runGnuplot(o, "fig2_5.gp");
+  ch::runGnuplot(o, "fig2_5_anim.gp");
+  if (o.plot) {
+    // An animated GIF from the frames, if ImageMagick is installed.
+    const std::string cmd = "command -v convert >/dev/null 2>&1 && convert -delay 90 -loop 0 '" + o.out +
+                            "'/fig2_5_anim_[0-9][0-9].png '" + o.out + "/fig2_5_anim.gif'";
+    if (std::system(cmd.c_str()) == 0)
+      std::cout << "wrote " << o.out << "/fig2_5_anim.gif\n";
+    else
+      std::cout << "no GIF (ImageMagick's convert is missing or failed); the PNG frames are there\n";
+  }
+}
+
+// ---- Figure 2.6 ---------------------------------------------------------------------------
+
+// What Figure 2.6 shows about one configuration: the first missing hull edge p_k p_l, the
+// triangle p_k p_j p_l of DT(S) on it, and the edges of DT(S0 ∪ S) that cross p_k p_l.
+struct Missing26 {
+  int k = -1, j = -1, l = -1;                   // indices in the input points
+  std::vector<std::pair<int, int>> crossing;    // edges crossing p_k p_l (indices in bw.xy)
+  std::vector<int> superInCircle;               // super-vertices (0..3) inside circle(p_k p_j p_l)
+  double radius = 0;
+};
+
+Missing26 analyse26(const XY& p, const dt::BowyerWatsonResult& bw, const std::array<long, 2>& edge) {
+  Missing26 r;
+  r.k = int(edge[0]), r.l = int(edge[1]);
+  for (const dt::Tri& t : dt::bruteForceDelaunay(p))
+    for (int c = 0; c < 3; ++c)
+      if (t[c] == r.k && t[(c + 1) % 3] == r.l) r.j = t[(c + 2) % 3];
+  if (r.j < 0) return r;
+  for (int s = 0; s < 4; ++s)
+    if (dt::incircle(p[2 * r.k], p[2 * r.k + 1], p[2 * r.l], p[2 * r.l + 1], p[2 * r.j], p[2 * r.j + 1],
+                     bw.xy[2 * s], bw.xy[2 * s + 1]) > 0)
+      r.superInCircle.push_back(s);
+  r.radius = circumcircle(p, r.k, r.j, r.l).r;
+  const int K = r.k + 4, L = r.l + 4;  // indices in bw.xy (super-vertices come first)
+  auto P = [&](int i) { return dt::Point2{bw.xy[2 * i], bw.xy[2 * i + 1]}; };
+  std::map<std::pair<int, int>, int> seen;
+  for (const dt::Tri& t : bw.tri)
+    for (int c = 0; c < 3; ++c) {
+      const int a = std::min(t[c], t[(c + 1) % 3]), b = std::max(t[c], t[(c + 1) % 3]);
+      if (a == K || a == L || b == K || b == L || !seen.emplace(std::make_pair(a, b), 1).second) continue;
+      if (dt::segmentsIntersect(P(a), P(b), P(K), P(L))) r.crossing.push_back({a, b});
+    }
+  return r;
+}
+
+void figure26(const ch::Options& o) {
+  // Search fixed seeds for 10 random points whose DT(S0 ∪ S) (super-square 1.5 times the box)
+  // loses a hull edge of S when the super-triangles' faces are deleted. Show the first case
+  // that looks like the notes' figure: one missing edge p_k p_l, crossed by the single edge
+  // p_j p_{-1}, with a circumcircle of p_k p_j p_l small enough to draw.
+  const double factor = 1.5;
+  XY p;
+  dt::BowyerWatsonResult bw;
+  Missing26 mi;
+  int found = 0, tried = 0, chosenSeed = -1;
+  bool chosenLike = false;
+  for (int seed = 1; seed <= 500; ++seed) {
+    ++tried;
+    const XY q = uniform(10, 2600 + seed);
+    dt::BowyerWatsonResult r = dt::bowyerWatson(q, factor);
+    const auto m = dt::hullEdgesNotCovered(r.xy, r.ids, r.tri);
+    if (m.empty()) continue;
+    ++found;
+    if (chosenLike) continue;
+    const Missing26 a = analyse26(q, r, m[0]);
+    const double side = r.xy[2] - r.xy[0];  // p_{-2}.x - p_{-1}.x
+    const bool like = m.size() == 1 && a.crossing.size() == 1 && a.crossing[0].first == 0 &&
+                      a.crossing[0].second == a.j + 4 && a.radius < side;
+    if (chosenSeed < 0 || like) p = q, bw = r, mi = a, chosenSeed = seed, chosenLike = like;
+  }
+  if (chosenSeed < 0) throw std::runtime_error("Figure 2.6: no configuration found");
+  std::cout << "Figure 2.6: " << found << " of " << tried
+            << " random 10-point sets (super-square 1.5 times the box) lose part of the hull; "
+               "showing seed " << 2600 + chosenSeed << (chosenLike ? "" : " (not like the notes' figure)") << "\n";
+  const int k = mi.k, j = mi.j, l = mi.l, K = k + 4, J = j + 4, L = l + 4;
+  std::string crossing, superLabel;
+  for (const auto& [a, b] : mi.crossing)
+    crossing += num(bw.xy[2 * a]) + " " + num(bw.xy[2 * a + 1]) + "\n" + num(bw.xy[2 * b]) + " " +
+                num(bw.xy[2 * b + 1]) + "\n\n";
+  for (int s : mi.superInCircle)
+    superLabel += num(bw.xy[2 * s]) + " " + num(bw.xy[2 * s + 1]) + " " + pname(bw.ids[s]) + "\n";
+  std::cout << "Figure 2.6: hull edge " << pname(k) << " " << pname(l) << " is missing; " << pname(k) << " "
+            << pname(j) << " " << pname(l) << " is in DT(S), its circle contains " << mi.superInCircle.size()
+            << " super-vertices; " << mi.crossing.size() << " edge(s) of DT(S0 ∪ S) cross " << pname(k) << " "
+            << pname(l) << "\n";
+  std::vector<dt::Tri> kept;
+  for (const dt::Tri& t : bw.tri)
+    if (bw.ids[t[0]] >= 0 && bw.ids[t[1]] >= 0 && bw.ids[t[2]] >= 0) kept.push_back(t);
+  const CircleXY c = circumcircle(p, k, j, l);
+  std::string labels;
+  for (const auto& [idx, name] : std::vector<std::pair<int, std::string>>{{K, "p_k"}, {J, "p_j"}, {L, "p_l"}})
+    labels += num(bw.xy[2 * idx]) + " " + num(bw.xy[2 * idx + 1]) + " " + name + "\n";
+  std::string pts;
+  for (std::size_t i = 0; i < p.size() / 2; ++i) pts += num(p[2 * i]) + " " + num(p[2 * i + 1]) + "\n";
+  ch::writeOut(o, "fig2_6_all.dat", dt::gnuplotTriangles(bw.xy, bw.tri));
+  ch::writeOut(o, "fig2_6_kept.dat", dt::gnuplotTriangles(bw.xy, kept));
+  ch::writeOut(o, "fig2_6_hull.dat", boundaryPolyline(p, dt::bruteForceDelaunay(p)));
+  ch::writeOut(o, "fig2_6_points.dat", pts);
+  ch::writeOut(o, "fig2_6_missing.dat", num(p[2 * k]) + " " + num(p[2 * k + 1]) + "\n" + num(p[2 * j]) + " " +
+                                            num(p[2 * j + 1]) + "\n" + num(p[2 * l]) + " " + num(p[2 * l + 1]) + "\n" +
+                                            num(p[2 * k]) + " " + num(p[2 * k + 1]) + "\n");
+  ch::writeOut(o, "fig2_6_circle.dat", num(c.x) + " " + num(c.y) + " " + num(c.r) + "\n");
+  ch::writeOut(o, "fig2_6_labels.dat", labels);
+  ch::writeOut(o, "fig2_6_super.dat", superLabel);
+  ch::writeOut(o, "fig2_6_crossing.dat", crossing);
+  ch::runGnuplot(o, "fig2_6.gp");
+}
+
+// ---- table_bowyer_watson ---------------------------------------------------------------------
+
+void algorithm1Table(const ch::Options& o) {
+  const std::size_t maxN = o.maxN > 0 ? std::size_t(o.maxN) : (o.quick ? 2000 : 16000);
+  ch::Table tab;
+  tab.caption = "Algorithm 1 (corrected, every triangle tested) against Listing 2.7 (delaunayTrgl, "
+                "walk from the previous cavity), uniform random points, super-square 10 times the "
+                "box; times are ratios to Listing 2.7 measured in the same run";
+  tab.header = {"n", "incircle tests", "tests / n(n+1)", "Algorithm 1 / Listing 2.7 time",
+                "same triangles", "Delaunay (exact)"};
+  for (std::size_t n = 1000; n <= maxN; n *= 2) {
+    const XY p = uniform(n, 2200 + n);
+    auto t0 = Clock::now();
+    const dt::BowyerWatsonResult bw = dt::bowyerWatson(p);
+    const double tBW = ch::secondsSince(t0);
+    double x0 = p[0], x1 = p[0], y0 = p[1], y1 = p[1];
+    for (std::size_t i = 0; i < n; ++i) {
+      x0 = std::min(x0, p[2 * i]), x1 = std::max(x1, p[2 * i]);
+      y0 = std::min(y0, p[2 * i + 1]), y1 = std::max(y1, p[2 * i + 1]);
+    }
+    // Listing 2.7, timed several times (it is much faster) to get a stable baseline.
+    double tL = 1e300;
+    dt::PlainMesh m;
+    for (int rep = 0; rep < 5; ++rep) {
+      t0 = Clock::now();
+      dt::Triangulation T;
+      dt::initSuperTriangles(T, x0, y0, x1, y1);
+      std::vector<dt::Vertex*> S;
+      for (std::size_t i = 0; i < n; ++i) S.push_back(T.addVertex(p[2 * i], p[2 * i + 1], long(i)));
+      dt::delaunayTrgl(T, S, dt::StartRule::LastCavity);
+      tL = std::min(tL, ch::secondsSince(t0));
+      if (rep == 0) m = dt::extractMesh(T, false);
+    }
+    const bool same = dt::canonicalTriangles(bw.ids, bw.tri) == dt::canonicalTriangles(m.ids, m.tri);
+    const bool ok = dt::checkDelaunay(bw.xy, bw.tri).ok;
+    tab.add({std::to_string(n), std::to_string(bw.incircleTests),
+             ch::fmt("%.4f", double(bw.incircleTests) / (double(n) * double(n + 1))), ch::fmt("%.1f", tBW / tL),
+             same ? "yes" : "no", ok ? "yes" : "no"});
+    std::cerr << "n = " << n << " done\n";
+  }
+  tab.emit(o, "table_bowyer_watson");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const ch::Options o = ch::parseOptions(argc, argv);
+  try {
+    figure25(o);
+    figure26(o);
+    algorithm1Table(o);
+  } catch (const std::exception& e) {
+    std::cerr << "sec2_2_bowyer_watson: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}
