@@ -1,0 +1,299 @@
+/// \file test_book.cpp Static checks of the book's pages (book/*.md): every image, table, snippet and reference resolves, and no formula is left unrendered.
+//
+// The checks read the sources only, so the suite does not need the book (or the chapter
+// programs' outputs) to be built. An embedded figure or table must be either in the
+// repository or named by a chapter program or gnuplot script, which will write it.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const fs::path kRoot = DT_SOURCE_DIR;
+
+std::string readAll(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::vector<fs::path> filesIn(const fs::path& dir, const std::string& ext) {
+  std::vector<fs::path> out;
+  if (!fs::is_directory(dir)) return out;
+  for (const auto& e : fs::directory_iterator(dir))
+    if (e.is_regular_file() && e.path().extension() == ext) out.push_back(e.path());
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+struct Line {
+  std::string file;  // book/<name>.md
+  int number;        // 1-based
+  std::string text;  // with code spans and fenced code blocks blanked out
+  std::string where() const { return file + ":" + std::to_string(number); }
+};
+
+// The lines of a page as Doxygen sees its commands: fenced code blocks (``` or ~~~) and inline
+// code spans are blanked, since commands there are shown verbatim and are not processed.
+std::vector<Line> pageLines(const fs::path& p) {
+  std::vector<Line> out;
+  std::istringstream in(readAll(p));
+  std::string s;
+  bool fenced = false;
+  int n = 0;
+  while (std::getline(in, s)) {
+    ++n;
+    const auto first = s.find_first_not_of(" \t");
+    const bool fence = first != std::string::npos &&
+                       (s.compare(first, 3, "```") == 0 || s.compare(first, 3, "~~~") == 0);
+    if (fence) {
+      fenced = !fenced;
+      out.push_back({"book/" + p.filename().string(), n, ""});
+      continue;
+    }
+    if (fenced) {
+      out.push_back({"book/" + p.filename().string(), n, ""});
+      continue;
+    }
+    std::string t;
+    bool code = false;
+    for (char c : s) {
+      if (c == '`') {
+        code = !code;
+        t += ' ';
+      } else {
+        t += code ? ' ' : c;
+      }
+    }
+    out.push_back({"book/" + p.filename().string(), n, t});
+  }
+  return out;
+}
+
+std::vector<fs::path> pages() { return filesIn(kRoot / "book", ".md"); }
+
+// All matches of a regex over every page: the line, and the match's groups as strings.
+std::vector<std::pair<Line, std::vector<std::string>>> findAll(const std::regex& re) {
+  std::vector<std::pair<Line, std::vector<std::string>>> out;
+  for (const fs::path& p : pages())
+    for (const Line& l : pageLines(p))
+      for (auto it = std::sregex_iterator(l.text.begin(), l.text.end(), re);
+           it != std::sregex_iterator(); ++it) {
+        std::vector<std::string> groups;
+        for (std::size_t g = 0; g < it->size(); ++g) groups.push_back((*it)[g].str());
+        out.push_back({l, groups});
+      }
+  return out;
+}
+
+// True if a chapter program or gnuplot script names this output (its stem, e.g. "fig2_7").
+bool producedByAProgram(const std::string& name) {
+  const std::string stem = fs::path(name).stem().string();
+  std::vector<fs::path> producers = filesIn(kRoot / "chapters" / "ch2", ".cpp");
+  for (const fs::path& g : filesIn(kRoot / "figures" / "ch2", ".gp")) producers.push_back(g);
+  for (const fs::path& p : producers)
+    if (readAll(p).find(stem) != std::string::npos) return true;
+  return false;
+}
+
+// Page ids and anchors defined by the pages: \page, \section, \subsection, \anchor, {#id}.
+std::set<std::string> bookLabels() {
+  std::set<std::string> ids;
+  const std::regex def(R"(\\(?:page|section|subsection|subsubsection|anchor)\s+([A-Za-z0-9_]+))");
+  const std::regex brace(R"(\{#([A-Za-z0-9_]+)\})");
+  for (const fs::path& p : pages()) {
+    const std::string s = readAll(p);
+    for (auto it = std::sregex_iterator(s.begin(), s.end(), def); it != std::sregex_iterator(); ++it)
+      ids.insert((*it)[1]);
+    for (auto it = std::sregex_iterator(s.begin(), s.end(), brace); it != std::sregex_iterator(); ++it)
+      ids.insert((*it)[1]);
+  }
+  return ids;
+}
+
+// Text of every header and source of code/ (for symbol references such as dt::lineSearch).
+const std::string& codeText() {
+  static const std::string text = [] {
+    std::string t;
+    for (const char* ext : {".h", ".cpp"})
+      for (const fs::path& p : filesIn(kRoot / "code", ext)) t += readAll(p);
+    return t;
+  }();
+  return text;
+}
+
+}  // namespace
+
+TEST_CASE("book: the pages exist, each starts with \\page or \\mainpage, and page ids are unique") {
+  const auto ps = pages();
+  REQUIRE(ps.size() >= 3);  // at least index, errata, references
+  std::map<std::string, std::string> seen;
+  int mainpages = 0;
+  const std::regex head(R"(^\s*\\(page|mainpage)\s*([A-Za-z0-9_]*))");
+  for (const fs::path& p : ps) {
+    std::istringstream in(readAll(p));
+    std::string first;
+    while (std::getline(in, first) && first.find_first_not_of(" \t\r") == std::string::npos) {
+    }
+    std::smatch m;
+    const bool ok = std::regex_search(first, m, head);
+    CHECK_MESSAGE(ok, "book/" << p.filename().string() << ": first line must be \\page <id> <title>");
+    if (!ok) continue;
+    if (m[1] == "mainpage") {
+      ++mainpages;
+      continue;
+    }
+    const std::string id = m[2];
+    CHECK_MESSAGE(!id.empty(), "book/" << p.filename().string() << ": \\page without an id");
+    CHECK_MESSAGE(seen.count(id) == 0, "page id '" << id << "' used by book/" << seen[id]
+                                                    << " and book/" << p.filename().string());
+    seen[id] = p.filename().string();
+  }
+  CHECK(mainpages == 1);
+  CHECK(seen.count("errata") == 1);
+  CHECK(seen.count("references") == 1);
+}
+
+TEST_CASE("book: every \\image is in the repository or written by a chapter program") {
+  for (const auto& [line, m] : findAll(std::regex(R"(\\image\s+(\w+)\s+"?([^\s"]+))"))) {
+    const std::string name = m[2];
+    CHECK_MESSAGE(m[1] == "html", line.where() << ": only \\image html is built (got " << m[1] << ")");
+    const bool found = fs::exists(kRoot / name) || producedByAProgram(name);
+    CHECK_MESSAGE(found, line.where() << ": image " << name
+                                      << " is in no chapter program or gnuplot script");
+  }
+}
+
+TEST_CASE("book: every \\htmlinclude and \\include is in the repository or written by a chapter program") {
+  for (const auto& [line, m] : findAll(std::regex(R"(\\(?:htmlinclude|include|verbinclude)\s+(?:\[[^\]]*\]\s*)?"?([^\s"]+))"))) {
+    const std::string name = m[1];
+    const bool found = fs::exists(kRoot / name) || producedByAProgram(name);
+    CHECK_MESSAGE(found, line.where() << ": " << name
+                                      << " is neither in the repository nor named by a chapter program");
+  }
+}
+
+TEST_CASE("book: every \\snippet names an existing file and a marker that opens and closes in it") {
+  for (const auto& [line, m] : findAll(std::regex(R"(\\snippet(?:\{[^}]*\})?\s+(\S+)\s+(\S+))"))) {
+
+    const std::string file = m[1], marker = m[2];
+    const fs::path p = kRoot / file;
+    const bool exists = fs::is_regular_file(p);
+    CHECK_MESSAGE(exists, line.where() << ": snippet file " << file << " does not exist");
+    if (!exists) continue;
+    // Doxygen cuts between the first two lines that contain "[marker]".
+    std::istringstream in(readAll(p));
+    std::string s;
+    int hits = 0;
+    while (std::getline(in, s))
+      if (s.find("[" + marker + "]") != std::string::npos) ++hits;
+    CHECK_MESSAGE(hits >= 2, line.where() << ": marker [" << marker << "] appears " << hits
+                                          << " time(s) in " << file << " (needs an opening and a closing line)");
+    CHECK_MESSAGE(hits % 2 == 0, line.where() << ": marker [" << marker << "] appears an odd number of times in " << file);
+  }
+}
+
+TEST_CASE("book: every \\ref resolves to a page, an anchor, a file or a symbol of code/") {
+  const std::set<std::string> labels = bookLabels();
+
+  for (const auto& [line, m] : findAll(std::regex(R"(\\ref\s+([A-Za-z0-9_:.#~]+[A-Za-z0-9_]))"))) {
+
+    const std::string target = m[1];
+    bool ok = labels.count(target) > 0;
+    if (!ok && target.find('.') != std::string::npos) {  // a file: tests/x.cpp or code/x.h
+      ok = fs::exists(kRoot / "tests" / target) || fs::exists(kRoot / "code" / target);
+      // A test file's page exists only if the file documents itself with \file.
+      if (ok && fs::exists(kRoot / "tests" / target))
+        CHECK_MESSAGE(readAll(kRoot / "tests" / target).find("\\file") != std::string::npos,
+                      line.where() << ": tests/" << target << " has no \\file comment, so no page");
+    }
+    if (!ok) {  // a symbol, possibly qualified: dt::lineSearch, Face::inCircle
+      std::string last = target.substr(target.rfind(':') == std::string::npos ? 0 : target.rfind(':') + 1);
+      ok = std::regex_search(codeText(), std::regex("\\b" + last + "\\b"));
+    }
+    CHECK_MESSAGE(ok, line.where() << ": \\ref " << target
+                                   << " is no page id, anchor, file of tests/ or code/, nor symbol of code/");
+  }
+}
+
+TEST_CASE("book: every formula is closed, and none is where Doxygen would print it raw") {
+  // Doxygen reads a paragraph as a whole (a blank line ends it; a table row is its own unit):
+  // an inline formula may span lines, and so may a "quoted" string, inside which commands are
+  // NOT processed, so a \f$ there is printed as source text (checked on a Doxygen 1.9 build).
+  const std::regex refText(R"(\\ref\s+\S+\s+"[^"]*")");
+  const std::regex bareDollar(R"((^|[^\\f])\$[^$\s][^$]*\$)");
+  for (const fs::path& p : pages()) {
+    bool inDisplay = false;  // inside \f[ ... \f] or \f{ ... \f}
+    int displayStart = 0;
+    std::string displayKind;
+    bool inInline = false, inQuote = false;
+    int inlineStart = 0, quoteStart = 0;
+    auto endParagraph = [&](const std::string& where) {
+      CHECK_MESSAGE(!inInline, where << ": inline formula opened at line " << inlineStart
+                                     << " is not closed in its paragraph");
+      inInline = false;
+      inQuote = false;
+    };
+    for (const Line& l : pageLines(p)) {
+      const bool blank = l.text.find_first_not_of(" \t\r") == std::string::npos;
+      const bool tableRow = !blank && l.text[l.text.find_first_not_of(" \t")] == '|';
+      if ((blank || tableRow) && !inDisplay) endParagraph(l.where());
+      if (blank) continue;
+      const std::string t = std::regex_replace(l.text, refText, " ");
+      for (std::size_t i = 0; i < t.size(); ++i) {
+        if (t[i] == '"' && !inInline && !inDisplay) {
+          inQuote = !inQuote;
+          quoteStart = l.number;
+          continue;
+        }
+        if (t.compare(i, 2, "\\f") != 0 || i + 2 >= t.size()) continue;
+        const char k = t[i + 2];
+        if (k != '$' && k != '[' && k != ']' && k != '{' && k != '}') continue;
+        const bool opening = (k == '$' && !inInline) || k == '[' || k == '{';
+        CHECK_MESSAGE(!(opening && inQuote), l.where() << ": a formula inside \"...\" (quote opened at line "
+                                                       << quoteStart << ") is printed raw by Doxygen");
+        if (k == '$') {
+          CHECK_MESSAGE(!inDisplay, l.where() << ": \\f$ inside a display formula");
+          if (!inInline) inlineStart = l.number;
+          inInline = !inInline;
+        } else if (k == '[' || k == '{') {
+          CHECK_MESSAGE(!inDisplay, l.where() << ": display formula opened twice (first at line "
+                                              << displayStart << ")");
+          inDisplay = true;
+          displayStart = l.number;
+          displayKind = std::string("\\f") + k;
+        } else {
+          CHECK_MESSAGE(inDisplay, l.where() << ": \\f" << k << " closes no formula");
+          if (inDisplay)
+            CHECK_MESSAGE((displayKind == "\\f[") == (k == ']'),
+                          l.where() << ": " << displayKind << " closed by \\f" << k);
+          inDisplay = false;
+        }
+        i += 2;
+      }
+      // LaTeX delimiters that Doxygen does not know.
+      if (!inDisplay && !inInline) {
+        const std::string noFormulas = std::regex_replace(t, std::regex(R"(\\f\$.*?\\f\$)"), " ");
+        CHECK_MESSAGE(!std::regex_search(noFormulas, bareDollar),
+                      l.where() << ": $...$ is not a formula in Doxygen; use \\f$...\\f$");
+        CHECK_MESSAGE(noFormulas.find("\\(") == std::string::npos,
+                      l.where() << ": \\( is not a formula in Doxygen; use \\f$...\\f$");
+      }
+      if (tableRow && !inDisplay) endParagraph(l.where());
+    }
+    endParagraph("book/" + p.filename().string() + ":end");
+    CHECK_MESSAGE(!inDisplay, "book/" << p.filename().string() << ":" << displayStart
+                                      << ": display formula never closed");
+  }
+}
