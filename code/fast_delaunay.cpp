@@ -1,0 +1,496 @@
+#include "fast_delaunay.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <stdexcept>
+#include <string>
+
+#include "hilbert.h"
+#include "predicates.h"
+#include "triangulate.h"
+
+namespace dt {
+
+namespace {
+
+constexpr double kU = 0x1p-53;  // unit roundoff of binary64
+
+// ---------------------------------------------------------------------------------------------
+// The robust predicates of predicates.cpp, inlined and without the global counters. The filters
+// and their error bounds are exactly those derived there (5u |L|+|R| for the orientation, 12u
+// times the permanent for incircle, with the same underflow guards); only the exact fallback is
+// a call.
+//! [fastPredicates]
+struct InlinePredicates {
+  FastStats* st;
+  int orient(const double* a, const double* b, const double* c) const {
+    const double detleft = (a[0] - c[0]) * (b[1] - c[1]);
+    const double detright = (a[1] - c[1]) * (b[0] - c[0]);
+    const double det = detleft - detright;
+    const double detsum = std::fabs(detleft) + std::fabs(detright);
+    const double bound = 5 * kU * detsum;
+    if (detsum >= 0x1p-960 && (det > bound || -det > bound)) return det > 0 ? 1 : -1;
+    ++st->exactOrient;
+    return orient2dExact(a[0], a[1], b[0], b[1], c[0], c[1]);
+  }
+  int incircle(const double* a, const double* b, const double* c, const double* d) const {
+    const double adx = a[0] - d[0], ady = a[1] - d[1];
+    const double bdx = b[0] - d[0], bdy = b[1] - d[1];
+    const double cdx = c[0] - d[0], cdy = c[1] - d[1];
+    const double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy;
+    const double cdxady = cdx * ady, adxcdy = adx * cdy;
+    const double adxbdy = adx * bdy, bdxady = bdx * ady;
+    const double alift = adx * adx + ady * ady;
+    const double blift = bdx * bdx + bdy * bdy;
+    const double clift = cdx * cdx + cdy * cdy;
+    const double det = alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy) +
+                       clift * (adxbdy - bdxady);
+    const double permanent = (std::fabs(bdxcdy) + std::fabs(cdxbdy)) * alift +
+                             (std::fabs(cdxady) + std::fabs(adxcdy)) * blift +
+                             (std::fabs(adxbdy) + std::fabs(bdxady)) * clift;
+    const double bound = 12 * kU * permanent;
+    if ((det > bound || -det > bound) && permanent >= 0x1p-900 && big(adx) && big(ady) &&
+        big(bdx) && big(bdy) && big(cdx) && big(cdy))
+      return det > 0 ? 1 : -1;
+    ++st->exactIncircle;
+    return incircleExact(a[0], a[1], b[0], b[1], c[0], c[1], d[0], d[1]);
+  }
+  static bool big(double v) { return v == 0 || std::fabs(v) >= 0x1p-511; }
+};
+//! [fastPredicates]
+
+// The ladder's first rungs: the library's out-of-line predicates (with their counters).
+struct CalledPredicates {
+  FastStats* st;
+  int orient(const double* a, const double* b, const double* c) const {
+    return orient2d(a[0], a[1], b[0], b[1], c[0], c[1]);
+  }
+  int incircle(const double* a, const double* b, const double* c, const double* d) const {
+    return dt::incircle(a[0], a[1], b[0], b[1], c[0], c[1], d[0], d[1]);
+  }
+};
+
+// p on the open segment ab, given a, b, p collinear (comparisons only, hence exact).
+inline bool onOpenSegment(const double* a, const double* b, const double* p) {
+  const int k = a[0] != b[0] ? 0 : 1;
+  return (a[k] < p[k] && p[k] < b[k]) || (b[k] < p[k] && p[k] < a[k]);
+}
+
+// ---------------------------------------------------------------------------------------------
+// The kernel. Triangle t has vertices v[0..2] (counter-clockwise) and, across its edge
+// v[k] v[(k+1)%3], the neighbour half-edge a[k] = 3 t' + k' (the same edge seen from t'). Both
+// live in one 24-byte record, so a visit touches one cache line. Vertices are the points in
+// insertion order, 0..n-1; INF = n is the vertex at infinity, always at position 2 of a ghost.
+struct Tri {
+  int v[3];
+  int a[3];
+};
+
+//! [fastKernel]
+template <class Pred, bool kMapAdjacency, bool kCentroidWalk>
+class Kernel {
+ public:
+  Kernel(const double* P, int n, Pred pred, FastStats& st)
+      : P_(P), INF(n), pred_(pred), st_(st) {
+    const std::size_t maxTri = 2 * std::size_t(n) + 2;  // 2(n+1) - 4 faces on the sphere
+    T_.reserve(maxTri);
+    mark_.assign(maxTri, 0);
+    startHalf_.assign(std::size_t(n) + 1, -1);
+  }
+
+  /// The first triangle a b c (counter-clockwise) and its three ghosts.
+  void init(int a, int b, int c) {
+    T_ = {{{a, b, c}, {3 * 1 + 0, 3 * 2 + 0, 3 * 3 + 0}},
+          {{b, a, INF}, {3 * 0 + 0, 3 * 3 + 2, 3 * 2 + 1}},
+          {{c, b, INF}, {3 * 0 + 1, 3 * 1 + 2, 3 * 3 + 1}},
+          {{a, c, INF}, {3 * 0 + 2, 3 * 2 + 2, 3 * 1 + 1}}};
+    last_ = 0;
+  }
+
+  /// Inserts vertex ip. Returns -1, or the vertex that ip duplicates (then nothing changes).
+  int insert(int ip) {
+    const double* p = P_ + 2 * ip;
+    int dup = -1;
+    const int seed = kCentroidWalk ? walkCentroid(p, dup) : walk(p, dup);
+    if (seed < 0) return dup;
+    cavity(seed, p);
+    if (bnd_.size() != cav_.size() + 2)  // Property 2.1.1: the cavity is a disk
+      throw std::logic_error("fastDelaunay: cavity boundary has " +
+                             std::to_string(bnd_.size()) + " edges for " +
+                             std::to_string(cav_.size()) + " triangles");
+    st_.cavityFaces += cav_.size();
+    ++st_.insertions;
+    fill(ip);
+    return -1;
+  }
+
+  const std::vector<Tri>& triangles() const { return T_; }
+  int infinite() const { return INF; }
+  /// Frees everything but the triangles.
+  void releaseScratch() {
+    // (v = {} would keep the capacity: it assigns an empty list.)
+    std::vector<unsigned char>().swap(mark_);
+    std::vector<int>().swap(startHalf_);
+  }
+
+ private:
+  struct BoundaryEdge {
+    int a, b;  // the edge a -> b as the cavity triangle sees it
+    int out;   // the half-edge of the triangle outside the cavity
+    int e1;    // the half-edge b -> p of the new triangle a b p
+  };
+
+  const double* pt(int v) const { return P_ + 2 * v; }
+
+  bool conflict(int t, const double* p) const {
+    const int* v = T_[t].v;
+    if (v[2] == INF) {  // ghost (a, b, inf): p strictly left of a->b, or on the open segment
+      const int o = pred_.orient(pt(v[0]), pt(v[1]), p);
+      return o > 0 || (o == 0 && onOpenSegment(pt(v[0]), pt(v[1]), p));
+    }
+    return pred_.incircle(pt(v[0]), pt(v[1]), pt(v[2]), p) > 0;
+  }
+
+  // A visibility walk by orientation tests, from the last triangle created, that does not test
+  // the edge it came through. On a Delaunay triangulation it cannot cycle (Edelsbrunner); the
+  // cap turns a corrupted mesh into an error. It ends in a triangle that contains p (whose
+  // circle then contains p strictly unless p is one of its vertices) or in a ghost that sees p.
+  int walk(const double* p, int& dup) {
+    int t = last_, from = -1;
+    const std::size_t cap = T_.size() + 1;
+    for (std::size_t steps = 1;; ++steps) {
+      if (steps > cap) throw std::logic_error("fastDelaunay: walk does not terminate");
+      const int* v = T_[t].v;
+      if (v[2] == INF) {
+        // Entered from its finite side: p is strictly beyond that hull edge, a conflict.
+        if (from == 0 || conflict(t, p)) {
+          st_.walkSteps += steps;
+          return t;
+        }
+        const int h = T_[t].a[0];
+        t = h / 3;
+        from = h % 3;
+        continue;
+      }
+      const double *a = pt(v[0]), *b = pt(v[1]), *c = pt(v[2]);
+      int k = -1;
+      if (from != 0 && pred_.orient(a, b, p) < 0)
+        k = 0;
+      else if (from != 1 && pred_.orient(b, c, p) < 0)
+        k = 1;
+      else if (from != 2 && pred_.orient(c, a, p) < 0)
+        k = 2;
+      if (k < 0) {
+        st_.walkSteps += steps;
+        for (int j = 0; j < 3; ++j)
+          if (pt(v[j])[0] == p[0] && pt(v[j])[1] == p[1]) {
+            dup = v[j];
+            return -1;
+          }
+        return t;
+      }
+      const int h = T_[t].a[k];
+      t = h / 3;
+      from = h % 3;
+    }
+  }
+
+  // The ladder's walk: Listing 2.6 as corrected in search.cpp (an incircle test at every
+  // triangle, then the half-open sector of the centroid's ray).
+  int walkCentroid(const double* p, int& dup) {
+    int t = last_;
+    const std::size_t cap = T_.size() + 1;
+    for (std::size_t steps = 1;; ++steps) {
+      if (steps > cap) throw std::logic_error("fastDelaunay: walk does not terminate");
+      if (conflict(t, p)) {
+        st_.walkSteps += steps;
+        return t;
+      }
+      const int* v = T_[t].v;
+      if (v[2] == INF) {
+        t = T_[t].a[0] / 3;
+        continue;
+      }
+      const double c[2] = {(pt(v[0])[0] + pt(v[1])[0] + pt(v[2])[0]) / 3,
+                           (pt(v[0])[1] + pt(v[1])[1] + pt(v[2])[1]) / 3};
+      int next = -1;
+      for (int k = 0; k < 3 && next < 0; ++k) {
+        const double *a = pt(v[k]), *b = pt(v[(k + 1) % 3]);
+        if (pred_.orient(c, a, p) >= 0 && pred_.orient(c, b, p) < 0 && pred_.orient(a, b, p) < 0)
+          next = k;
+      }
+      for (int k = 0; k < 3 && next < 0; ++k)
+        if (pred_.orient(pt(v[k]), pt(v[(k + 1) % 3]), p) < 0) next = k;
+      if (next < 0) {
+        st_.walkSteps += steps;
+        for (int j = 0; j < 3; ++j)
+          if (pt(v[j])[0] == p[0] && pt(v[j])[1] == p[1]) {
+            dup = v[j];
+            return -1;
+          }
+        throw std::logic_error("fastDelaunay: point inside a triangle but outside its circle");
+      }
+      t = T_[t].a[next] / 3;
+    }
+  }
+
+  // Delaunay cavity (Listing 2.5) from a seed in conflict: the list of cavity triangles is its
+  // own work queue, so there is neither recursion nor a separate stack.
+  void cavity(int seed, const double* p) {
+    cav_.clear();
+    bnd_.clear();
+    mark_[seed] = 1;
+    cav_.push_back(seed);
+    for (std::size_t i = 0; i < cav_.size(); ++i) {
+      const int t = cav_[i];
+      for (int k = 0; k < 3; ++k) {
+        const int h = T_[t].a[k];
+        const int n = h / 3;
+        if (mark_[n]) continue;  // inside the cavity: an interior edge
+        if (conflict(n, p)) {
+          mark_[n] = 1;
+          cav_.push_back(n);
+        } else {
+          bnd_.push_back({T_[t].v[k], T_[t].v[(k + 1) % 3], h, -1});
+        }
+      }
+    }
+  }
+
+  void link(int h, int g) {
+    T_[h / 3].a[h % 3] = g;
+    T_[g / 3].a[g % 3] = h;
+  }
+
+  // The Delaunay ball: triangle a b p on each boundary edge a -> b, in the slots of the cavity
+  // and two new ones. Its edge b -> p meets the edge p -> b of the triangle built on the
+  // boundary edge leaving b; startHalf_[b] finds that triangle without a map.
+  void fill(int ip) {
+    const std::size_t nc = cav_.size();
+    for (std::size_t i = 0; i < bnd_.size(); ++i) {
+      int s;
+      if (i < nc) {
+        s = cav_[i];
+      } else {
+        s = int(T_.size());
+        T_.push_back({{0, 0, 0}, {-1, -1, -1}});
+      }
+      mark_[s] = 0;
+      BoundaryEdge& e = bnd_[i];
+      // Rotation that keeps the vertex at infinity at position 2 of a ghost.
+      const int r = e.b == INF ? 2 : (e.a == INF ? 1 : 0);
+      const int old[3] = {e.a, e.b, ip};
+      T_[s].v[0] = old[r];
+      T_[s].v[1] = old[(r + 1) % 3];
+      T_[s].v[2] = old[(r + 2) % 3];
+      const int e0 = 3 * s + (3 - r) % 3, e2 = 3 * s + (5 - r) % 3;
+      e.e1 = 3 * s + (4 - r) % 3;
+      if (!kMapAdjacency) {
+        link(e0, e.out);
+        startHalf_[e.a] = e2;
+      }
+    }
+    if (kMapAdjacency) {
+      linkWithMap();
+    } else {
+      for (const BoundaryEdge& e : bnd_) link(e.e1, startHalf_[e.b]);
+    }
+    last_ = int(bnd_.back().e1 / 3);
+  }
+
+  // The ladder's adjacency: Listing 2.4's std::map from edges to half-edges, over the new
+  // triangles and the outer side of the boundary.
+  void linkWithMap() {
+    std::map<std::pair<int, int>, int> edgeToHalf;
+    auto key = [](int u, int v) { return std::make_pair(std::min(u, v), std::max(u, v)); };
+    for (const BoundaryEdge& e : bnd_) edgeToHalf.emplace(key(e.a, e.b), e.out);
+    for (const BoundaryEdge& e : bnd_) {
+      const int s = e.e1 / 3;
+      for (int k = 0; k < 3; ++k) {
+        const auto q = key(T_[s].v[k], T_[s].v[(k + 1) % 3]);
+        auto it = edgeToHalf.find(q);
+        if (it == edgeToHalf.end()) {
+          edgeToHalf.emplace(q, 3 * s + k);
+        } else {
+          link(3 * s + k, it->second);
+          edgeToHalf.erase(it);
+        }
+      }
+    }
+  }
+
+  const double* P_;
+  const int INF;
+  Pred pred_;
+  FastStats& st_;
+  std::vector<Tri> T_;
+  std::vector<unsigned char> mark_;  // in the current cavity
+  std::vector<int> startHalf_;       // per vertex: half-edge p -> v of the new triangle v . p
+  std::vector<int> cav_;
+  std::vector<BoundaryEdge> bnd_;
+  int last_ = 0;
+};
+//! [fastKernel]
+
+// ---------------------------------------------------------------------------------------------
+// Insertion order: Hilbert keys (hilbert.h), optionally grouped in BRIO rounds, sorted by one
+// least-significant-digit radix sort on (round, key, index) packed in 64 bits. The index digits
+// need no pass: every pass is stable and the input is in index order, so equal keys keep it.
+// BRIO rounds as Amenta, Choi and Rote draw them: a point goes to the last round with
+// probability 1/2, to the one before with probability 1/4, and so on; the first round takes
+// what is left. A hash of the point's number plays the coin, so the order is reproducible.
+std::uint64_t splitmix64(std::uint64_t z) {
+  z += 0x9e3779b97f4a7c15ULL;
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+  return z ^ (z >> 31);
+}
+
+std::vector<int> radixHilbertOrder(const std::vector<double>& xy, int rounds, std::uint64_t seed) {
+  const std::size_t n = xy.size() / 2;
+  int idxBits = 1;
+  while ((std::size_t{1} << idxBits) < n) ++idxBits;
+  int roundBits = 0;
+  while ((1 << roundBits) < rounds) ++roundBits;
+  const int depth = hilbertAutoDepth(n);
+  // Dropping the last levels of a key gives the key of a coarser curve: same order, more ties.
+  const int keyBits = std::min(2 * depth, 64 - idxBits - roundBits);
+  std::vector<std::uint64_t> a, b(n);
+  {
+    const std::vector<std::uint64_t> keys = hilbertKeys(xy, depth);
+    a.resize(n);
+    const int shift = 2 * depth - keyBits;
+    for (std::size_t i = 0; i < n; ++i) {
+      std::uint64_t r = 0;
+      if (rounds > 1) {  // trailing zeros of a random word: 0 w.p. 1/2, 1 w.p. 1/4, ...
+        const std::uint64_t h = splitmix64(seed ^ (0x632be59bd9b4e019ULL * (i + 1)));
+        int z = 0;
+        while (z < rounds - 1 && ((h >> z) & 1) == 0) ++z;
+        r = std::uint64_t(rounds - 1 - z);
+      }
+      a[i] = (((r << keyBits) | (keys[i] >> shift)) << idxBits) | i;
+    }
+  }
+  constexpr int kDigit = 11;
+  std::vector<std::size_t> count(std::size_t{1} << kDigit);
+  for (int lo = idxBits; lo < idxBits + keyBits + roundBits; lo += kDigit) {
+    std::fill(count.begin(), count.end(), 0);
+    const std::uint64_t mask = (std::uint64_t{1} << kDigit) - 1;
+    for (std::uint64_t v : a) ++count[(v >> lo) & mask];
+    std::size_t sum = 0;
+    for (auto& c : count) sum += std::exchange(c, sum);
+    for (std::uint64_t v : a) b[count[(v >> lo) & mask]++] = v;
+    a.swap(b);
+  }
+  std::vector<std::uint64_t>().swap(b);
+  std::vector<int> order(n);
+  const std::uint64_t idxMask = (std::uint64_t{1} << idxBits) - 1;
+  for (std::size_t i = 0; i < n; ++i) order[i] = int(a[i] & idxMask);
+  return order;
+}
+
+template <class Pred, bool kMap, bool kCentroid>
+void run(std::vector<double>& P, std::vector<int>& orig, FastResult& res, Pred pred) {
+  const int n = int(orig.size());
+  auto same = [&](int i, int j) { return P[2 * i] == P[2 * j] && P[2 * i + 1] == P[2 * j + 1]; };
+  // The first triangle: point 0, the first point distinct from it, the first one off their
+  // line (as delaunayTrglHull does); the points skipped on the way are inserted later.
+  int i1 = 1;
+  while (i1 < n && same(0, i1)) ++i1;
+  if (i1 >= n) throw DegenerateInput("fewer than 3 distinct points");
+  int i2 = i1 + 1;
+  while (i2 < n && pred.orient(&P[0], &P[2 * i1], &P[2 * i2]) == 0) ++i2;
+  if (i2 >= n) {
+    bool distinct3 = false;
+    for (int i = i1 + 1; i < n && !distinct3; ++i) distinct3 = !same(i, 0) && !same(i, i1);
+    throw DegenerateInput(distinct3 ? "all points are collinear" : "fewer than 3 distinct points");
+  }
+  Kernel<Pred, kMap, kCentroid> K(P.data(), n, pred, res.stats);
+  if (pred.orient(&P[0], &P[2 * i1], &P[2 * i2]) > 0)
+    K.init(0, i1, i2);
+  else
+    K.init(0, i2, i1);
+  res.stats.insertions = 3;
+  std::vector<std::pair<int, int>> dups;  // (input number, vertex kept)
+  for (int i = 1; i < n; ++i) {
+    if (i == i1 || i == i2) continue;
+    const int d = K.insert(i);
+    if (d < 0) continue;
+    // Keep the smallest input number of the equal points.
+    if (orig[i] < orig[d]) std::swap(orig[i], orig[d]);
+    dups.emplace_back(orig[i], d);
+  }
+  // The finite triangles, renumbered as the input. The scratch arrays and the sorted points go
+  // first, so that the output does not raise the peak memory.
+  K.releaseScratch();
+  std::vector<double>().swap(P);
+  std::size_t nFinite = 0;
+  for (const Tri& t : K.triangles()) nFinite += t.v[2] != K.infinite();
+  res.tri.reserve(nFinite);
+  for (const Tri& t : K.triangles())
+    if (t.v[2] != K.infinite()) res.tri.push_back({orig[t.v[0]], orig[t.v[1]], orig[t.v[2]]});
+  res.duplicates.reserve(dups.size());
+  for (const auto& [d, v] : dups) res.duplicates.emplace_back(d, orig[v]);
+  std::sort(res.duplicates.begin(), res.duplicates.end());
+}
+
+}  // namespace
+
+//! [fastDelaunay]
+FastResult fastDelaunay(const std::vector<double>& xy, const FastOptions& opt) {
+  if (xy.size() % 2 != 0) throw std::invalid_argument("fastDelaunay: odd number of coordinates");
+  const std::size_t n = xy.size() / 2;
+  if (n > (std::size_t{1} << 28)) throw std::invalid_argument("fastDelaunay: more than 2^28 points");
+  for (std::size_t i = 0; i < xy.size(); ++i)
+    if (!std::isfinite(xy[i]))
+      throw std::invalid_argument("fastDelaunay: point " + std::to_string(i / 2) +
+                                  " has a coordinate that is not finite");
+  if (n < 3) throw DegenerateInput("fewer than 3 distinct points");
+  FastResult res;
+  const auto t0 = std::chrono::steady_clock::now();
+  std::vector<int> orig;  // orig[i]: input number of the i-th point inserted
+  if (opt.order == FastOrder::Input) {
+    orig.resize(n);
+    for (std::size_t i = 0; i < n; ++i) orig[i] = int(i);
+  } else if (opt.order == FastOrder::RadixBrio) {
+    orig = radixHilbertOrder(xy, std::max(1, std::min(opt.rounds, 32)), opt.seed);
+  } else {
+    const std::vector<std::size_t> o =
+        opt.order == FastOrder::Brio ? brioOrder(xy, opt.seed) : hilbertOrder(xy);
+    orig.assign(o.begin(), o.end());
+  }
+  // The points in insertion order, contiguous: the walk and the cavity read neighbours.
+  std::vector<double> P(2 * n);
+  for (std::size_t i = 0; i < n; ++i) {
+    // The reads are scattered: ask for the point needed a few iterations ahead.
+    if (i + 16 < n) __builtin_prefetch(&xy[2 * std::size_t(orig[i + 16])]);
+    P[2 * i] = xy[2 * std::size_t(orig[i])];
+    P[2 * i + 1] = xy[2 * std::size_t(orig[i]) + 1];
+  }
+  const auto t1 = std::chrono::steady_clock::now();
+  res.stats.sortSeconds = std::chrono::duration<double>(t1 - t0).count();
+  if ((opt.ladderMapAdjacency && !opt.ladderCentroidWalk) ||
+      (opt.ladderCentroidWalk && !opt.ladderCallPredicates))
+    throw std::invalid_argument("fastDelaunay: the ladder switches are cumulative");
+  if (opt.ladderCallPredicates) {
+    const PredicateCounters before = predicateCounters();
+    CalledPredicates pred{&res.stats};
+    if (opt.ladderMapAdjacency)
+      run<CalledPredicates, true, true>(P, orig, res, pred);
+    else if (opt.ladderCentroidWalk)
+      run<CalledPredicates, false, true>(P, orig, res, pred);
+    else
+      run<CalledPredicates, false, false>(P, orig, res, pred);
+    res.stats.exactOrient = predicateCounters().orientExact - before.orientExact;
+    res.stats.exactIncircle = predicateCounters().incircleExact - before.incircleExact;
+  } else {
+    run<InlinePredicates, false, false>(P, orig, res, InlinePredicates{&res.stats});
+  }
+  res.stats.insertSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
+  return res;
+}
+//! [fastDelaunay]
+
+}  // namespace dt

@@ -1,0 +1,62 @@
+// Going further (issue 9): a fast exact Bowyer-Watson kernel. Same algorithm and same result
+// class as delaunayTrglHull (2.2.2, Listing 2.7): the exact DT(S), ghost faces for insertions
+// outside the hull, duplicates merged. What changes is only how it is stored and evaluated:
+// index-based triangles in contiguous arrays, no std::map, explicit stacks, inlined filtered
+// predicates, a Hilbert order, and a walk that starts from the last cavity.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+namespace dt {
+
+/// Insertion order of fastDelaunay.
+enum class FastOrder {
+  RadixBrio,  ///< BRIO rounds drawn by coin flips, Hilbert keys, one radix sort (the default)
+  Brio,       ///< dt::brioOrder (hilbert.h): BRIO rounds, each Hilbert-sorted by std::sort
+  Hilbert,    ///< dt::hilbertOrder (hilbert.h): one Hilbert sort of all the points
+  Input       ///< the order of the input
+};
+
+/// Options of fastDelaunay. The defaults are the fast kernel; the `ladder*` switches each put
+/// back one feature of the corrected listings, so that the optimisation ladder can measure what
+/// each change is worth (all of them give the same exact triangulation). They are cumulative:
+/// ladderMapAdjacency needs ladderCentroidWalk, which needs ladderCallPredicates.
+struct FastOptions {
+  FastOrder order = FastOrder::RadixBrio;
+  int rounds = 8;                  ///< RadixBrio: number of rounds (1 = a plain Hilbert sort)
+  std::uint64_t seed = 1;          ///< seed of the BRIO rounds
+  bool ladderCallPredicates = false; ///< out-of-line, counted dt::orient2d / dt::incircle
+  bool ladderCentroidWalk = false; ///< walk of Listing 2.6: incircle at every step, centroid ray
+  bool ladderMapAdjacency = false; ///< link new triangles through a std::map (Listing 2.4)
+};
+
+/// Counters and timings of one run.
+struct FastStats {
+  std::uint64_t insertions = 0;   ///< points inserted (duplicates excluded)
+  std::uint64_t walkSteps = 0;    ///< triangles visited by the walks, summed
+  std::uint64_t cavityFaces = 0;  ///< triangles of the cavities, summed
+  std::uint64_t exactOrient = 0;  ///< orientation tests that needed the exact stage
+  std::uint64_t exactIncircle = 0;///< incircle tests that needed the exact stage
+  double sortSeconds = 0;         ///< computing the insertion order
+  double insertSeconds = 0;       ///< the insertions (and the output)
+};
+
+/// The result: counter-clockwise triangles as index triples into the input points.
+struct FastResult {
+  std::vector<std::array<int, 3>> tri;
+  /// (duplicate, kept): every input point that was merged into an earlier-numbered equal point.
+  std::vector<std::pair<int, int>> duplicates;
+  FastStats stats;
+};
+
+/// DT(S) of the points xy = x0 y0 x1 y1 ..., exact for every input of finite doubles (the same
+/// triangulation class as delaunayTrglHull; checkDelaunay validates it). Of several equal points
+/// the smallest-numbered one is kept. Throws DegenerateInput (triangulate.h) if there are fewer
+/// than three distinct points or all points are collinear, std::invalid_argument on non-finite
+/// coordinates or more than 2^28 points.
+FastResult fastDelaunay(const std::vector<double>& xy, const FastOptions& opt = {});
+
+}  // namespace dt

@@ -1,0 +1,163 @@
+/// \file test_fast_kernel.cpp Tests of the fast kernel (code/fast_delaunay.h): the same exact DT(S) as the corrected listings, on easy and degenerate inputs.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <stdexcept>
+#include <vector>
+
+#include "fast_delaunay.h"
+#include "support.h"
+
+namespace {
+
+using Tris = std::vector<std::array<int, 3>>;
+
+// Each triangle rotated to start at its smallest vertex, the list sorted: two triangulations
+// are the same iff their canonical forms are equal.
+Tris canonical(Tris t) {
+  for (auto& f : t) std::rotate(f.begin(), std::min_element(f.begin(), f.end()), f.end());
+  std::sort(t.begin(), t.end());
+  return t;
+}
+
+// The corrected listings (delaunayTrglHull), triangles numbered as the input.
+Tris listings(const dttest::XY& p) {
+  dt::Triangulation T;
+  std::vector<dt::Vertex*> S;
+  for (std::size_t i = 0; i < p.size() / 2; ++i)
+    S.push_back(T.addVertex(p[2 * i], p[2 * i + 1], long(i)));
+  dt::delaunayTrglHull(T, S, dt::StartRule::LastCavity);
+  const dt::PlainMesh m = dt::extractMesh(T, true);
+  Tris out;
+  for (const auto& f : m.tri) out.push_back({int(m.ids[f[0]]), int(m.ids[f[1]]), int(m.ids[f[2]])});
+  return out;
+}
+
+// Runs the fast kernel, checks the result exactly, and returns it.
+dt::FastResult fastChecked(const dttest::XY& p, const dt::FastOptions& o = {}) {
+  dt::FastResult r = dt::fastDelaunay(p, o);
+  std::vector<char> must(p.size() / 2, 1);
+  for (const auto& d : r.duplicates) must[std::size_t(d.first)] = 0;
+  const dt::CheckReport c = dt::checkDelaunay(p, r.tri, &must);
+  INFO(c.error);
+  CHECK(c.ok);
+  return r;
+}
+
+std::vector<dt::FastOptions> allVariants() {
+  std::vector<dt::FastOptions> v;
+  for (dt::FastOrder ord : {dt::FastOrder::RadixBrio, dt::FastOrder::Brio, dt::FastOrder::Hilbert,
+                            dt::FastOrder::Input}) {
+    dt::FastOptions o;
+    o.order = ord;
+    v.push_back(o);
+  }
+  dt::FastOptions o;
+  o.rounds = 1;
+  v.push_back(o);
+  o.ladderCallPredicates = true;
+  v.push_back(o);
+  o.ladderCentroidWalk = true;
+  v.push_back(o);
+  o.ladderMapAdjacency = true;
+  v.push_back(o);
+  return v;
+}
+
+}  // namespace
+
+TEST_CASE("fast kernel: same DT(S) as the corrected listings on random points, in every variant") {
+  const dttest::XY p = dttest::uniformPoints(3000, 91);
+  const Tris ref = canonical(listings(p));
+  REQUIRE(ref.size() > 5900);  // 2(n-1) - n_h with n_h about 20 for 3000 uniform points
+  for (const dt::FastOptions& o : allVariants()) {
+    const dt::FastResult r = fastChecked(p, o);
+    CHECK(canonical(r.tri) == ref);  // points in general position: DT(S) is unique
+    CHECK(r.stats.insertions == 3000);
+  }
+}
+
+TEST_CASE("fast kernel: grid, circle, collinear hull: valid, and as many triangles as the listings") {
+  std::vector<dttest::XY> inputs;
+  inputs.push_back(dttest::gridPoints(40, 40));            // 4 cocircular points per square
+  inputs.push_back(dttest::circlePoints(500));             // all nearly cocircular
+  dttest::XY square;                                        // 61 collinear points per side
+  for (int i = 0; i < 60; ++i)
+    for (const auto& q : {std::array<int, 2>{i, 0}, {60, i}, {60 - i, 60}, {0, 60 - i}}) {
+      square.push_back(q[0]);
+      square.push_back(q[1]);
+    }
+  square.push_back(30.5);
+  square.push_back(29.25);
+  inputs.push_back(square);
+  dttest::XY line = dttest::uniformPoints(300, 5);          // one point off a long line
+  for (std::size_t i = 0; i < line.size(); i += 2) line[i + 1] = 3 * line[i] - 1;
+  line.push_back(0.5);
+  line.push_back(2);
+  inputs.push_back(line);
+  for (dttest::XY p : inputs) {
+    dttest::shuffle(p, 7);
+    const std::size_t nRef = listings(p).size();
+    for (const dt::FastOptions& o : allVariants()) CHECK(fastChecked(p, o).tri.size() == nRef);
+  }
+}
+
+TEST_CASE("fast kernel: huge and tiny coordinates keep the exact result") {
+  for (double scale : {1e300, 1e-300, 0x1p-1060}) {
+    dttest::XY p = dttest::uniformPoints(400, 13);
+    dttest::XY g = dttest::gridPoints(8, 8, 0.125);
+    p.insert(p.end(), g.begin(), g.end());
+    for (double& v : p) v *= scale;
+    INFO("scale " << scale);
+    const std::size_t nRef = listings(p).size();
+    const dt::FastResult r = fastChecked(p);
+    CHECK(r.tri.size() == nRef);
+  }
+}
+
+TEST_CASE("fast kernel: duplicates are merged into the smallest-numbered equal point") {
+  dttest::XY p = dttest::uniformPoints(200, 3);
+  const dttest::XY base = p;
+  // Points 200..399 repeat 0..199, and 400..409 repeat point 5 again.
+  p.insert(p.end(), base.begin(), base.end());
+  for (int k = 0; k < 10; ++k) {
+    p.push_back(base[10]);
+    p.push_back(base[11]);
+  }
+  for (dt::FastOrder ord : {dt::FastOrder::RadixBrio, dt::FastOrder::Input}) {
+    dt::FastOptions o;
+    o.order = ord;
+    const dt::FastResult r = fastChecked(p, o);
+    REQUIRE(r.duplicates.size() == 210);
+    for (const auto& [d, kept] : r.duplicates) {
+      CHECK(d >= 200);
+      CHECK(kept == (d < 400 ? d - 200 : 5));
+    }
+    CHECK(canonical(r.tri) == canonical(listings(base)));
+  }
+}
+
+TEST_CASE("fast kernel: inputs without a triangulation are refused") {
+  CHECK_THROWS_AS(dt::fastDelaunay({0, 0, 1, 1, 2, 2, 3, 3}), dt::DegenerateInput);
+  CHECK_THROWS_AS(dt::fastDelaunay({0, 0, 1, 1, 0, 0, 1, 1}), dt::DegenerateInput);
+  CHECK_THROWS_AS(dt::fastDelaunay({0, 0, 1, 1}), dt::DegenerateInput);
+  CHECK_THROWS_AS(dt::fastDelaunay({0, 0, 1, NAN, 2, 0}), std::invalid_argument);
+  CHECK_THROWS_AS(dt::fastDelaunay({0, 0, 1, INFINITY, 2, 0}), std::invalid_argument);
+  // Collinear points then one off the line: a triangulation exists.
+  const dt::FastResult r = fastChecked({0, 0, 1, 1, 2, 2, 3, 3, 0, 1}, {});
+  CHECK(r.tri.size() == 3);
+}
+
+TEST_CASE("fast kernel: the filters send exactly the degenerate tests to the exact stage") {
+  // Random points: no exact test. A grid: cocircular squares and collinear rows need it.
+  const dt::FastResult u = fastChecked(dttest::uniformPoints(5000, 17));
+  CHECK(u.stats.exactIncircle == 0);
+  CHECK(u.stats.exactOrient == 0);
+  const dt::FastResult g = fastChecked(dttest::gridPoints(50, 50));
+  CHECK(g.stats.exactIncircle > 0);
+  // The mean cavity of random points is about 4 triangles (2.3.4, Table 2.2: 4.06 to 4.17);
+  // ghost triangles and BRIO rounds keep it within a few percent of that.
+  CHECK(double(u.stats.cavityFaces) / double(u.stats.insertions) == doctest::Approx(4.1).epsilon(0.05));
+}
