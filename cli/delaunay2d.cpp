@@ -15,6 +15,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 #include "check.h"
 #include "io.h"
 #include "predicates.h"
@@ -36,13 +38,78 @@ const char* kUsage =
     "                 hull inserted directly, section 2.2.2) or 'super' (super-triangles,\n"
     "                 then DT(S) recovered from DT(S0 u S) by flips, 2.2.1 and 2.3.6); both\n"
     "                 give the exact DT(S); with --stats, 'super' also prints recovery_flips\n"
-    "  -h, --help     this help\n";
+    "  --progress     report progress on stderr (default: only when stderr is a terminal)\n"
+    "  --no-progress  never report progress\n"
+    "  -h, --help     this help\n"
+    "exit status: 0 success; 1 internal error or output not writable; 2 bad usage or bad\n"
+    "input (message naming file, line and value; no output written)\n";
 
 struct Options {
   std::string input, out, svg, msh;
   bool stats = false, check = true;
   bool superMethod = false;  // --method super
+  int progress = -1;         // --progress 1, --no-progress 0, default -1: if stderr is a tty
 };
+
+// Progress on stderr for long runs: points inserted, rate, time left, rewritten in place on a
+// terminal. Silent for the first half second, so short runs print nothing.
+class Progress {
+ public:
+  Progress(bool on, std::size_t total) : on_(on), total_(total) {}
+  void update(std::size_t done) {
+    if (!on_) return;
+    const double t = since(start_);
+    if (t < 0.5 || t - lastShown_ < 0.25) return;
+    // The rate of the last interval: with a random order, insertion slows down as n grows.
+    const double rate = lastShown_ > 0 ? double(done - lastDone_) / (t - lastShown_) : done / t;
+    lastShown_ = t;
+    lastDone_ = done;
+    const double left = rate > 0 ? double(total_ - done) / rate : 0;
+    std::fprintf(stderr, "%sdelaunay2d: %zu of %zu points inserted (%.0f%%), %.0f points/s, "
+                 "about %.0f s left   %s", tty_ ? "\r" : "", done, total_,
+                 total_ ? 100.0 * double(done) / double(total_) : 100.0, rate, left,
+                 tty_ ? "" : "\n");
+    std::fflush(stderr);
+    shown_ = true;
+  }
+  // A phase without a count (the flips, the check): one line, if progress was shown.
+  void phase(const char* what) {
+    if (!on_ || !shown_) return;
+    std::fprintf(stderr, "%sdelaunay2d: %s   %s", tty_ ? "\r" : "", what, tty_ ? "" : "\n");
+    std::fflush(stderr);
+  }
+  // The last line: replaces the progress line on a terminal.
+  void finish(std::size_t points) {
+    if (!on_ || !shown_) return;
+    std::fprintf(stderr, "%sdelaunay2d: %zu points triangulated in %.1f s\n",
+                 tty_ ? "\r\033[K" : "", points, since(start_));
+  }
+  void force() { shown_ = on_; }  // --progress: report even a short run
+
+ private:
+  static double since(std::chrono::steady_clock::time_point t) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+  }
+  bool on_;
+  bool tty_ = ::isatty(STDERR_FILENO) == 1;
+  bool shown_ = false;
+  std::size_t total_, lastDone_ = 0;
+  double lastShown_ = 0;
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+};
+
+// Inserts S[from..) with delaunayTrgl in chunks (the same insertions as one call), reporting
+// progress between chunks.
+void insertInChunks(dt::Triangulation& T, const std::vector<dt::Vertex*>& S, std::size_t from,
+                    dt::InsertionStats& st, Progress& progress) {
+  const std::size_t chunk = 4096;
+  for (std::size_t a = from; a < S.size(); a += chunk) {
+    const std::vector<dt::Vertex*> part(S.begin() + long(a),
+                                        S.begin() + long(std::min(S.size(), a + chunk)));
+    dt::delaunayTrgl(T, part, dt::StartRule::LastCavity, &st);
+    progress.update(a + part.size());
+  }
+}
 
 [[noreturn]] void usageError(const std::string& why) {
   std::cerr << "delaunay2d: " << why << "\n" << kUsage;
@@ -72,6 +139,8 @@ Options parse(int argc, char** argv) {
       const std::string m = value("--method");
       if (m != "hull" && m != "super") usageError("--method must be 'hull' or 'super'");
       o.superMethod = m == "super";
+    } else if (a == "--progress" || a == "--no-progress") {
+      o.progress = a == "--progress";
     } else if (a == "--no-check") {
       o.check = false;
     } else if (!a.empty() && a[0] == '-' && a != "-") {
@@ -125,6 +194,9 @@ int main(int argc, char** argv) {
       if (keep[i]) S.push_back(T.addVertex(ps.xy[2 * i], ps.xy[2 * i + 1], long(i)));
 
     dt::InsertionStats st;
+    Progress progress(opt.progress == 1 || (opt.progress == -1 && ::isatty(STDERR_FILENO) == 1),
+                      S.size());
+    if (opt.progress == 1) progress.force();
     const auto t0 = std::chrono::steady_clock::now();
     dt::FlipStats fs;
     if (opt.superMethod) {
@@ -150,16 +222,25 @@ int main(int argc, char** argv) {
           if (factor == 1.01) throw std::runtime_error("super-triangles do not fit in doubles");
         }
       }
-      dt::delaunayTrgl(T, S, dt::StartRule::LastCavity, &st);
+      insertInChunks(T, S, 0, st, progress);
+      progress.phase("recovering DT(S) by flips");
       fs = dt::recoverDelaunay(T);
     } else {
-      dt::delaunayTrglHull(T, S, dt::StartRule::LastCavity, &st);
+      // delaunayTrglHull on the shortest prefix of S that spans a triangle (on a collinear S
+      // it throws DegenerateInput), then the other points in chunks.
+      std::size_t k = 2;
+      while (k < S.size() && dt::orientationTest(S[0], S[1], S[k]) == 0) ++k;
+      k = std::min(k + 1, S.size());
+      dt::delaunayTrglHull(T, std::vector<dt::Vertex*>(S.begin(), S.begin() + long(k)),
+                           dt::StartRule::LastCavity, &st);
+      insertInChunks(T, S, k, st, progress);
     }
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
     dt::PlainMesh m = dt::extractMesh(T, true);
     if (opt.check) {
+      progress.phase("checking the result with exact predicates");
       std::vector<char> must(m.ids.size(), 1);
       const dt::CheckReport r = dt::checkDelaunay(m.xy, m.tri, &must);
       if (!r.ok || m.ids.size() != S.size()) {
@@ -170,9 +251,20 @@ int main(int argc, char** argv) {
     }
     std::vector<long> numbers(m.ids.size());
     for (std::size_t i = 0; i < m.ids.size(); ++i) numbers[i] = ps.number[std::size_t(m.ids[i])];
-    dt::writeFileAtomic(opt.out + ".ele", dt::eleText(m.tri, numbers, ps.firstIndex));
-    if (!opt.svg.empty()) dt::writeFileAtomic(opt.svg, dt::svgText(m.xy, m.tri));
-    if (!opt.msh.empty()) dt::writeFileAtomic(opt.msh, dt::mshText(m.xy, m.tri));
+    // All or nothing: if one output cannot be written, the ones already written are removed.
+    std::vector<std::pair<std::string, std::string>> outputs = {
+        {opt.out + ".ele", dt::eleText(m.tri, numbers, ps.firstIndex)}};
+    if (!opt.svg.empty()) outputs.emplace_back(opt.svg, dt::svgText(m.xy, m.tri));
+    if (!opt.msh.empty()) outputs.emplace_back(opt.msh, dt::mshText(m.xy, m.tri));
+    for (std::size_t i = 0; i < outputs.size(); ++i) {
+      try {
+        dt::writeFileAtomic(outputs[i].first, outputs[i].second);
+      } catch (const std::exception&) {
+        for (std::size_t j = 0; j < i; ++j) std::remove(outputs[j].first.c_str());
+        throw;
+      }
+    }
+    progress.finish(S.size());
     if (opt.stats) {
       std::printf("points: %zu\ntriangles: %zu\ntriangulation_seconds: %.6f\n", n, m.tri.size(),
                   seconds);

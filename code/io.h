@@ -33,6 +33,12 @@ PointSet readNode(const std::string& path);
 PointSet readXY(const std::string& path);
 /// readNode if the name ends in ".node", else readXY.
 PointSet readPoints(const std::string& path);
+/// The whole file as bytes. Throws InputError if it cannot be opened or read.
+std::string readFile(const std::string& path);
+/// readNode and readXY on text already in memory; `path` names it in messages (the fuzz
+/// harnesses call these directly).
+PointSet parseNode(const std::string& text, const std::string& path);
+PointSet parseXY(const std::string& text, const std::string& path);
 
 /// Writes `content` to `path` through a temporary file renamed into place, so that a failure
 /// leaves no partial file. Throws std::runtime_error naming the path.
