@@ -43,8 +43,7 @@ inline XY gridPoints(int nx, int ny, double step = 1, double x0 = 0, double y0 =
   return p;
 }
 
-// Points on a circle; with `exact` the points are the integer solutions of x^2 + y^2 = r^2
-// for r = 5^k products (exactly cocircular), otherwise rounded cos/sin (nearly cocircular).
+// n points on a circle of radius r, at rounded cos/sin: nearly (not exactly) cocircular.
 inline XY circlePoints(std::size_t n, double r = 1) {
   XY p;
   for (std::size_t i = 0; i < n; ++i) {
