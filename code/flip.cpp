@@ -172,7 +172,8 @@ void compactFaces(Triangulation& T) {
 }
 
 //! [recoverDelaunay]
-FlipStats recoverDelaunay(Triangulation& T, RecoveryRule rule) {
+FlipStats recoverDelaunay(Triangulation& T, RecoveryRule rule,
+                          std::vector<std::array<const Vertex*, 4>>* log) {
   FlipStats stats;
   std::vector<StackEdge> st;
   for (Face& f : T.faces()) {
@@ -188,7 +189,8 @@ FlipStats recoverDelaunay(Triangulation& T, RecoveryRule rule) {
         // superInCircle reduces to "p_{-i} p_j crosses p_k p_l" (one orientation test).
         return !notesOnly || (isSuper(a) != isSuper(b) && !isSuper(c) && !isSuper(d));
       },
-      [&stats](Vertex* a, Vertex* b, Vertex* c, Vertex* d) {
+      [&stats, log](Vertex* a, Vertex* b, Vertex* c, Vertex* d) {
+        if (log != nullptr) log->push_back({a, b, c, d});
         const int sa = isSuper(a) + isSuper(b);
         if (sa == 2) ++stats.superSuper;
         else if (sa == 0) ++stats.realReal;

@@ -2,7 +2,9 @@
 // recovery of DT(S) from DT(S0 ∪ S) that section 2.2.1 sketches.
 #pragma once
 
+#include <array>
 #include <cstdint>
+#include <vector>
 
 #include "mesh.h"
 
@@ -75,7 +77,9 @@ int superInCircle(const Vertex* a, const Vertex* b, const Vertex* c, const Verte
 /// With NotesOnly the super faces are left in place (extractMesh(T, true) drops them).
 /// Precondition: the edges between points of S are locally Delaunay (true for DT(S0 ∪ S)), so
 /// only the edges of faces touching a super vertex start on the stack.
-FlipStats recoverDelaunay(Triangulation& T, RecoveryRule rule = RecoveryRule::Full);
+/// If `log` is given, each flip is appended as {a, b, c, d}: edge a b replaced by c d.
+FlipStats recoverDelaunay(Triangulation& T, RecoveryRule rule = RecoveryRule::Full,
+                          std::vector<std::array<const Vertex*, 4>>* log = nullptr);
 
 /// Removes the deleted faces from T.faces() (moving live faces down and re-linking them), so
 /// that checkTriangulation, which rejects deleted faces, applies. Invalidates Face pointers.

@@ -1,0 +1,214 @@
+// Section 2.2.2 (TODO in the notes): inserting a point outside the current convex hull.
+//
+// Writes into --out (default build/output/ch2):
+//   fig_outside_hull.{png,svg}  before: the hull edges the new point sees and the Delaunay
+//                               cavity (ghost faces of the visible edges + finite faces);
+//                               after: the new triangles; third panel: a point on the line of
+//                               a hull edge (that edge is not seen: no flat triangle)
+//   table_outside_hull.*        how often a point falls outside the current hull, and what
+//                               its insertion costs, by family and insertion order
+#include <algorithm>
+#include <random>
+#include <set>
+#include <sstream>
+
+#include "check.h"
+#include "common.h"
+#include "hilbert.h"
+#include "hull.h"
+#include "predicates.h"
+#include "triangulate.h"
+
+namespace {
+
+using XY = std::vector<double>;
+
+std::string triData(const std::vector<const dt::Face*>& F) {
+  std::ostringstream s;
+  s.precision(17);
+  for (const dt::Face* f : F) {
+    for (int k = 0; k <= 3; ++k) s << f->V[k % 3]->x << " " << f->V[k % 3]->y << "\n";
+    s << "\n";
+  }
+  return s.str();
+}
+
+std::string polygon(int& id, const dt::Face* f, const char* color) {
+  std::ostringstream s;
+  s.precision(17);
+  s << "set object " << ++id << " polygon from ";
+  for (int i = 0; i <= 3; ++i) s << (i ? " to " : "") << f->V[i % 3]->x << "," << f->V[i % 3]->y;
+  s << " fc rgb \"" << color << "\" fs solid 1.0 noborder behind\n";
+  return s.str();
+}
+
+std::string segment(const dt::Vertex* a, const dt::Vertex* b, const char* color, double lw) {
+  std::ostringstream s;
+  s.precision(17);
+  s << "set arrow from " << a->x << "," << a->y << " to " << b->x << "," << b->y
+    << " nohead lc rgb \"" << color << "\" lw " << lw << " front\n";
+  return s.str();
+}
+
+// One panel pair: DT of `base`, then q inserted. Writes <stem>_{before,after}.{gp,dat}.
+void panels(const ch::Options& o, const std::string& stem, const XY& base, double qx, double qy,
+            const std::string& note) {
+  dt::Triangulation T;
+  std::vector<dt::Vertex*> S;
+  for (std::size_t i = 0; i < base.size() / 2; ++i)
+    S.push_back(T.addVertex(base[2 * i], base[2 * i + 1], long(i)));
+  dt::delaunayTrglHull(T, S, dt::StartRule::LastCavity);
+  dt::Vertex* q = T.addVertex(qx, qy, long(S.size()));
+  // Before: the visible hull edges (red) and the finite faces of the cavity (pink).
+  const auto vis = dt::visibleHullEdges(T, q);
+  std::string obj;
+  int id = 0;
+  std::size_t cavityFinite = 0;
+  for (const dt::Face* f : T.finiteFaces())
+    if (f->inCircle(q)) obj += polygon(id, f, "#f4b6c2"), ++cavityFinite;
+  for (const auto& h : dt::hullEdges(T)) obj += segment(h.a, h.b, "#333333", 2);
+  for (const auto& e : vis) obj += segment(e.a, e.b, "#c0392b", 4);
+  for (const auto& e : vis) {  // the ghost faces in conflict: the rays from the edge ends away
+    obj += "set arrow from " + ch::fmt("%.17g,%.17g", e.a->x, e.a->y) + " to " +
+           ch::fmt("%.17g,%.17g", q->x, q->y) + " nohead lc rgb \"#c0392b\" lw 1 dt 2 front\n";
+    obj += "set arrow from " + ch::fmt("%.17g,%.17g", e.b->x, e.b->y) + " to " +
+           ch::fmt("%.17g,%.17g", q->x, q->y) + " nohead lc rgb \"#c0392b\" lw 1 dt 2 front\n";
+  }
+  auto plural = [](std::size_t k, const char* w) {
+    return std::to_string(k) + " " + w + (k == 1 ? "" : "s");
+  };
+  obj += "set title \"" + note + plural(vis.size(), "visible hull edge") + " (red); cavity: " +
+         plural(cavityFinite, "triangle") + " (pink) + " + plural(vis.size(), "ghost face") +
+         "\"\n";
+  ch::writeOut(o, stem + "_before.gp", obj);
+  ch::writeOut(o, stem + "_before.dat", triData(T.finiteFaces()));
+  // After: insertVertex (the Delaunay kernel with ghost faces), new triangles in blue.
+  dt::InsertionStats st;
+  dt::InsertionScratch scratch;
+  dt::insertVertex(T, dt::anyGhost(T), q, st, scratch);
+  const dt::CheckReport r = dt::checkTriangulation(T);
+  if (!r.ok) throw std::logic_error("outside-hull figure: " + r.error);
+  obj.clear();
+  id = 0;
+  std::size_t fresh = 0;
+  for (const dt::Face* f : T.finiteFaces())
+    if (f->V[0] == q || f->V[1] == q || f->V[2] == q) obj += polygon(id, f, "#b9d7f2"), ++fresh;
+  for (const auto& h : dt::hullEdges(T)) obj += segment(h.a, h.b, "#333333", 2);
+  obj += "set title \"after: " + plural(fresh, "new triangle") + " (blue); the hull is " +
+         "wrapped round p\"\n";
+  ch::writeOut(o, stem + "_after.gp", obj);
+  ch::writeOut(o, stem + "_after.dat", triData(T.finiteFaces()));
+  std::ostringstream pts;
+  for (const dt::Vertex* v : S) pts << v->x << " " << v->y << "\n";
+  ch::writeOut(o, stem + "_points.dat", pts.str());
+  ch::writeOut(o, stem + "_q.dat", ch::fmt("%.17g %.17g\n", q->x, q->y));
+  std::cout << stem << ": " << vis.size() << " visible edges, " << cavityFinite
+            << " finite cavity faces, " << fresh << " new triangles, DT checked exactly\n";
+}
+
+void figure(const ch::Options& o) {
+  std::mt19937_64 rng(222);
+  std::uniform_real_distribution<double> u(0, 1);
+  XY base;
+  for (int i = 0; i < 14; ++i) {
+    const double r = std::sqrt(u(rng)), t = 2 * M_PI * u(rng);
+    // Integer coordinates, so that the point on a supporting line below is exactly on it.
+    base.push_back(std::round(40 * r * std::cos(t)));
+    base.push_back(std::round(40 * r * std::sin(t)));
+  }
+  dt::Triangulation T;
+  std::vector<dt::Vertex*> S;
+  for (std::size_t i = 0; i < base.size() / 2; ++i)
+    S.push_back(T.addVertex(base[2 * i], base[2 * i + 1], long(i)));
+  dt::delaunayTrglHull(T, S, dt::StartRule::LastCavity);
+  const auto H = dt::hullEdges(T);
+  // The longest hull edge.
+  std::size_t best = 0;
+  double len = 0;
+  for (std::size_t i = 0; i < H.size(); ++i) {
+    const double l = std::hypot(H[i].b->x - H[i].a->x, H[i].b->y - H[i].a->y);
+    if (l > len) len = l, best = i;
+  }
+  const auto& e = H[best];
+  // Just outside the middle of the longest hull edge: a few finite faces join the cavity.
+  const double mx = 0.5 * (e.a->x + e.b->x), my = 0.5 * (e.a->y + e.b->y);
+  panels(o, "outhull", base, mx + 0.12 * (e.b->y - e.a->y), my - 0.12 * (e.b->x - e.a->x), "");
+  // Half-integers: q = b + (b - a) / 2 is computed exactly, so it is exactly on the line.
+  const double qx = e.b->x + 0.5 * (e.b->x - e.a->x), qy = e.b->y + 0.5 * (e.b->y - e.a->y);
+  dt::Vertex q(qx, qy);
+  std::cout << "supporting-line point: orient = " << dt::orientationTest(e.a, e.b, &q)
+            << " (0: exactly on the line of the hull edge)\n";
+  panels(o, "outline", base, qx, qy, "p on the line of a hull edge, which it does not see:\\n");
+  ch::runGnuplot(o, "fig_outside_hull.gp");
+}
+
+void table(const ch::Options& o) {
+  const std::size_t n = o.maxN ? std::size_t(o.maxN) : (o.quick ? 5000 : 50000);
+  ch::Table t;
+  t.caption = "Insertions outside the current hull (2.2.2), n = " + std::to_string(n) +
+              " points: share of such insertions, hull edges seen, cavity sizes";
+  t.header = {"family", "order", "outside the hull", "mean visible edges (outside)",
+              "mean cavity, outside (ghosts incl.)", "mean cavity, all", "DT(S) exact"};
+  for (const std::string fam : {"uniform square", "uniform disk", "circle"})
+    for (const std::string order : {"random", "Hilbert", "lexicographic"}) {
+      std::mt19937_64 rng(7);
+      std::uniform_real_distribution<double> u(0, 1);
+      const std::size_t m = fam == "circle" ? std::min<std::size_t>(n, 3000) : n;
+      XY p;
+      for (std::size_t i = 0; i < m; ++i) {
+        if (fam == "uniform square") {
+          p.push_back(u(rng)), p.push_back(u(rng));
+        } else if (fam == "uniform disk") {
+          const double r = std::sqrt(u(rng)), a = 2 * M_PI * u(rng);
+          p.push_back(r * std::cos(a)), p.push_back(r * std::sin(a));
+        } else {
+          const double a = 2 * M_PI * u(rng);
+          p.push_back(std::cos(a)), p.push_back(std::sin(a));
+        }
+      }
+      std::vector<std::size_t> idx(m);
+      for (std::size_t i = 0; i < m; ++i) idx[i] = i;
+      if (order == "Hilbert") idx = dt::hilbertOrder(p);
+      if (order == "lexicographic")
+        std::sort(idx.begin(), idx.end(), [&](std::size_t a, std::size_t b) {
+          return p[2 * a] < p[2 * b] || (p[2 * a] == p[2 * b] && p[2 * a + 1] < p[2 * b + 1]);
+        });
+      dt::Triangulation T;
+      std::vector<dt::Vertex*> S;
+      for (std::size_t i : idx) S.push_back(T.addVertex(p[2 * i], p[2 * i + 1], long(i)));
+      dt::delaunayTrglHull(T, {S[0], S[1], S[2]}, dt::StartRule::LastCavity);
+      dt::InsertionStats st;
+      dt::InsertionScratch scratch;
+      std::uint64_t outside = 0, visible = 0, cavOut = 0, inserted = 0;
+      dt::Face* last = dt::anyGhost(T);
+      for (std::size_t i = 3; i < S.size(); ++i) {
+        // Outside iff some ghost face is in conflict; count its visible edges by walking the
+        // ghost ring (O(n_h) per point: fine for these sizes; the kernel itself never does it).
+        const auto vis = dt::visibleHullEdges(T, S[i]);
+        const std::uint64_t before = st.cavityFaces;
+        dt::Face* b = dt::insertVertex(T, last, S[i], st, scratch);
+        if (b) last = b, ++inserted;
+        if (!vis.empty()) ++outside, visible += vis.size(), cavOut += st.cavityFaces - before;
+      }
+      const dt::CheckReport r = dt::checkTriangulation(T);
+      t.add({fam, order, ch::fmt("%.2f%%", 100.0 * double(outside) / double(inserted)),
+             ch::fmt("%.2f", outside ? double(visible) / double(outside) : 0.0),
+             ch::fmt("%.2f", outside ? double(cavOut) / double(outside) : 0.0),
+             ch::fmt("%.2f", st.meanCavity()), r.ok && r.nVertices == m ? "yes" : "NO"});
+    }
+  t.emit(o, "table_outside_hull");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const ch::Options o = ch::parseOptions(argc, argv);
+  try {
+    figure(o);
+    table(o);
+  } catch (const std::exception& e) {
+    std::cerr << "sec2_2_2_outside_hull: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}

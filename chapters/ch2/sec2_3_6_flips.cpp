@@ -1,0 +1,468 @@
+// Section 2.3.6 (TODO in the notes): the edge flip, and DT(S) recovered from DT(S0 ∪ S) by flips;
+// also the flip claim of 2.3.3 (degrees change by -1, -1, +1, +1).
+//
+// Writes into --out (default build/output/ch2):
+//   fig_flip.{png,svg}              an edge flip, before and after, with the four adjacent triangles
+//   fig_recovery_frames.{png,svg}   the recovery on a Figure-2.6-like configuration, frame by frame
+//   table_flip_degrees.*            degrees of the four vertices over many random flips (2.3.3)
+//   table_recovery_methods.*        the two ways to DT(S) on the same inputs: time and flips
+//   table_recovery_sizes.*          super-triangle size vs. naive removal, 2.2.1's flips, full rule
+#include <algorithm>
+#include <chrono>
+#include <map>
+#include <random>
+#include <set>
+#include <sstream>
+
+#include "check.h"
+#include "common.h"
+#include "flip.h"
+#include "hilbert.h"
+#include "hull.h"
+#include "predicates.h"
+#include "triangulate.h"
+
+namespace {
+
+using XY = std::vector<double>;
+
+std::vector<dt::Vertex*> addPoints(dt::Triangulation& T, const XY& p) {
+  std::vector<dt::Vertex*> S;
+  for (std::size_t i = 0; i < p.size() / 2; ++i)
+    S.push_back(T.addVertex(p[2 * i], p[2 * i + 1], long(i)));
+  return S;
+}
+
+void bbox(const XY& p, double& x0, double& y0, double& x1, double& y1) {
+  x0 = x1 = p[0], y0 = y1 = p[1];
+  for (std::size_t i = 0; i < p.size() / 2; ++i) {
+    x0 = std::min(x0, p[2 * i]), x1 = std::max(x1, p[2 * i]);
+    y0 = std::min(y0, p[2 * i + 1]), y1 = std::max(y1, p[2 * i + 1]);
+  }
+}
+
+void superDT(dt::Triangulation& T, const XY& p, double factor, dt::InsertionStats* st = nullptr) {
+  double x0, y0, x1, y1;
+  bbox(p, x0, y0, x1, y1);
+  dt::initSuperTriangles(T, x0, y0, x1, y1, factor);
+  dt::delaunayTrgl(T, addPoints(T, p), dt::StartRule::LastCavity, st);
+}
+
+bool meshIsDT(const dt::Triangulation& T, std::size_t n) {
+  const dt::PlainMesh m = dt::extractMesh(T, true);
+  return m.ids.size() == n && dt::checkDelaunay(m.xy, m.tri).ok;
+}
+
+// gnuplot helpers: triangles as closed polylines, filled polygons and labels as "set object".
+std::string triData(const std::vector<const dt::Face*>& F) {
+  std::ostringstream s;
+  s.precision(17);
+  for (const dt::Face* f : F) {
+    for (int k = 0; k <= 3; ++k) s << f->V[k % 3]->x << " " << f->V[k % 3]->y << "\n";
+    s << "\n";
+  }
+  return s.str();
+}
+std::string polygon(int& id, const std::vector<const dt::Vertex*>& P, const char* color) {
+  std::ostringstream s;
+  s.precision(17);
+  s << "set object " << ++id << " polygon from ";
+  for (std::size_t i = 0; i <= P.size(); ++i)
+    s << (i ? " to " : "") << P[i % P.size()]->x << "," << P[i % P.size()]->y;
+  s << " fc rgb \"" << color << "\" fs solid 1.0 noborder behind\n";
+  return s.str();
+}
+std::string segment(const dt::Vertex* a, const dt::Vertex* b, const char* color, double lw,
+                    const char* dash = "1") {
+  std::ostringstream s;
+  s.precision(17);
+  s << "set arrow from " << a->x << "," << a->y << " to " << b->x << "," << b->y
+    << " nohead lc rgb \"" << color << "\" lw " << lw << " dt " << dash << " front\n";
+  return s.str();
+}
+std::string label(const dt::Vertex* v, const std::string& text, double dx, double dy) {
+  std::ostringstream s;
+  s.precision(17);
+  s << "set label \"" << text << "\" at " << v->x + dx << "," << v->y + dy
+    << " center front font \",13\"\n";
+  return s.str();
+}
+
+std::map<const dt::Vertex*, int> degrees(const dt::Triangulation& T) {
+  std::map<const dt::Vertex*, int> d;
+  for (const dt::Face* f : T.finiteFaces())
+    for (const dt::Vertex* v : f->V) ++d[v];
+  return d;
+}
+
+// ---- Figure: one flip, before and after, with the four adjacent triangles --------------------
+void figureFlip(const ch::Options& o) {
+  dt::Triangulation T;
+  // A convex quadrilateral a d b c around the edge a b, four outer neighbours, and a ring.
+  const XY p = {0, 0, 4, 0.4, 2.2, 2.2, 1.8, -1.6,        // a b c d
+                -1.6, 1.6, 5.2, 2.4, 0.2, -3.2, 4.4, -2.6,  // beyond c a, b c, a d, d b
+                -3, -1, 6.5, -0.5, 1.5, 4, 2.5, -4.5};
+  auto S = addPoints(T, p);
+  dt::delaunayTrglHull(T, S, dt::StartRule::LastCavity);
+  // The face with edge a b (either direction). If the Delaunay triangulation chose the other
+  // diagonal c d, flip it first: the figure needs a valid triangulation, not a Delaunay one.
+  auto find = [&](const dt::Vertex* u, const dt::Vertex* v, int& idx) -> dt::Face* {
+    for (dt::Face& g : T.faces())
+      for (int i = 0; i < 3; ++i)
+        if (!g.isGhost() && ((g.V[i] == u && g.V[(i + 1) % 3] == v) ||
+                             (g.V[i] == v && g.V[(i + 1) % 3] == u))) {
+          idx = i;
+          return &g;
+        }
+    return nullptr;
+  };
+  int k = -1;
+  dt::Face* f = find(S[0], S[1], k);
+  if (f == nullptr) {
+    dt::Face* h = find(S[2], S[3], k);
+    if (h == nullptr || !dt::flipEdge(h, k)) throw std::logic_error("flip figure: no quad a d b c");
+    f = find(S[0], S[1], k);
+  }
+  if (f == nullptr || !dt::isFlippable(f, k)) throw std::logic_error("flip figure: no edge a b");
+  const char* names[] = {"a", "b", "c", "d"};
+  auto draw = [&](const std::string& stem, const dt::Vertex* e0, const dt::Vertex* e1,
+                  const std::map<const dt::Vertex*, int>& d0,
+                  const std::map<const dt::Vertex*, int>& d1, bool after) {
+    std::string obj;
+    int id = 0;
+    // The two faces of the flip, and the four faces around them.
+    const dt::Face* g = f->F[k];
+    for (const dt::Face* h : {static_cast<const dt::Face*>(f), g}) {
+      obj += polygon(id, {h->V[0], h->V[1], h->V[2]}, "#f4b6c2");
+      for (int j = 0; j < 3; ++j) {
+        const dt::Face* n = h->F[j];
+        if (n != nullptr && n != f && n != g && !n->isGhost())
+          obj += polygon(id, {n->V[0], n->V[1], n->V[2]}, "#cfe3f7");
+      }
+    }
+    obj += segment(e0, e1, after ? "#1f5fbf" : "#c0392b", 3.5);
+    for (int i = 0; i < 4; ++i) {
+      const dt::Vertex* v = S[std::size_t(i)];
+      const int before = d0.at(v), now = d1.at(v);
+      std::string t = std::string(names[i]) + ": " + std::to_string(before);
+      if (after) t += " → " + std::to_string(now) + " (" + (now > before ? "+" : "") +
+                      std::to_string(now - before) + ")";
+      const double dy = (i == 3) ? -0.45 : 0.45;
+      obj += label(v, t, 0, dy);
+    }
+    ch::writeOut(o, stem + ".gp", obj);
+    ch::writeOut(o, stem + "_tri.dat", triData(T.finiteFaces()));
+  };
+  const auto d0 = degrees(T);
+  draw("flip_before", S[0], S[1], d0, d0, false);
+  if (!dt::flipEdge(f, k)) throw std::logic_error("flip figure: flip refused");
+  const auto d1 = degrees(T);
+  // after the flip f = (c, a, d): the new edge is c d
+  draw("flip_after", S[2], S[3], d0, d1, true);
+  std::cout << "flip figure: degrees a " << d0.at(S[0]) << "->" << d1.at(S[0]) << ", b "
+            << d0.at(S[1]) << "->" << d1.at(S[1]) << ", c " << d0.at(S[2]) << "->"
+            << d1.at(S[2]) << ", d " << d0.at(S[3]) << "->" << d1.at(S[3]) << "\n";
+  ch::runGnuplot(o, "fig_flip.gp");
+}
+
+// ---- 2.3.3: degrees over many random flips ------------------------------------------------------
+void tableDegrees(const ch::Options& o) {
+  dt::Triangulation T;
+  std::mt19937_64 rng(233);
+  std::uniform_real_distribution<double> u(0, 1);
+  XY p;
+  for (int i = 0; i < 2000; ++i) p.push_back(u(rng)), p.push_back(u(rng));
+  dt::delaunayTrglHull(T, addPoints(T, p), dt::StartRule::LastCavity);
+  std::vector<dt::Face*> live;
+  for (dt::Face& f : T.faces())
+    if (!f.isGhost()) live.push_back(&f);
+  // Degrees kept up to date by the claim itself would be circular: recount around the four
+  // vertices by walking all faces is too slow, so count the faces around each of the 4 vertices
+  // from a full degree map refreshed every flip (2000 points: cheap enough for 2000 flips).
+  const int trials = o.quick ? 400 : 3000;
+  long tried = 0, refused = 0, ok = 0, bad = 0;
+  std::map<const dt::Vertex*, int> deg = degrees(T);
+  for (int t = 0; t < trials; ++t) {
+    dt::Face* f = live[rng() % live.size()];
+    const int k = int(rng() % 3);
+    ++tried;
+    if (!dt::isFlippable(f, k)) {
+      ++refused;
+      continue;
+    }
+    const dt::Vertex* q[4] = {f->V[k], f->V[(k + 1) % 3], f->V[(k + 2) % 3],
+                              f->F[k]->V[(dt::neighbourIndex(f->F[k], f) + 2) % 3]};
+    dt::flipEdge(f, k);
+    const auto now = degrees(T);
+    int changed = 0;
+    for (const auto& [v, d] : now) changed += (deg[v] != d);
+    const bool good = now.at(q[0]) == deg[q[0]] - 1 && now.at(q[1]) == deg[q[1]] - 1 &&
+                      now.at(q[2]) == deg[q[2]] + 1 && now.at(q[3]) == deg[q[3]] + 1 &&
+                      changed == 4;
+    (good ? ok : bad) += 1;
+    deg = now;
+  }
+  ch::Table t;
+  t.caption = "Table (2.3.3): random edge flips on DT of 2000 random points; degree = number of "
+              "adjacent triangles";
+  t.header = {"edges drawn", "not flippable (hull or reflex)", "flipped",
+              "degrees -1,-1,+1,+1 and no other change", "other outcomes"};
+  t.add({std::to_string(tried), std::to_string(refused), std::to_string(ok + bad),
+         std::to_string(ok), std::to_string(bad)});
+  t.emit(o, "table_flip_degrees");
+}
+
+// ---- Figure: recovery frames on a Figure-2.6-like configuration ----------------------------------
+void figureRecovery(const ch::Options& o) {
+  // Nine points in a flat box (flat hull triangles, as in Figure 2.6) and super-triangles only
+  // 1.25 times the box: search fixed seeds for a case where the naive removal fails and the
+  // recovery takes a few flips (so that the frames fit one figure).
+  const double factor = 1.25;
+  XY p;
+  std::vector<std::array<const dt::Vertex*, 4>> log;
+  unsigned seed = 0;
+  for (unsigned s = 1; s < 5000; ++s) {
+    std::mt19937_64 rng(s);
+    std::uniform_real_distribution<double> ux(0, 10), uy(0, 4);
+    XY q;
+    for (int i = 0; i < 9; ++i) q.push_back(std::round(ux(rng) * 10) / 10), q.push_back(std::round(uy(rng) * 10) / 10);
+    dt::Triangulation T;
+    superDT(T, q, factor);
+    if (meshIsDT(T, 9)) continue;  // naive removal works: not a Figure 2.6 case
+    std::vector<std::array<const dt::Vertex*, 4>> lg;
+    dt::recoverDelaunay(T, dt::RecoveryRule::Full, &lg);
+    if (lg.size() >= 3 && lg.size() <= 5) {
+      p = q, seed = s;
+      break;
+    }
+  }
+  if (p.empty()) throw std::logic_error("recovery figure: no configuration found");
+  // Replay: frame 0 = DT(S0 ∪ S), then one frame per flip, then DT(S).
+  dt::Triangulation R;
+  superDT(R, p, factor);
+  dt::Triangulation Rlog;
+  superDT(Rlog, p, factor);
+  const dt::FlipStats st = dt::recoverDelaunay(Rlog, dt::RecoveryRule::Full, &log);
+  auto byId = [&](long id) -> dt::Vertex* {
+    for (dt::Vertex& v : R.vertices())
+      if (v.id == id) return &v;
+    throw std::logic_error("recovery figure: vertex not found");
+  };
+  // conv(S), shaded as in Figure 2.6's caption.
+  dt::Triangulation H;
+  dt::delaunayTrglHull(H, addPoints(H, p), dt::StartRule::LastCavity);
+  std::vector<const dt::Vertex*> hull;
+  for (dt::Vertex* v : dt::convexHull(H)) hull.push_back(byId(v->id));
+  std::vector<std::string> titles;
+  auto frame = [&](int k, const std::string& title, const dt::Vertex* e0, const dt::Vertex* e1,
+                   const dt::Vertex* n0, const dt::Vertex* n1, bool dropSuper) {
+    std::string obj;
+    int id = 0;
+    // conv(S) in pink, the triangles of S in grey on top: pink shows what they miss.
+    obj += polygon(id, hull, "#f2a7a7");
+    for (const dt::Face* f : R.finiteFaces())
+      if (f->V[0]->id >= 0 && f->V[1]->id >= 0 && f->V[2]->id >= 0)
+        obj += polygon(id, {f->V[0], f->V[1], f->V[2]}, "#dddddd");
+    if (e0) obj += segment(e0, e1, "#c0392b", 2.5, "2");
+    if (n0) obj += segment(n0, n1, "#1f5fbf", 3);
+    obj += "set title \"" + title + "\"\n";
+    std::vector<const dt::Face*> F;
+    for (const dt::Face* f : R.finiteFaces())
+      if (!dropSuper || (f->V[0]->id >= 0 && f->V[1]->id >= 0 && f->V[2]->id >= 0)) F.push_back(f);
+    ch::writeOut(o, "rec_frame_" + std::to_string(k) + ".gp", obj);
+    ch::writeOut(o, "rec_frame_" + std::to_string(k) + ".dat", triData(F));
+  };
+  frame(0, "DT(S_0 ∪ S): pink = conv(S) not covered", nullptr, nullptr, nullptr, nullptr, false);
+  int k = 1;
+  for (const auto& e : log) {
+    const dt::Vertex *a = byId(e[0]->id), *b = byId(e[1]->id);
+    dt::Face* f = nullptr;
+    int idx = -1;
+    for (dt::Face& g : R.faces())
+      for (int i = 0; i < 3 && !f; ++i)
+        if (g.V[i] == a && g.V[(i + 1) % 3] == b) f = &g, idx = i;
+    if (f == nullptr || !dt::flipEdge(f, idx)) throw std::logic_error("recovery replay failed");
+    auto nm = [](const dt::Vertex* v) {
+      return v->id < 0 ? "p_{" + std::to_string(v->id) + "}" : "p_{" + std::to_string(v->id + 1) + "}";
+    };
+    const bool notesKind = (e[0]->id < 0) != (e[1]->id < 0) && e[2]->id >= 0 && e[3]->id >= 0;
+    frame(k, "flip " + std::to_string(k) + ": " + nm(a) + nm(b) + " → " + nm(e[2]) + nm(e[3]) +
+                 (notesKind ? " (2.2.1's rule)"
+                  : ((e[0]->id < 0) == (e[1]->id < 0) ? " (other)" : " (super opposite)")), a,
+          b, byId(e[2]->id), byId(e[3]->id), false);
+    ++k;
+  }
+  frame(k, "super faces removed: DT(S)", nullptr, nullptr, nullptr, nullptr, true);
+  ++k;
+  double x0, y0, x1, y1;
+  bbox(p, x0, y0, x1, y1);
+  const double cx = 0.5 * (x0 + x1), cy = 0.5 * (y0 + y1);
+  const double R2 = factor * 0.5 * std::max(x1 - x0, y1 - y0) * 1.08;
+  std::ostringstream g;
+  g << "nframes = " << k << "\nxlo = " << cx - R2 << "; xhi = " << cx + R2 << "; ylo = "
+    << cy - R2 << "; yhi = " << cy + R2 << "\n";
+  ch::writeOut(o, "rec_frames.gp", g.str());
+  std::ostringstream pts;
+  for (std::size_t i = 0; i < p.size() / 2; ++i) pts << p[2 * i] << " " << p[2 * i + 1] << "\n";
+  ch::writeOut(o, "rec_points.dat", pts.str());
+  std::cout << "recovery figure: seed " << seed << ", super factor " << factor << ", "
+            << st.flips << " flips (" << st.notesFlips << " of 2.2.1's kind, "
+            << st.superOpposite << " with a super opposite vertex, " << st.superSuper
+            << " super-super, " << st.realReal << " between points of S)\n";
+  ch::runGnuplot(o, "fig_recovery_frames.gp");
+}
+
+// ---- Tables: the two ways to DT(S) ---------------------------------------------------------------
+XY family(const std::string& name, std::size_t n, unsigned seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0, 1);
+  XY p;
+  if (name == "uniform square") {
+    for (std::size_t i = 0; i < n; ++i) p.push_back(u(rng)), p.push_back(u(rng));
+  } else if (name == "grid") {
+    const std::size_t m = std::size_t(std::sqrt(double(n)));
+    for (std::size_t i = 0; i < m; ++i)
+      for (std::size_t j = 0; j < m; ++j) p.push_back(double(i)), p.push_back(double(j));
+  } else if (name == "circle") {
+    for (std::size_t i = 0; i < n; ++i) {
+      const double t = 2 * M_PI * double(i) / double(n);
+      p.push_back(std::cos(t)), p.push_back(std::sin(t));
+    }
+  } else if (name == "bent line") {  // flat parabolic arc + a few points below it
+    for (std::size_t i = 0; i < n; ++i) {
+      const double t = u(rng);
+      p.push_back(t), p.push_back(1e-4 * t * (1 - t));
+    }
+  } else {  // "huge circle arc": a short arc of a circle of radius 1e6, with inner points
+    const double R = 1e6;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double t = 1e-3 * (u(rng) - 0.5);
+      p.push_back(R * std::sin(t)), p.push_back(R * std::cos(t) - R - (i % 4 == 0 ? u(rng) * 30 : 0));
+    }
+  }
+  return p;
+}
+
+XY hilbertSorted(const XY& p) {
+  const auto ord = dt::hilbertOrder(p);
+  XY q;
+  for (std::size_t i : ord) q.push_back(p[2 * i]), q.push_back(p[2 * i + 1]);
+  return q;
+}
+
+void tableMethods(const ch::Options& o) {
+  const std::size_t maxN = o.maxN ? std::size_t(o.maxN) : (o.quick ? 20000 : 200000);
+  const std::vector<std::string> fams = {"uniform square", "grid", "circle", "bent line",
+                                         "huge circle arc"};
+  ch::Table t;
+  t.caption = "Two ways to DT(S) on the same points (Hilbert order, walk from the last cavity): "
+              "time ratios to the hull method measured in the same run, and flips";
+  t.header = {"family", "n", "n_h", "hull method (s)", "super + recovery / hull",
+              "of which recovery", "recovery flips", "flips / n_h", "2.2.1-kind flips",
+              "naive removal is DT(S)", "2.2.1's flips alone give DT(S)", "both exact",
+              "Lawson from sweep / hull", "Lawson flips / n"};
+  std::vector<std::size_t> sizes;
+  for (std::size_t n = 1000; n <= maxN; n *= 10) sizes.push_back(n);
+  ch::Progress prog("2.3.6 methods", fams.size() * sizes.size());
+  std::uint64_t done = 0;
+  for (const auto& fam : fams)
+    for (std::size_t n : sizes) {
+      // Points on a flat arc make every method quadratic (cavities and flips of size O(n)).
+      if (fam == "bent line" && n > (o.quick ? 1000u : 3000u)) continue;
+      const XY p = hilbertSorted(family(fam, n, 36));
+      const std::size_t np = p.size() / 2;
+      using clk = std::chrono::steady_clock;
+      // Hull method (median of 3 runs for small n keeps the ratios steady).
+      const int reps = n <= 10000 ? 3 : 1;
+      std::vector<double> th, ts, tr, tl;
+      std::size_t nh = 0;
+      bool exact = true;
+      dt::FlipStats fs, ls;
+      for (int r = 0; r < reps; ++r) {
+        dt::Triangulation H;
+        auto t0 = clk::now();
+        dt::delaunayTrglHull(H, addPoints(H, p), dt::StartRule::LastCavity);
+        th.push_back(ch::secondsSince(t0));
+        dt::Triangulation T;
+        t0 = clk::now();
+        superDT(T, p, 10.0);
+        const auto t1 = clk::now();
+        fs = dt::recoverDelaunay(T);
+        tr.push_back(ch::secondsSince(t1));
+        ts.push_back(ch::secondsSince(t0));
+        dt::Triangulation L;
+        t0 = clk::now();
+        dt::sweepTriangulation(L, addPoints(L, p));
+        ls = dt::lawsonFlip(L);
+        tl.push_back(ch::secondsSince(t0));
+        if (r == 0) {
+          const auto cH = dt::checkTriangulation(H), cT = dt::checkTriangulation(T),
+                     cL = dt::checkTriangulation(L);
+          exact = cH.ok && cT.ok && cL.ok && cH.nVertices == np && cT.nVertices == np;
+          nh = cH.nHull;
+        }
+      }
+      auto med = [](std::vector<double> v) {
+        std::sort(v.begin(), v.end());
+        return v[v.size() / 2];
+      };
+      const double h = med(th), s = med(ts), rc = med(tr), l = med(tl);
+      dt::Triangulation N;
+      superDT(N, p, 10.0);
+      const bool naive = meshIsDT(N, np);
+      dt::recoverDelaunay(N, dt::RecoveryRule::NotesOnly);
+      const bool notes = meshIsDT(N, np);
+      t.add({fam, std::to_string(np), std::to_string(nh), ch::fmt("%.4f", h),
+             ch::fmt("%.2f", s / h), ch::fmt("%.3f", rc / h), std::to_string(fs.flips),
+             ch::fmt("%.2f", double(fs.flips) / double(nh)), std::to_string(fs.notesFlips),
+             naive ? "yes" : "no", notes ? "yes" : "no", exact ? "yes" : "NO",
+             ch::fmt("%.2f", l / h), ch::fmt("%.2f", double(ls.flips) / double(np))});
+      prog.update(++done);
+    }
+  t.emit(o, "table_recovery_methods");
+}
+
+void tableSizes(const ch::Options& o) {
+  ch::Table t;
+  t.caption = "Super-triangle size (factor x the bounding box) vs. what recovers DT(S); "
+              "n = 2000 points per family";
+  t.header = {"family", "factor", "naive removal is DT(S)", "2.2.1's flips alone",
+              "full rule: flips", "of 2.2.1's kind", "super opposite", "super-super",
+              "S-S", "full rule exact"};
+  for (const std::string fam : {"uniform square", "bent line", "huge circle arc", "circle"})
+    for (double factor : {1.001, 1.1, 2.0, 10.0, 1e3, 1e6}) {
+      const XY p = hilbertSorted(family(fam, 2000, 37));
+      const std::size_t np = p.size() / 2;
+      dt::Triangulation N;
+      superDT(N, p, factor);
+      const bool naive = meshIsDT(N, np);
+      dt::recoverDelaunay(N, dt::RecoveryRule::NotesOnly);
+      const bool notes = meshIsDT(N, np);
+      dt::Triangulation T;
+      superDT(T, p, factor);
+      const dt::FlipStats fs = dt::recoverDelaunay(T);
+      const auto c = dt::checkTriangulation(T);
+      t.add({fam, ch::fmt("%g", factor), naive ? "yes" : "no", notes ? "yes" : "no",
+             std::to_string(fs.flips), std::to_string(fs.notesFlips),
+             std::to_string(fs.superOpposite), std::to_string(fs.superSuper),
+             std::to_string(fs.realReal), c.ok && c.nVertices == np ? "yes" : "NO"});
+    }
+  t.emit(o, "table_recovery_sizes");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const ch::Options o = ch::parseOptions(argc, argv);
+  try {
+    figureFlip(o);
+    tableDegrees(o);
+    figureRecovery(o);
+    tableSizes(o);
+    tableMethods(o);
+  } catch (const std::exception& e) {
+    std::cerr << "sec2_3_6_flips: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}
