@@ -19,19 +19,59 @@ constexpr double kU = 0x1p-53;  // unit roundoff of binary64
 
 // ---------------------------------------------------------------------------------------------
 // The robust predicates of predicates.cpp, inlined and without the global counters. The filters
-// and their error bounds are exactly those derived there (5u |L|+|R| for the orientation, 12u
-// times the permanent for incircle, with the same underflow guards); only the exact fallback is
-// a call.
+// and their error bounds are exactly those derived there (5u (|L|+|R|) for the orientation, 12u
+// times the permanent for incircle, with the same underflow guards). Between the filter and the
+// GMP fallback sits one more exact stage, for the degenerate tests that grids and other
+// "round" data produce in bulk:
+//
+// Small-integer stage. Suppose every difference d_i is computed exactly (checked with Knuth's
+// two-sum: its rounding error is zero) and is an integer multiple of a power of two h, with
+// M = max |d_i| <= 2^12 h. Then in incircle every quantity the filter computes is an integer
+// multiple of h^k (k its degree) of magnitude below 2^53 h^k: products |d_i d_j| <= M^2,
+// lifts and minors <= 2 M^2, lift x minor <= 4 M^4, partial sums <= 12 M^4 < 2^52 h^4. Each
+// is representable (also as a subnormal, as long as h^4 >= 2^-1074), so every rounding is
+// exact and the filter's `det` IS the determinant. For orient2d the same holds with degree 2
+// and M <= 2^25 h (2 M^2 < 2^52 h^2). We take h = 2^(e-12) (resp. 2^(e-25)) with M < 2^e,
+// and stay far from underflow and overflow: 2^-260 <= h <= 2^200.
 //! [fastPredicates]
+inline bool exactDifference(double a, double b, double d) {  // d = fl(a - b)
+  const double bb = d - a;
+  return (a - (d - bb)) - (b + bb) == 0;  // two-sum of a and -b: the rounding error
+}
+
+// All |d_i| <= 2^bits h for a power of two h in [2^-260, 2^200] that divides every d_i.
+template <int N>
+inline bool smallMultiples(const double (&d)[N], int bits) {
+  double m = 0;
+  for (double v : d) m = std::max(m, std::fabs(v));
+  if (!(m > 0)) return false;
+  int e = 0;
+  std::frexp(m, &e);  // m < 2^e
+  if (e - bits < -260 || e - bits > 200) return false;
+  const double inv = std::ldexp(1.0, bits - e);  // 1/h, exact
+  for (double v : d) {
+    const double q = v * inv;  // exact: a power-of-two scaling within range
+    if (q != double(std::int64_t(q))) return false;
+  }
+  return true;
+}
+
 struct InlinePredicates {
   FastStats* st;
   int orient(const double* a, const double* b, const double* c) const {
-    const double detleft = (a[0] - c[0]) * (b[1] - c[1]);
-    const double detright = (a[1] - c[1]) * (b[0] - c[0]);
+    const double acx = a[0] - c[0], bcy = b[1] - c[1];
+    const double acy = a[1] - c[1], bcx = b[0] - c[0];
+    const double detleft = acx * bcy;
+    const double detright = acy * bcx;
     const double det = detleft - detright;
     const double detsum = std::fabs(detleft) + std::fabs(detright);
     const double bound = 5 * kU * detsum;
     if (detsum >= 0x1p-960 && (det > bound || -det > bound)) return det > 0 ? 1 : -1;
+    const double d[4] = {acx, bcy, acy, bcx};
+    if (exactDifference(a[0], c[0], acx) && exactDifference(b[1], c[1], bcy) &&
+        exactDifference(a[1], c[1], acy) && exactDifference(b[0], c[0], bcx) &&
+        smallMultiples(d, 25))
+      return (det > 0) - (det < 0);
     ++st->exactOrient;
     return orient2dExact(a[0], a[1], b[0], b[1], c[0], c[1]);
   }
@@ -54,6 +94,12 @@ struct InlinePredicates {
     if ((det > bound || -det > bound) && permanent >= 0x1p-900 && big(adx) && big(ady) &&
         big(bdx) && big(bdy) && big(cdx) && big(cdy))
       return det > 0 ? 1 : -1;
+    const double diff[6] = {adx, ady, bdx, bdy, cdx, cdy};
+    if (exactDifference(a[0], d[0], adx) && exactDifference(a[1], d[1], ady) &&
+        exactDifference(b[0], d[0], bdx) && exactDifference(b[1], d[1], bdy) &&
+        exactDifference(c[0], d[0], cdx) && exactDifference(c[1], d[1], cdy) &&
+        smallMultiples(diff, 12))
+      return (det > 0) - (det < 0);
     ++st->exactIncircle;
     return incircleExact(a[0], a[1], b[0], b[1], c[0], c[1], d[0], d[1]);
   }
