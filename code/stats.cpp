@@ -92,18 +92,28 @@ std::vector<Face*> vertexStar(Face* f, const Vertex* v, std::size_t maxFaces) {
   std::vector<Face*> star;
   // Counter-clockwise around v: leave g through the edge V[i+2] -> V[i] (neighbour F[i+2]).
   Face* g = f;
-  bool closed = false;
   do {
-    if (!g->isGhost()) star.push_back(g);
+    star.push_back(g);
     if (star.size() > maxFaces) throw std::logic_error("vertexStar: the turn does not close");
     g = g->F[(corner(g) + 2) % 3];
-    if (g == f) closed = true;
-  } while (g != nullptr && !closed);
-  if (closed) return star;
+  } while (g != nullptr && g != f);
+  if (g == f) {
+    // Closed turn. Around a hull vertex it passes through ghost faces: start just after them,
+    // so that the finite faces come out as one fan, consecutive ones sharing an edge.
+    std::size_t k = 0;
+    while (k < star.size() && !star[k]->isGhost()) ++k;
+    if (k < star.size()) {
+      while (star[k % star.size()]->isGhost()) ++k;
+      std::rotate(star.begin(), star.begin() + long(k % star.size()), star.end());
+      star.erase(std::remove_if(star.begin(), star.end(), [](Face* h) { return h->isGhost(); }),
+                 star.end());
+    }
+    return star;
+  }
   // Open star (a boundary vertex without ghost faces): turn clockwise from f, through F[i].
   std::vector<Face*> back;
   for (g = f->F[corner(f)]; g != nullptr; g = g->F[corner(g)]) {
-    if (!g->isGhost()) back.push_back(g);
+    back.push_back(g);
     if (star.size() + back.size() > maxFaces)
       throw std::logic_error("vertexStar: the turn does not close");
   }

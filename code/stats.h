@@ -62,8 +62,9 @@ double halfEdgePointers(double n, double nh, bool exact);
 //! [vertexStar]
 /// Exercise 2.3.3.2: the face-based structure has no vertex -> face link. One Face* per
 /// vertex (N_p = 16 n) is enough to list the star of a vertex in time proportional to its
-/// degree, turning around it through F[]. The star of a hull vertex is open: the turn stops at
-/// the boundary (F == nullptr) or at a ghost face, and is completed from the other side.
+/// degree, turning around it through F[]. Returns the finite faces of v counter-clockwise,
+/// consecutive ones sharing an edge; around a hull vertex the fan starts at the hull (after the
+/// ghost faces, or at an F == nullptr that the turn then completes clockwise).
 /// Throws std::logic_error if v is not a vertex of f, or if the turn exceeds `maxFaces` faces
 /// (a corrupted mesh), instead of spinning forever.
 std::vector<Face*> vertexStar(Face* f, const Vertex* v, std::size_t maxFaces = 1u << 30);

@@ -1,0 +1,480 @@
+// Section 2.3.4, "Algorithms": Figure 2.10 (a cavity, its ball and the updated adjacencies),
+// Table 2.1 regenerated (N_search, N_cavity, time for 10^3..10^6 random points, the walk starting
+// at the first face as Listing 2.7 does), the share of time in the orientation predicate, and the
+// worst case: points on a parabola inserted in x order.
+//
+//   sec2_3_4_algorithms [--out DIR] [--quick] [--max-n N] [--no-plot] [--no-profile]
+//
+// --max-n bounds Table 2.1 (default 10^6, --quick 10^4); --no-profile skips the perf profile.
+// Times are CPU seconds of this process (getrusage), so that other jobs on the machine do not
+// inflate them; they are compared as ratios measured in the same run.
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <random>
+#include <set>
+
+#include "cavity.h"
+#include "check.h"
+#include "common.h"
+#include "predicates.h"
+#include "search.h"
+#include "triangulate.h"
+
+namespace {
+
+double cpuSeconds() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return double(u.ru_utime.tv_sec) + double(u.ru_stime.tv_sec) +
+         1e-6 * double(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
+}
+
+std::vector<double> uniform(std::size_t n, unsigned seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<double> p(2 * n);
+  for (double& c : p) c = u(rng);
+  return p;
+}
+
+void checkOrThrow(const dt::Triangulation& T, const std::string& what) {
+  const dt::CheckReport r = dt::checkTriangulation(T);
+  if (!r.ok) throw std::runtime_error(what + ": invalid triangulation: " + r.error);
+}
+
+// ---- Figure 2.10 --------------------------------------------------------------------------
+
+std::string triangleBlock(const dt::Face* f) {
+  std::string s;
+  for (int k = 0; k <= 3; ++k) s += ch::fmt("%.17g %.17g\n", f->V[k % 3]->x, f->V[k % 3]->y);
+  return s + "\n";
+}
+
+// An arrow from the centroid of f towards the shared edge with g, and back from g's centroid:
+// the two half-arrows meet on the edge, so each link reads as a double arrow across it.
+std::string linkArrows(const dt::Face* f, const dt::Face* g) {
+  const dt::Vertex a = f->centroid(), b = g->centroid();
+  const double mx = 0.5 * (a.x + b.x), my = 0.5 * (a.y + b.y);
+  return ch::fmt("%.17g %.17g %.17g %.17g\n", a.x, a.y, 0.9 * (mx - a.x), 0.9 * (my - a.y)) +
+         ch::fmt("%.17g %.17g %.17g %.17g\n", b.x, b.y, 0.9 * (mx - b.x), 0.9 * (my - b.y));
+}
+
+void figure210(const ch::Options& o) {
+  // 18 random points in the unit square; the new point p is the grid position whose cavity is
+  // the largest with at most 6 faces, none of them on the hull (so every neighbour is a triangle).
+  const std::vector<double> xy = uniform(18, 2010u);
+  dt::Triangulation T;
+  std::vector<dt::Vertex*> S;
+  for (std::size_t i = 0; i < xy.size() / 2; ++i)
+    S.push_back(T.addVertex(xy[2 * i], xy[2 * i + 1], long(i)));
+  dt::delaunayTrglHull(T, S, dt::StartRule::LastCavity);
+  double bx = 0.5, by = 0.5;
+  std::size_t best = 0;
+  for (int i = 0; i <= 40; ++i)
+    for (int j = 0; j <= 40; ++j) {
+      const dt::Vertex q(0.2 + 0.015 * i, 0.2 + 0.015 * j);
+      std::size_t size = 0;
+      bool interior = true;
+      for (const dt::Face& f : T.faces())
+        if (!f.deleted && f.inCircle(&q)) {
+          ++size;
+          interior = interior && !f.isGhost();
+        }
+      if (interior && size <= 6 && size > best) {
+        best = size;
+        bx = q.x;
+        by = q.y;
+      }
+    }
+  dt::Vertex* p = T.addVertex(bx, by, long(S.size()));
+  // The cavity by brute force (every finite face whose circle holds p strictly: 2.1.2), and the
+  // faces across its boundary; then the real insertion, whose result we compare with them.
+  std::set<const dt::Face*> cavity, outer;
+  std::string before, cav;
+  for (const dt::Face* f : T.finiteFaces()) {
+    before += triangleBlock(f);
+    if (f->inCircle(p)) {
+      cavity.insert(f);
+      cav += triangleBlock(f);
+    }
+  }
+  for (const dt::Face* f : cavity)
+    for (const dt::Face* g : f->F)
+      if (g != nullptr && !g->isGhost() && cavity.count(g) == 0) outer.insert(g);
+  dt::InsertionStats st;
+  dt::InsertionScratch scratch;
+  dt::insertVertex(T, &T.faces().front(), p, st, scratch);
+  checkOrThrow(T, "Figure 2.10");
+  std::string after, ball, out, arrowsNew, arrowsOut;
+  std::vector<const dt::Face*> ballFaces;
+  for (const dt::Face* f : T.finiteFaces()) {
+    after += triangleBlock(f);
+    if (f->V[0] == p || f->V[1] == p || f->V[2] == p) {
+      ball += triangleBlock(f);
+      ballFaces.push_back(f);
+    }
+  }
+  if (ballFaces.size() != cavity.size() + 2)
+    throw std::runtime_error("Figure 2.10: the ball does not have |C| + 2 faces");
+  for (const dt::Face* f : outer) out += triangleBlock(f);
+  for (const dt::Face* f : ballFaces)
+    for (const dt::Face* g : f->F) {
+      if (g == nullptr || g->isGhost()) continue;
+      const bool isNew = std::find(ballFaces.begin(), ballFaces.end(), g) != ballFaces.end();
+      if (isNew && g < f) continue;  // each new-new link once
+      (isNew ? arrowsNew : arrowsOut) += linkArrows(f, g);
+    }
+  ch::writeOut(o, "fig2_10_before.dat", before);
+  ch::writeOut(o, "fig2_10_cavity.dat", cav);
+  ch::writeOut(o, "fig2_10_after.dat", after);
+  ch::writeOut(o, "fig2_10_ball.dat", ball);
+  ch::writeOut(o, "fig2_10_outer.dat", out);
+  ch::writeOut(o, "fig2_10_links_new.dat", arrowsNew);
+  ch::writeOut(o, "fig2_10_links_outer.dat", arrowsOut);
+  ch::writeOut(o, "fig2_10_point.dat", ch::fmt("%.17g %.17g\n", p->x, p->y));
+  std::cout << "Figure 2.10: cavity of " << cavity.size() << " faces, ball of " << ballFaces.size()
+            << " faces, " << outer.size() << " neighbours outside\n";
+  ch::runGnuplot(o, "fig2_10.gp");
+}
+
+// ---- Table 2.1 ----------------------------------------------------------------------------
+
+struct Run {
+  long n = 0;
+  double nSearch = 0, nCavity = 0, seconds = 0;
+};
+
+// Listing 2.7 on n random points (random order) in the super-triangles, the walk always starting
+// at the first face T[0]. delaunayTrgl is called on slices of S so that progress can be shown;
+// with StartRule::FirstFace this is the same computation as one call.
+Run table21Run(long n, bool check) {
+  const std::vector<double> xy = uniform(std::size_t(n), 21u);
+  dt::Triangulation T;
+  std::vector<dt::Vertex*> S;
+  for (long i = 0; i < n; ++i) S.push_back(T.addVertex(xy[2 * i], xy[2 * i + 1], i));
+  dt::initSuperTriangles(T, 0, 0, 1, 1);
+  dt::InsertionStats st;
+  ch::Progress prog(ch::fmt("Table 2.1, n = %ld", n), std::uint64_t(n));
+  const std::size_t slice = std::max<std::size_t>(1000, std::size_t(n) / 200);
+  const double t0 = cpuSeconds();
+  for (std::size_t b = 0; b < S.size(); b += slice) {
+    const std::vector<dt::Vertex*> part(S.begin() + long(b),
+                                        S.begin() + long(std::min(S.size(), b + slice)));
+    dt::delaunayTrgl(T, part, dt::StartRule::FirstFace, &st);
+    prog.update(std::min(S.size(), b + slice));
+  }
+  Run r;
+  r.seconds = cpuSeconds() - t0;
+  r.n = n;
+  r.nSearch = st.meanSearch();
+  r.nCavity = st.meanCavity();
+  if (check) checkOrThrow(T, ch::fmt("Table 2.1 n = %ld", n));
+  return r;
+}
+
+void table21(const ch::Options& o) {
+  const long maxN = o.maxN > 0 ? o.maxN : (o.quick ? 10000 : 1000000);
+  // The notes' Table 2.1, for comparison.
+  const std::map<long, std::array<double, 3>> notes = {{1000, {19.8, 3.85, 0.012}},
+                                                       {10000, {56.8, 3.97, 0.198}},
+                                                       {100000, {161, 3.99, 4.85}},
+                                                       {1000000, {503, 3.99, 172}}};
+  std::vector<Run> runs;
+  for (long n = 1000; n <= maxN; n *= 10) {
+    runs.push_back(table21Run(n, true));
+    std::cout << ch::fmt("n = %ld: N_search = %.2f, N_cavity = %.3f, %.3f s CPU\n", n,
+                         runs.back().nSearch, runs.back().nCavity, runs.back().seconds);
+  }
+  ch::Table t;
+  t.caption = "Table 2.1 regenerated: delaunayTrgl (Listing 2.7, super-triangles, walk from the "
+              "first face T[0]) on n uniform random points in random order. N_search: faces "
+              "visited by lineSearch per insertion, the face returned included. N_cavity: faces "
+              "per Delaunay cavity. t: CPU seconds (ratio: to the previous n). Notes' values "
+              "in brackets.";
+  t.header = {"n", "N_search", "[notes]", "N_search/sqrt(n)", "N_cavity", "[notes]", "t (s)",
+              "t ratio", "[notes' t]", "[notes' ratio]"};
+  std::string dat = "# n N_search N_cavity t notes_N_search\n";
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    const Run& r = runs[i];
+    const auto it = notes.find(r.n);
+    const bool hasNotes = it != notes.end();
+    const auto prevNotes = i > 0 ? notes.find(runs[i - 1].n) : notes.end();
+    t.add({std::to_string(r.n), ch::fmt("%.1f", r.nSearch),
+           hasNotes ? ch::fmt("%.3g", it->second[0]) : "-",
+           ch::fmt("%.3f", r.nSearch / std::sqrt(double(r.n))), ch::fmt("%.3f", r.nCavity),
+           hasNotes ? ch::fmt("%.3g", it->second[1]) : "-", ch::fmt("%.3g", r.seconds),
+           i > 0 && runs[i - 1].seconds > 0 ? ch::fmt("%.1f", r.seconds / runs[i - 1].seconds) : "-",
+           hasNotes ? ch::fmt("%.3g", it->second[2]) : "-",
+           hasNotes && prevNotes != notes.end() ? ch::fmt("%.1f", it->second[2] / prevNotes->second[2])
+                                                : "-"});
+    dat += ch::fmt("%ld %.6g %.6g %.6g %.6g\n", r.n, r.nSearch, r.nCavity, r.seconds,
+                   hasNotes ? it->second[0] : NAN);
+  }
+  t.emit(o, "table2_1");
+  // Growth exponents of N_search and of t (least squares in logs), ours and the notes'.
+  if (runs.size() >= 2) {
+    auto slope = [](const std::vector<std::array<double, 2>>& pts) {
+      double sx = 0, sy = 0, sxx = 0, sxy = 0;
+      for (const auto& [n, v] : pts) {
+        const double x = std::log(n), y = std::log(v);
+        sx += x;
+        sy += y;
+        sxx += x * x;
+        sxy += x * y;
+      }
+      const double m = double(pts.size());
+      return (m * sxy - sx * sy) / (m * sxx - sx * sx);
+    };
+    std::vector<std::array<double, 2>> search, time, nSearch, nTime;
+    for (const Run& r : runs) {
+      search.push_back({double(r.n), r.nSearch});
+      time.push_back({double(r.n), r.seconds});
+      const auto it = notes.find(r.n);
+      if (it == notes.end()) continue;
+      nSearch.push_back({double(r.n), it->second[0]});
+      nTime.push_back({double(r.n), it->second[2]});
+    }
+    ch::Table e;
+    e.caption = ch::fmt("Growth of Table 2.1: least-squares exponent a in N ~ n^a over n = %ld..%ld",
+                        runs.front().n, runs.back().n);
+    e.header = {"quantity", "exponent (this run)", "exponent (notes' table, same n)",
+                "the notes say"};
+    e.add({"N_search", ch::fmt("%.3f", slope(search)), ch::fmt("%.3f", slope(nSearch)),
+           "sqrt(n): 0.5"});
+    e.add({"time", ch::fmt("%.3f", slope(time)), ch::fmt("%.3f", slope(nTime)), "n^{3/2}: 1.5"});
+    e.emit(o, "table2_1_growth");
+  }
+  ch::writeOut(o, "table2_1.dat", dat);
+  // the sqrt(n) slope through the first measured point, for the figure
+  std::string ref;
+  for (const Run& r : runs)
+    ref += ch::fmt("%ld %.6g\n", r.n, runs.front().nSearch * std::sqrt(double(r.n) / double(runs.front().n)));
+  ch::writeOut(o, "table2_1_sqrt.dat", ref);
+  ch::runGnuplot(o, "fig_table2_1_search.gp");
+}
+
+// ---- share of time in the orientation predicate --------------------------------------------
+
+// Where the CPU time of one Table 2.1 run goes, sampled by perf (if available): self time per
+// function, grouped. Returns false if perf could not be run.
+bool perfProfile(const ch::Options& o, long n) {
+  char self[4096] = {0};
+  if (readlink("/proc/self/exe", self, sizeof self - 1) <= 0) return false;
+  const std::string data = o.out + "/perf_2_3_4.data", rep = o.out + "/perf_2_3_4.txt";
+  const std::string rec = "perf record -q -F 2000 -o '" + data + "' -- '" + self +
+                          "' --profile-child " + std::to_string(n) + " > /dev/null 2>&1";
+  if (std::system(rec.c_str()) != 0) return false;
+  const std::string report = "perf report -i '" + data +
+                             "' --no-children --sort symbol --stdio -q > '" + rep +
+                             "' 2>/dev/null";
+  if (std::system(report.c_str()) != 0) return false;
+  std::ifstream in(rep);
+  std::map<std::string, double> group;
+  std::string line;
+  double total = 0;
+  while (std::getline(in, line)) {
+    double pc = 0;
+    char sym[4096] = {0};
+    if (std::sscanf(line.c_str(), " %lf%% [%*[^]]] %4095[^\n]", &pc, sym) != 2) continue;
+    std::string s(sym);
+    s = s.substr(0, s.find_last_not_of(" -") + 1);
+    std::string g = "other (allocation, kernel, input)";
+    if (s.find("orient") != std::string::npos) g = "orientation: orient2d, orientationTest";
+    else if (s.find("ncircle") != std::string::npos || s.find("inCircle") != std::string::npos)
+      g = "incircle: Face::inCircle, incircle (loads the face's vertices)";
+    else if (s.find("lineSearch") != std::string::npos || s.find("centroid") != std::string::npos)
+      g = "lineSearch itself (centroid, steps)";
+    else if (s.find("Adjacenc") != std::string::npos || s.find("Rb_tree") != std::string::npos ||
+             s.find("delaunayCavity") != std::string::npos || s.find("insertVertex") != std::string::npos)
+      g = "cavity, ball, computeAdjacencies (std::map)";
+    else if (s.find("mpz") != std::string::npos || s.find("gmp") != std::string::npos)
+      g = "exact fallback (GMP)";
+    group[g] += pc;
+    total += pc;
+  }
+  ch::Table t;
+  t.caption = ch::fmt("Where the time of Listing 2.7 goes, n = %ld random points (perf sampling, "
+                      "self time per function, grouped; %.1f%% of samples classified)",
+                      n, total);
+  t.header = {"part", "share of CPU samples"};
+  std::vector<std::pair<double, std::string>> rows;
+  for (const auto& [g, pc] : group) rows.push_back({pc, g});
+  std::sort(rows.rbegin(), rows.rend());
+  for (const auto& [pc, g] : rows) t.add({g, ch::fmt("%.1f%%", pc)});
+  t.emit(o, "table_orient_share_perf");
+  std::remove(data.c_str());
+  return true;
+}
+
+// The counting estimate (no profiler needed): number of calls of each predicate in the run,
+// times its cost per call measured on the same kind of arguments, over the run's CPU time.
+void countingEstimate(const ch::Options& o, long n) {
+  const std::vector<double> xy = uniform(std::size_t(n), 21u);
+  dt::Triangulation T;
+  std::vector<dt::Vertex*> S;
+  for (long i = 0; i < n; ++i) S.push_back(T.addVertex(xy[2 * i], xy[2 * i + 1], i));
+  dt::initSuperTriangles(T, 0, 0, 1, 1);
+  dt::predicateCounters().reset();
+  dt::InsertionStats st;
+  const double t0 = cpuSeconds();
+  dt::delaunayTrgl(T, S, dt::StartRule::FirstFace, &st);
+  const double total = cpuSeconds() - t0;
+  const dt::PredicateCounters c = dt::predicateCounters();
+  // Per-call cost: the walk's orientation tests take a face centroid, a vertex of that face and
+  // a far point; the incircle tests take a face and a far point. Replay such calls on the final
+  // mesh, in the walk's order of memory (faces in storage order), many times.
+  std::vector<const dt::Face*> F = T.finiteFaces();
+  std::mt19937_64 rng(5);
+  const std::size_t calls = 4000000;
+  std::vector<std::array<double, 8>> args(calls);
+  for (auto& a : args) {
+    const dt::Face* f = F[rng() % F.size()];
+    const dt::Vertex c0 = f->centroid();
+    const dt::Vertex* q = S[rng() % S.size()];
+    a = {c0.x, c0.y, f->V[0]->x, f->V[0]->y, q->x, q->y, f->V[1]->x, f->V[1]->y};
+  }
+  long sink = 0;
+  double ta = cpuSeconds();
+  for (const auto& a : args) sink += dt::orient2d(a[0], a[1], a[2], a[3], a[4], a[5]);
+  const double tOrient = (cpuSeconds() - ta) / double(calls);
+  ta = cpuSeconds();
+  for (const auto& a : args) sink += dt::incircle(a[2], a[3], a[6], a[7], a[0], a[1], a[4], a[5]);
+  const double tIncircle = (cpuSeconds() - ta) / double(calls);
+  const double shareO = double(c.orient) * tOrient / total;
+  const double shareI = double(c.incircle) * tIncircle / total;
+  ch::Table t;
+  t.caption = ch::fmt("Share of time in the predicates by counting, n = %ld random points, "
+                      "Listing 2.7 (%.3g s CPU): calls x cost per call (measured on arguments "
+                      "already in cache) / total time",
+                      n, total);
+  t.header = {"predicate", "calls", "calls per insertion", "exact fallbacks", "ns per call",
+              "share of the time"};
+  t.add({"orient2d", std::to_string(c.orient), ch::fmt("%.1f", double(c.orient) / double(n)),
+         std::to_string(c.orientExact), ch::fmt("%.1f", 1e9 * tOrient), ch::fmt("%.1f%%", 100 * shareO)});
+  t.add({"incircle", std::to_string(c.incircle), ch::fmt("%.1f", double(c.incircle) / double(n)),
+         std::to_string(c.incircleExact), ch::fmt("%.1f", 1e9 * tIncircle),
+         ch::fmt("%.1f%%", 100 * shareI)});
+  t.emit(o, "table_orient_share_count");
+  if (sink == 42) std::cout << " ";  // keeps the timed loops from being optimised away
+}
+
+void predicateShare(const ch::Options& o, bool profile) {
+  const long n = o.quick ? 10000 : 100000;
+  countingEstimate(o, n);
+  if (profile && !perfProfile(o, n))
+    std::cout << "perf is not available: the profile table is skipped\n";
+}
+
+// ---- the worst case: a parabola --------------------------------------------------------------
+
+// Points (x, x^2), x integer (exact doubles), inserted in increasing x. A circle meets the
+// parabola in at most 4 points whose x sum to 0 (no x^3 term in (x-h)^2 + (x^2-k)^2 = r^2), so:
+// with x = 1..n a new point is outside every circle through three earlier points (small
+// cavities); with x = -n..-1 it is inside every one of them, and in DT(S) (ghost faces) the
+// cavity is every triangle: insertion i costs O(i), the run O(n^2). With super-triangles the
+// points hug a vertical line inside a square 10 n^2 wide and most triangles use a super-vertex:
+// the cavities stay smaller, but the walk from T[0] crosses the whole mesh, again O(n^2).
+void parabola(const ch::Options& o) {
+  const std::vector<long> sizes = o.quick ? std::vector<long>{500, 1000, 2000}
+                                          : std::vector<long>{1000, 2000, 4000, 8000};
+  ch::Table t;
+  t.caption = "Points on y = x^2 inserted in increasing x: away from the apex (x = 1..n) and "
+              "towards it (x = -n..-1); Listing 2.7 in super-triangles (first-face walk), and "
+              "DT(S) with ghost faces (walk from the previous ball). Every result checked exactly.";
+  t.header = {"method", "x", "n", "N_cavity", "largest cavity", "N_search", "t (s)", "t ratio"};
+  std::map<int, std::vector<std::uint64_t>> trace;  // cavity sizes, largest n, per variant
+  const char* names[3] = {"super-triangles", "super-triangles", "ghost faces"};
+  for (int variant = 0; variant < 3; ++variant) {
+    const bool towards = variant > 0, ghosts = variant == 2;
+    double prev = 0;
+    for (long n : sizes) {
+      dt::Triangulation T;
+      std::vector<dt::Vertex*> S;
+      for (long i = 1; i <= n; ++i) {
+        const double x = towards ? double(i - n - 1) : double(i);
+        S.push_back(T.addVertex(x, x * x, i - 1));
+      }
+      dt::InsertionStats st;
+      dt::InsertionScratch scratch;
+      std::size_t first = 0;
+      const double t0 = cpuSeconds();
+      dt::Face* start = nullptr;
+      if (ghosts) {
+        // DT of the first three points with its ghost faces; the rest one by one below.
+        dt::delaunayTrglHull(T, {S[0], S[1], S[2]}, dt::StartRule::LastCavity, &st);
+        start = &T.faces().front();
+        first = 3;
+      } else {
+        dt::initSuperTriangles(T, towards ? -double(n) : 1, 1, towards ? -1 : double(n),
+                               double(n) * double(n));
+      }
+      std::uint64_t largest = 0;
+      const bool keep = n == sizes.back() && towards;
+      ch::Progress prog(ch::fmt("parabola %s n = %ld", names[variant], n), std::uint64_t(n));
+      for (std::size_t i = first; i < S.size(); ++i) {
+        // Listing 2.7's loop body, one point at a time to record each cavity's size.
+        const std::uint64_t before = st.cavityFaces;
+        dt::Face* ball = dt::insertVertex(T, ghosts ? start : &T.faces().front(), S[i], st, scratch);
+        if (ball != nullptr) start = ball;
+        largest = std::max(largest, st.cavityFaces - before);
+        if (keep) trace[variant].push_back(st.cavityFaces - before);
+        if (i % 256 == 0) prog.update(i);
+      }
+      const double sec = cpuSeconds() - t0;
+      prog.update(std::uint64_t(n));
+      checkOrThrow(T, "parabola");
+      t.add({names[variant], towards ? "-n..-1" : "1..n", std::to_string(n),
+             ch::fmt("%.1f", st.meanCavity()), std::to_string(largest),
+             ch::fmt("%.1f", st.meanSearch()), ch::fmt("%.3g", sec),
+             prev > 0 ? ch::fmt("%.1f", sec / prev) : "-"});
+      prev = sec;
+    }
+  }
+  t.emit(o, "table_parabola");
+  std::string dat = ch::fmt("# i cavity(super-triangles) cavity(ghost faces); x = -n..-1, n = %ld\n",
+                            sizes.back());
+  const std::vector<std::uint64_t>& a = trace[1];
+  const std::vector<std::uint64_t>& b = trace[2];
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    // the ghost-face run starts at the 4th point: align both on the point's index
+    const long j = long(i) - 3;
+    dat += ch::fmt("%zu %llu %s\n", i + 1, (unsigned long long)a[i],
+                   j >= 0 && std::size_t(j) < b.size() ? std::to_string(b[std::size_t(j)]).c_str() : "NaN");
+  }
+  ch::writeOut(o, "parabola_cavity.dat", dat);
+  ch::runGnuplot(o, "fig_parabola_cavity.gp");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  // The child run profiled by perf: one Table 2.1 triangulation, nothing else.
+  if (argc == 3 && std::string(argv[1]) == "--profile-child") {
+    table21Run(std::atol(argv[2]), false);
+    return 0;
+  }
+  const ch::Options o = ch::parseOptions(argc, argv);
+  bool profile = true;
+  for (const std::string& a : o.rest) {
+    if (a == "--no-profile") {
+      profile = false;
+    } else {
+      std::cerr << "sec2_3_4_algorithms: unknown option " << a << "\n";
+      return 2;
+    }
+  }
+  try {
+    figure210(o);
+    table21(o);
+    predicateShare(o, profile);
+    parabola(o);
+  } catch (const std::exception& e) {
+    std::cerr << "sec2_3_4_algorithms: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}
