@@ -150,13 +150,25 @@ TEST_CASE("fast kernel: inputs without a triangulation are refused") {
   CHECK(r.tri.size() == 3);
 }
 
-TEST_CASE("fast kernel: the filters send exactly the degenerate tests to the exact stage") {
-  // Random points: no exact test. A grid: cocircular squares and collinear rows need it.
+TEST_CASE("fast kernel: the filters send exactly the degenerate tests to the exact stages") {
+  // Random points: no test needs more than the filter.
   const dt::FastResult u = fastChecked(dttest::uniformPoints(5000, 17));
   CHECK(u.stats.exactIncircle == 0);
   CHECK(u.stats.exactOrient == 0);
-  const dt::FastResult g = fastChecked(dttest::gridPoints(50, 50));
-  CHECK(g.stats.exactIncircle > 0);
+  // A grid: its cocircular squares and collinear rows defeat the filter, and the small-integer
+  // stage decides them all exactly (no GMP call), on unit and on scaled grids alike.
+  for (double step : {1.0, 0x1p-40, 0x1p+150}) {
+    const dt::FastResult g = fastChecked(dttest::gridPoints(50, 50, step));
+    CHECK(g.stats.exactIncircle == 0);
+    CHECK(g.stats.exactOrient == 0);
+    CHECK(g.tri.size() == 2 * 49 * 49);
+  }
+  // A grid of step 0.1 (not a power of two: rounded coordinates) still ends in GMP sometimes,
+  // and nearly cocircular points on a circle do.
+  const dt::FastResult d = fastChecked(dttest::gridPoints(40, 40, 0.1));
+  CHECK(d.tri.size() == 2 * 39 * 39);
+  const dt::FastResult c = fastChecked(dttest::circlePoints(2000));
+  CHECK(c.stats.exactIncircle > 0);
   // The mean cavity of random points is about 4 triangles (2.3.4, Table 2.2: 4.06 to 4.17);
   // ghost triangles and BRIO rounds keep it within a few percent of that.
   CHECK(double(u.stats.cavityFaces) / double(u.stats.insertions) == doctest::Approx(4.1).epsilon(0.05));

@@ -1,0 +1,146 @@
+// opt_ladder: from the corrected listings to the fast kernel, one change at a time, each step
+// timed on the same 10^6 uniform random points in the same run (sorting included). Every step
+// produces the same triangulation (checked: same triangle count, and the last step is validated
+// exactly). Writes table_ladder.{md,csv,html} and ladder.dat, and draws fig_ladder_time.
+//
+//   opt_ladder [--out DIR] [--quick] [--max-n N] [--no-plot] [--reps R]
+//     --quick    10^5 points, one repetition
+//     --max-n N  the number of points (default 10^6)
+//     --reps R   repetitions of each step, the fastest is kept (default 2)
+#include <chrono>
+#include <iostream>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "check.h"
+#include "common.h"
+#include "fast_delaunay.h"
+#include "hilbert.h"
+#include "triangulate.h"
+
+namespace {
+
+struct Step {
+  const char* name;    // short label (figure)
+  const char* change;  // what this step changes
+  bool listings;       // the pointer-based corrected listings
+  dt::FastOptions opt;
+};
+
+struct Run {
+  double seconds = 0;
+  std::size_t triangles = 0;
+  double walk = 0, cavity = 0;
+};
+
+Run runStep(const Step& s, const std::vector<double>& xy) {
+  Run r;
+  const auto t0 = std::chrono::steady_clock::now();
+  if (s.listings) {
+    const std::vector<std::size_t> order = dt::hilbertOrder(xy);
+    dt::Triangulation T;
+    std::vector<dt::Vertex*> S;
+    S.reserve(order.size());
+    for (std::size_t i : order) S.push_back(T.addVertex(xy[2 * i], xy[2 * i + 1], long(i)));
+    dt::InsertionStats st;
+    dt::delaunayTrglHull(T, S, dt::StartRule::LastCavity, &st);
+    r.seconds = ch::secondsSince(t0);
+    r.triangles = T.numFiniteFaces();
+    r.walk = st.meanSearch();
+    r.cavity = st.meanCavity();
+  } else {
+    const dt::FastResult f = dt::fastDelaunay(xy, s.opt);
+    r.seconds = ch::secondsSince(t0);
+    r.triangles = f.tri.size();
+    r.walk = double(f.stats.walkSteps) / double(f.stats.insertions);
+    r.cavity = double(f.stats.cavityFaces) / double(f.stats.insertions);
+  }
+  return r;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  ch::Options o = ch::parseOptions(argc, argv);
+  int reps = o.quick ? 1 : 2;
+  for (std::size_t i = 0; i < o.rest.size(); ++i) {
+    if (o.rest[i] == "--reps" && i + 1 < o.rest.size()) {
+      reps = std::max(1, std::atoi(o.rest[++i].c_str()));
+    } else {
+      std::cerr << "opt_ladder: unknown option " << o.rest[i] << "\n";
+      return 2;
+    }
+  }
+  const std::size_t n = o.maxN > 0 ? std::size_t(o.maxN) : (o.quick ? 100000 : 1000000);
+  std::mt19937_64 rng(2026);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<double> xy(2 * n);
+  for (double& v : xy) v = u(rng);
+
+  std::vector<Step> steps;
+  dt::FastOptions f;
+  f.order = dt::FastOrder::Hilbert;
+  f.ladderCallPredicates = f.ladderCentroidWalk = f.ladderMapAdjacency = true;
+  steps.push_back({"listings", "corrected listings: pointers, std::map, centroid walk; Hilbert "
+                   "order, walk from the last cavity (the setting of Table 2.2)", true, f});
+  steps.push_back({"arrays", "index-based triangles in one contiguous array (24 bytes: 3 "
+                   "vertices, 3 neighbour half-edges)", false, f});
+  f.ladderMapAdjacency = false;
+  steps.push_back({"no map", "no std::map: the new triangles are linked through a per-vertex "
+                   "array", false, f});
+  f.ladderCentroidWalk = false;
+  steps.push_back({"walk", "orientation-only visibility walk that skips its entry edge (no "
+                   "incircle, no centroid)", false, f});
+  f.ladderCallPredicates = false;
+  steps.push_back({"inline", "filtered predicates inlined, exact stage only on failure", false, f});
+  f.order = dt::FastOrder::Brio;
+  steps.push_back({"BRIO", "BRIO order (dt::brioOrder): no skinny hull triangles, smaller "
+                   "cavities", false, f});
+  f.order = dt::FastOrder::RadixBrio;
+  steps.push_back({"radix", "BRIO rounds by coin flips, one radix sort of (round, Hilbert key)",
+                   false, f});
+
+  std::cout << "opt_ladder: " << n << " uniform random points, best of " << reps << "\n";
+  ch::Progress progress("opt_ladder", steps.size() * std::size_t(reps));
+  std::vector<Run> best(steps.size());
+  std::uint64_t done = 0;
+  for (std::size_t k = 0; k < steps.size(); ++k) {
+    for (int r = 0; r < reps; ++r) {
+      const Run x = runStep(steps[k], xy);
+      if (r == 0 || x.seconds < best[k].seconds) best[k] = x;
+      progress.update(++done);
+    }
+    std::cout << steps[k].name << ": " << ch::fmt("%.3f s", best[k].seconds) << "\n";
+  }
+  // The last step's triangulation, validated exactly; every step must agree on the count.
+  const dt::FastResult last = dt::fastDelaunay(xy, steps.back().opt);
+  const dt::CheckReport check = dt::checkDelaunay(xy, last.tri);
+  bool same = check.ok;
+  for (const Run& r : best) same = same && r.triangles == last.tri.size();
+  if (!same) {
+    std::cerr << "opt_ladder: the steps disagree or the result is invalid: " << check.error << "\n";
+    return 1;
+  }
+
+  ch::Table t;
+  t.caption = "The optimisation ladder: " + std::to_string(n) +
+              " uniform random points, sorting included, best of " + std::to_string(reps) +
+              " runs, all steps in the same run (each row adds one change to the row above)";
+  t.header = {"step", "change", "time (s)", "speedup vs previous", "speedup vs listings",
+              "walk steps", "cavity"};
+  std::string dat = "# step name seconds speedup_total\n";
+  for (std::size_t k = 0; k < steps.size(); ++k) {
+    const double prev = best[k ? k - 1 : 0].seconds, first = best[0].seconds;
+    t.add({std::to_string(k), steps[k].change, ch::fmt("%.3f", best[k].seconds),
+           k ? ch::fmt("%.2f", prev / best[k].seconds) : "-",
+           ch::fmt("%.2f", first / best[k].seconds), ch::fmt("%.2f", best[k].walk),
+           ch::fmt("%.2f", best[k].cavity)});
+    dat += std::to_string(k) + " \"" + steps[k].name + "\" " + ch::fmt("%.4f", best[k].seconds) +
+           " " + ch::fmt("%.3f", first / best[k].seconds) + "\n";
+  }
+  t.emit(o, "table_ladder");
+  ch::writeOut(o, "ladder.dat", dat);
+  ch::runGnuplot(o, "fig_ladder_time.gp");
+  return 0;
+}
