@@ -1,7 +1,7 @@
 // delaunay2d: the Delaunay triangulation DT(S) of a point file, exact for every input.
 //
-//   delaunay2d points.node -o out [--method hull|super] [--stats] [--svg out.svg] [--msh out.msh]
-//              [--no-check]
+//   delaunay2d points.node -o out [--method hull|super] [--order brio|hilbert|input] [--stats]
+//              [--svg out.svg] [--msh out.msh] [--no-check]
 //
 // Reads a Triangle .node file or a plain "x y" file, writes out.ele (Triangle format,
 // counter-clockwise triangles, vertices numbered as in the input). Exit status: 0 on success,
@@ -20,7 +20,9 @@
 #include "check.h"
 #include "io.h"
 #include "predicates.h"
+#include "fast_delaunay.h"
 #include "flip.h"
+#include "hilbert.h"
 #include "triangulate.h"
 
 namespace {
@@ -38,6 +40,13 @@ const char* kUsage =
     "                 hull inserted directly, section 2.2.2) or 'super' (super-triangles,\n"
     "                 then DT(S) recovered from DT(S0 u S) by flips, 2.2.1 and 2.3.6); both\n"
     "                 give the exact DT(S); with --stats, 'super' also prints recovery_flips\n"
+    "  --order O      insertion order (section 2.3.5): 'brio' (default; random rounds of\n"
+    "                 doubling size, each Hilbert-sorted), 'hilbert' (one Hilbert sort: as\n"
+    "                 fast on spread-out points, quadratic on points along a curve) or\n"
+    "                 'input' (file order: walks grow like sqrt(n))\n"
+    "  --kernel K     'fast' (default: code/fast_delaunay.h, index arrays, inlined filters,\n"
+    "                 its own BRIO/Hilbert order) or 'listings' (the corrected Listings 2.4-2.7);\n"
+    "                 both give the exact DT(S); --method super always uses the listings\n"
     "  --progress     report progress on stderr (default: only when stderr is a terminal)\n"
     "  --no-progress  never report progress\n"
     "  -h, --help     this help\n"
@@ -48,6 +57,10 @@ struct Options {
   std::string input, out, svg, msh;
   bool stats = false, check = true;
   bool superMethod = false;  // --method super
+  bool fastKernel = true;    // --kernel fast (default) or listings
+  // --order (2.3.5). BRIO by default: a plain Hilbert sort makes points along a curve (a
+  // parabola) cost O(n) per insertion, BRIO's random rounds do not (sec2_3_5_hilbert).
+  std::string order = "brio";
   int progress = -1;         // --progress 1, --no-progress 0, default -1: if stderr is a tty
 };
 
@@ -139,6 +152,14 @@ Options parse(int argc, char** argv) {
       const std::string m = value("--method");
       if (m != "hull" && m != "super") usageError("--method must be 'hull' or 'super'");
       o.superMethod = m == "super";
+    } else if (a == "--order") {
+      o.order = value("--order");
+      if (o.order != "hilbert" && o.order != "brio" && o.order != "input")
+        usageError("--order must be 'hilbert', 'brio' or 'input'");
+    } else if (a == "--kernel") {
+      const std::string k = value("--kernel");
+      if (k != "fast" && k != "listings") usageError("--kernel must be 'fast' or 'listings'");
+      o.fastKernel = k == "fast";
     } else if (a == "--progress" || a == "--no-progress") {
       o.progress = a == "--progress";
     } else if (a == "--no-check") {
@@ -198,6 +219,36 @@ int main(int argc, char** argv) {
                       S.size());
     if (opt.progress == 1) progress.force();
     const auto t0 = std::chrono::steady_clock::now();
+    // --kernel fast: the distinct points go to fastDelaunay, which orders them itself.
+    const bool useFast = opt.fastKernel && !opt.superMethod;
+    dt::PlainMesh fastMesh;
+    if (useFast) {
+      dt::FastOptions fo;
+      if (opt.order == "hilbert") fo.order = dt::FastOrder::Hilbert;
+      if (opt.order == "input") fo.order = dt::FastOrder::Input;
+      for (std::size_t i = 0; i < n; ++i)
+        if (keep[i]) {
+          fastMesh.xy.insert(fastMesh.xy.end(), {ps.xy[2 * i], ps.xy[2 * i + 1]});
+          fastMesh.ids.push_back(long(i));
+        }
+      dt::FastResult fr = dt::fastDelaunay(fastMesh.xy, fo);
+      fastMesh.tri = std::move(fr.tri);
+      st.insertions = fr.stats.insertions;
+      st.searchSteps = fr.stats.walkSteps;
+      st.cavityFaces = fr.stats.cavityFaces;
+    }
+    if (!useFast && opt.order != "input" && S.size() > 1) {
+      // 2.3.5: with the walk started in the previous cavity, a Hilbert (or BRIO) order keeps
+      // the walks short; in file order they can grow like sqrt(n). Timed with the insertions.
+      std::vector<double> xy;
+      xy.reserve(2 * S.size());
+      for (const dt::Vertex* v : S) xy.insert(xy.end(), {v->x, v->y});
+      const std::vector<std::size_t> idx =
+          opt.order == "brio" ? dt::brioOrder(xy, 1) : dt::hilbertOrder(xy);
+      std::vector<dt::Vertex*> sorted(S.size());
+      for (std::size_t k = 0; k < idx.size(); ++k) sorted[k] = S[idx[k]];
+      S.swap(sorted);
+    }
     dt::FlipStats fs;
     if (opt.superMethod) {
       // 2.2.1: super-triangles around the box, DT(S0 u S), then the flips of 2.3.6. A flat or
@@ -225,7 +276,7 @@ int main(int argc, char** argv) {
       insertInChunks(T, S, 0, st, progress);
       progress.phase("recovering DT(S) by flips");
       fs = dt::recoverDelaunay(T);
-    } else {
+    } else if (!useFast) {
       // delaunayTrglHull on the shortest prefix of S that spans a triangle (on a collinear S
       // it throws DegenerateInput), then the other points in chunks.
       std::size_t k = 2;
@@ -238,7 +289,7 @@ int main(int argc, char** argv) {
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
-    dt::PlainMesh m = dt::extractMesh(T, true);
+    dt::PlainMesh m = useFast ? std::move(fastMesh) : dt::extractMesh(T, true);
     if (opt.check) {
       progress.phase("checking the result with exact predicates");
       std::vector<char> must(m.ids.size(), 1);

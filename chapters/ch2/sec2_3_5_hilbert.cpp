@@ -261,7 +261,7 @@ void depthTable(const ch::Options& o, std::size_t n) {
   const XY pu = uniform(n, 35);
   const XY pc = clustered(n, 36);
   const int autoDepth = dt::hilbertAutoDepth(n);
-  std::vector<int> depths = {1, 2, 3, 4, 5, 6, 7, 8, 10, 12, 16, 20, 31};
+  std::vector<int> depths = {2, 4, 6, 8, 10, 12, 31};
   if (std::find(depths.begin(), depths.end(), autoDepth) == depths.end()) depths.push_back(autoDepth);
   std::sort(depths.begin(), depths.end());
   ch::Table tab;
