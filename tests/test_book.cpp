@@ -297,3 +297,23 @@ TEST_CASE("book: every formula is closed, and none is where Doxygen would print 
                                       << ": display formula never closed");
   }
 }
+
+TEST_CASE("book: every test file documents itself with \\file, so that \\ref test_x.cpp has a page") {
+  // "\file" takes the file's name as its argument: "/// \file Claims of ..." would document a
+  // file named "Claims", which Doxygen reports as an error and the book build stops.
+  const std::regex fileCmd(R"(^\s*///?\s*[\\@]file(?:\s+(\S+))?)");
+  for (const fs::path& p : filesIn(kRoot / "tests", ".cpp")) {
+    if (p.filename() == "main.cpp") continue;
+    std::istringstream in(readAll(p));
+    std::string first;
+    std::getline(in, first);
+    std::smatch m;
+    const bool has = std::regex_search(first, m, fileCmd);
+    CHECK_MESSAGE(has, "tests/" << p.filename().string() << ":1: first line must be /// \\file");
+    if (has && m[1].matched)
+      CHECK_MESSAGE(m[1].str() == p.filename().string(),
+                    "tests/" << p.filename().string() << ":1: \\file " << m[1].str()
+                             << " names another file; write \"/// \\file " << p.filename().string()
+                             << " <sentence>\" or \"/// \\file\" alone");
+  }
+}
