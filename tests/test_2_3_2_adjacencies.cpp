@@ -1,4 +1,4 @@
-/// \file Claims of sections 2.3.2-2.3.3: Euler's counts, eqs. (2.2)-(2.3), Figure 2.9, pointer counts, the vertex star, and computeAdjacencies.
+/// \file test_2_3_2_adjacencies.cpp Claims of sections 2.3.2-2.3.3: Euler's counts, eqs. (2.2)-(2.3), Figure 2.9, pointer counts, the vertex star, and computeAdjacencies.
 #include <doctest/doctest.h>
 
 #include <algorithm>

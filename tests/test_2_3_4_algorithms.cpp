@@ -1,4 +1,4 @@
-/// \file Claims of section 2.3.4: Table 2.1 (N_search like sqrt(n), N_cavity tends to 4), the ball of |C| + 2 triangles, and the parabola worst case.
+/// \file test_2_3_4_algorithms.cpp Claims of section 2.3.4: Table 2.1 (N_search like sqrt(n), N_cavity tends to 4), the ball of |C| + 2 triangles, and the parabola worst case.
 #include <doctest/doctest.h>
 
 #include <cmath>
