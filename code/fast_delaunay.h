@@ -59,4 +59,8 @@ struct FastResult {
 /// coordinates or more than 2^28 points.
 FastResult fastDelaunay(const std::vector<double>& xy, const FastOptions& opt = {});
 
+/// The Hilbert keys of hilbertKeys (hilbert.h), equal to them, computed four curve levels per
+/// table look-up (the descent of hilbertIndex has 8 states). depth 0 = hilbertAutoDepth(n).
+std::vector<std::uint64_t> fastHilbertKeys(const std::vector<double>& xy, int depth = 0);
+
 }  // namespace dt

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "fast_delaunay.h"
+#include "hilbert.h"
 #include "support.h"
 
 namespace {
@@ -202,4 +203,17 @@ TEST_CASE("delaunay2d --kernel fast (the default) and --kernel listings write th
   };
   CHECK(generic(got[1]) == generic(got[2]));
   CHECK(dttest::runCli("'" + in + "' -o x --kernel quick").status == 2);
+}
+
+TEST_CASE("fast kernel: its table-driven Hilbert keys equal hilbertKeys (hilbert.h)") {
+  for (int depth : {1, 2, 3, 4, 5, 7, 8, 13, 16, 18, 21, 31}) {
+    dttest::XY p = dttest::uniformPoints(3000, unsigned(depth), -3, 5);
+    const dttest::XY g = dttest::gridPoints(9, 9, 0.5, -2, -1);  // points on cell boundaries
+    p.insert(p.end(), g.begin(), g.end());
+    INFO("depth " << depth);
+    CHECK(dt::fastHilbertKeys(p, depth) == dt::hilbertKeys(p, depth));
+  }
+  const dttest::XY p = dttest::uniformPoints(50000, 4);
+  CHECK(dt::fastHilbertKeys(p) == dt::hilbertKeys(p, 0));
+  CHECK(dt::fastHilbertKeys({1, 2, 1, 2}) == dt::hilbertKeys({1, 2, 1, 2}, 0));
 }
