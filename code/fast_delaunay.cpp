@@ -135,12 +135,13 @@ inline bool onOpenSegment(const double* a, const double* b, const double* p) {
 // v[k] v[(k+1)%3], the neighbour half-edge a[k] = 3 t' + k' (the same edge seen from t'). Both
 // live in one 24-byte record, so a visit touches one cache line. Vertices are the points in
 // insertion order, 0..n-1; INF = n is the vertex at infinity, always at position 2 of a ghost.
+//! [fastTri]
 struct Tri {
   int v[3];
   int a[3];
 };
 
-//! [fastKernel]
+//! [fastTri]
 template <class Pred, bool kMapAdjacency, bool kCentroidWalk>
 class Kernel {
  public:
@@ -162,6 +163,7 @@ class Kernel {
   }
 
   /// Inserts vertex ip. Returns -1, or the vertex that ip duplicates (then nothing changes).
+//! [fastInsert]
   int insert(int ip) {
     const double* p = P_ + 2 * ip;
     int dup = -1;
@@ -178,6 +180,7 @@ class Kernel {
     return -1;
   }
 
+//! [fastInsert]
   const std::vector<Tri>& triangles() const { return T_; }
   int infinite() const { return INF; }
   /// Frees everything but the triangles.
@@ -206,6 +209,7 @@ class Kernel {
     return pred_.incircle(pt(v[0]), pt(v[1]), pt(v[2]), p) > 0;
   }
 
+//! [fastWalk]
   // A visibility walk by orientation tests, from the last triangle created, that does not test
   // the edge it came through. On a Delaunay triangulation it cannot cycle (Edelsbrunner); the
   // cap turns a corrupted mesh into an error. It ends in a triangle that contains p (whose
@@ -250,6 +254,7 @@ class Kernel {
     }
   }
 
+//! [fastWalk]
   // The ladder's walk: Listing 2.6 as corrected in search.cpp (an incircle test at every
   // triangle, then the half-open sector of the centroid's ray).
   int walkCentroid(const double* p, int& dup) {
@@ -289,6 +294,7 @@ class Kernel {
     }
   }
 
+//! [fastCavity]
   // Delaunay cavity (Listing 2.5) from a seed in conflict: the list of cavity triangles is its
   // own work queue, so there is neither recursion nor a separate stack.
   void cavity(int seed, const double* p) {
@@ -312,6 +318,8 @@ class Kernel {
     }
   }
 
+//! [fastCavity]
+//! [fastFill]
   void link(int h, int g) {
     T_[h / 3].a[h % 3] = g;
     T_[g / 3].a[g % 3] = h;
@@ -353,6 +361,7 @@ class Kernel {
     last_ = int(bnd_.back().e1 / 3);
   }
 
+//! [fastFill]
   // The ladder's adjacency: Listing 2.4's std::map from edges to half-edges, over the new
   // triangles and the outer side of the boundary.
   void linkWithMap() {
@@ -385,7 +394,6 @@ class Kernel {
   std::vector<BoundaryEdge> bnd_;
   int last_ = 0;
 };
-//! [fastKernel]
 
 // ---------------------------------------------------------------------------------------------
 // Insertion order: Hilbert keys (hilbert.h), optionally grouped in BRIO rounds, sorted by one
