@@ -4,7 +4,7 @@
 # Options are passed to every chapter program, e.g. "--quick" for a smaller run.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/deps.sh
+DT_WITH_OPTIONAL=1 bash scripts/deps.sh  # optional: CGAL for bench_kernels
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release > /dev/null
 cmake --build build -j"$(nproc)"
 for src in chapters/ch2/*.cpp; do
