@@ -45,18 +45,22 @@ MeshCounts meshCounts(std::size_t np, const std::vector<std::array<int, 3>>& tri
 }
 //! [meshCounts]
 
+//! [gridCounts]
 std::array<long, 4> gridCounts(long nx, long ny) {
   if (nx < 2 || ny < 2) throw std::invalid_argument("gridCounts: need nx, ny >= 2");
   // Every square gets two triangles whichever diagonal it gets; Euler does the rest.
   const long n = nx * ny, nh = 2 * (nx + ny) - 4;
   return {n, nh, 2 * (nx - 1) * (ny - 1), 3 * n - 2 * nx - 2 * ny + 1};
 }
+//! [gridCounts]
 
+//! [lowDegreeVertex]
 int lowDegreeVertex(const MeshCounts& c) {
   for (std::size_t v = 0; v < c.ve.size(); ++v)
     if (c.vf[v] > 0 && c.ve[v] <= 5) return int(v);
   return -1;
 }
+//! [lowDegreeVertex]
 
 //! [pointerCountsImpl]
 std::vector<PointerCount> pointerCounts(double n, double nh, bool exact) {
@@ -76,11 +80,13 @@ std::vector<PointerCount> pointerCounts(double n, double nh, bool exact) {
 }
 //! [pointerCountsImpl]
 
+//! [halfEdgePointers]
 double halfEdgePointers(double n, double nh, bool exact) {
   const double nf = exact ? 2 * (n - 1) - nh : 2 * n;
   const double ne = exact ? 3 * (n - 1) - nh : 3 * n;
   return (2 * ne * (1 + 4) + n * (1 + 1) + nf * (1 + 1)) / n;
 }
+//! [halfEdgePointers]
 
 //! [vertexStarImpl]
 std::vector<Face*> vertexStar(Face* f, const Vertex* v, std::size_t maxFaces) {
@@ -161,6 +167,7 @@ void computeAdjacenciesSorted(std::vector<Face*>& faces) {
 }
 //! [computeAdjacenciesSorted]
 
+//! [backwardCavityMean]
 std::array<double, 2> backwardCavityMean(const Triangulation& T) {
   double sum = 0, D = 0;
   std::unordered_set<const Vertex*> real;  // vertices of the mesh (skipped duplicates are not)
@@ -172,5 +179,6 @@ std::array<double, 2> backwardCavityMean(const Triangulation& T) {
   const double n = double(real.size());
   return {n > 0 ? (sum - 2 * n) / n : 0, D};
 }
+//! [backwardCavityMean]
 
 }  // namespace dt
