@@ -4,7 +4,7 @@ if (!exists("datadir")) datadir = "."
 if (!exists("outdir")) outdir = "."
 set xlabel "point i of (x, x^2), x = -n..-1, inserted in increasing x"
 set ylabel "faces in the Delaunay cavity of point i"
-set key top left
+set key right center
 set grid
 set logscale y
 do for [term in "png svg"] {

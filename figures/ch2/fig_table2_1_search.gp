@@ -8,6 +8,7 @@ set ylabel "N_{search}"
 set key top left
 set grid
 set xrange [500:2e6]
+set format x "10^{%T}"
 set yrange [10:1000]
 do for [term in "png svg"] {
   if (term eq "png") {
