@@ -477,6 +477,20 @@ inline std::uint32_t cellOf(double v, double lo, double halfSide, double scale, 
   return std::uint32_t(c < top ? c : top);
 }
 
+// Calls f(k, key of point k) for every point, keys as hilbertKeys computes them.
+template <class F>
+void forEachHilbertKey(const std::vector<double>& xy, int depth, F f) {
+  const HilbertBox box = hilbertBox(xy);  // also refuses NaN and infinities
+  const std::size_t n = xy.size() / 2;
+  const double scale = std::ldexp(1.0, depth), top = scale - 1;
+  const bool flat = !(box.halfSide > 0);  // all points equal: every cell is 0
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::uint32_t i = flat ? 0 : cellOf(xy[2 * k], box.xmin, box.halfSide, scale, top);
+    const std::uint32_t j = flat ? 0 : cellOf(xy[2 * k + 1], box.ymin, box.halfSide, scale, top);
+    f(k, hilbertIndexByTable(i, j, depth));
+  }
+}
+
 std::vector<int> radixHilbertOrder(const std::vector<double>& xy, int rounds, std::uint64_t seed) {
   const std::size_t n = xy.size() / 2;
   int idxBits = 1;
@@ -486,31 +500,31 @@ std::vector<int> radixHilbertOrder(const std::vector<double>& xy, int rounds, st
   const int depth = hilbertAutoDepth(n);
   // Dropping the last levels of a key gives the key of a coarser curve: same order, more ties.
   const int keyBits = std::min(2 * depth, 64 - idxBits - roundBits);
-  std::vector<std::uint64_t> a, b(n);
-  {
-    const std::vector<std::uint64_t> keys = fastHilbertKeys(xy, depth);
-    a.resize(n);
-    const int shift = 2 * depth - keyBits;
-    for (std::size_t i = 0; i < n; ++i) {
-      std::uint64_t r = 0;
-      if (rounds > 1) {  // pairs of zero bits of a random word: none w.p. 3/4, one w.p. 3/16...
-        const std::uint64_t h = splitmix64(seed ^ (0x632be59bd9b4e019ULL * (i + 1)));
-        int z = 0;
-        while (z < rounds - 1 && ((h >> (2 * z)) & 3) == 0) ++z;
-        r = std::uint64_t(rounds - 1 - z);
-      }
-      a[i] = (((r << keyBits) | (keys[i] >> shift)) << idxBits) | i;
-    }
-  }
+  // The packed words, and the histograms of all the radix passes, in one sweep.
   constexpr int kDigit = 13;  // 3 passes for the 39 bits of 10^6 points; 8192 counters fit L2
-  std::vector<std::size_t> count(std::size_t{1} << kDigit);
-  for (int lo = idxBits; lo < idxBits + keyBits + roundBits; lo += kDigit) {
-    std::fill(count.begin(), count.end(), 0);
-    const std::uint64_t mask = (std::uint64_t{1} << kDigit) - 1;
-    for (std::uint64_t v : a) ++count[(v >> lo) & mask];
-    std::size_t sum = 0;
-    for (auto& c : count) sum += std::exchange(c, sum);
-    for (std::uint64_t v : a) b[count[(v >> lo) & mask]++] = v;
+  constexpr std::uint64_t kMask = (std::uint64_t{1} << kDigit) - 1;
+  const int passes = (keyBits + roundBits + kDigit - 1) / kDigit;
+  std::vector<std::uint32_t> count(std::size_t(passes) << kDigit, 0);
+  std::vector<std::uint64_t> a(n), b(n);
+  const int shift = 2 * depth - keyBits;
+  forEachHilbertKey(xy, depth, [&](std::size_t i, std::uint64_t key) {
+    std::uint64_t r = 0;
+    if (rounds > 1) {  // pairs of zero bits of a random word: none w.p. 3/4, one w.p. 3/16...
+      const std::uint64_t h = splitmix64(seed ^ (0x632be59bd9b4e019ULL * (i + 1)));
+      int z = 0;
+      while (z < rounds - 1 && ((h >> (2 * z)) & 3) == 0) ++z;
+      r = std::uint64_t(rounds - 1 - z);
+    }
+    const std::uint64_t v = (((r << keyBits) | (key >> shift)) << idxBits) | i;
+    a[i] = v;
+    for (int q = 0; q < passes; ++q) ++count[(std::size_t(q) << kDigit) + ((v >> (idxBits + kDigit * q)) & kMask)];
+  });
+  for (int q = 0; q < passes; ++q) {
+    std::uint32_t* c = &count[std::size_t(q) << kDigit];
+    std::uint32_t sum = 0;
+    for (std::size_t d = 0; d <= kMask; ++d) sum += std::exchange(c[d], sum);
+    const int lo = idxBits + kDigit * q;
+    for (std::uint64_t v : a) b[c[(v >> lo) & kMask]++] = v;
     a.swap(b);
   }
   std::vector<std::uint64_t>().swap(b);
@@ -568,18 +582,10 @@ void run(std::vector<double>& P, std::vector<int>& orig, FastResult& res, Pred p
 }  // namespace
 
 std::vector<std::uint64_t> fastHilbertKeys(const std::vector<double>& xy, int depth) {
-  const HilbertBox box = hilbertBox(xy);  // also refuses NaN and infinities
-  const std::size_t n = xy.size() / 2;
-  if (depth == 0) depth = hilbertAutoDepth(n);
+  if (depth == 0) depth = hilbertAutoDepth(xy.size() / 2);
   if (depth < 1 || depth > 31) throw std::invalid_argument("fastHilbertKeys: depth out of 1..31");
-  std::vector<std::uint64_t> keys(n);
-  const double scale = std::ldexp(1.0, depth), top = scale - 1;
-  const bool flat = !(box.halfSide > 0);  // all points equal: every cell is 0
-  for (std::size_t k = 0; k < n; ++k) {
-    const std::uint32_t i = flat ? 0 : cellOf(xy[2 * k], box.xmin, box.halfSide, scale, top);
-    const std::uint32_t j = flat ? 0 : cellOf(xy[2 * k + 1], box.ymin, box.halfSide, scale, top);
-    keys[k] = hilbertIndexByTable(i, j, depth);
-  }
+  std::vector<std::uint64_t> keys(xy.size() / 2);
+  forEachHilbertKey(xy, depth, [&](std::size_t k, std::uint64_t key) { keys[k] = key; });
   return keys;
 }
 

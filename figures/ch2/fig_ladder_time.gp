@@ -5,7 +5,7 @@ if (!exists("outdir")) outdir = "."
 set style data histograms
 set style fill solid 0.8 border -1
 set boxwidth 0.7
-set ylabel "time (s), sorting included"
+set ylabel "CPU time (s), sorting included"
 set xlabel "step (each adds one change to the previous one)"
 set title "From the corrected listings to the fast kernel"
 set yrange [0:*]
