@@ -64,52 +64,64 @@ struct Options {
   int progress = -1;         // --progress 1, --no-progress 0, default -1: if stderr is a tty
 };
 
-// Progress on stderr for long runs: points inserted, rate, time left, rewritten in place on a
-// terminal. Silent for the first half second, so short runs print nothing.
+// Progress on stderr for long runs: the phase, and while the listings insert, the points
+// inserted, the rate and the time left; on a terminal one line rewritten in place. Phases are
+// shown for inputs of 100000 points or more, the insertion count after half a second.
 class Progress {
  public:
-  Progress(bool on, std::size_t total) : on_(on), total_(total) {}
+  explicit Progress(int mode)  // 1: always, 0: never, -1: if stderr is a terminal
+      : on_(mode == 1 || (mode == -1 && tty_)), forced_(mode == 1) {}
+  void setTotal(std::size_t n) { total_ = n; }
+  void phase(const std::string& what) {
+    if (on_ && (forced_ || shown_ || total_ >= 100000)) show(what);
+  }
+  void startInsertion() {
+    insertStart_ = std::chrono::steady_clock::now();
+    lastShown_ = 0;
+  }
   void update(std::size_t done) {
     if (!on_) return;
-    const double t = since(start_);
+    const double t = since(insertStart_);
     if (t < 0.5 || t - lastShown_ < 0.25) return;
-    // The rate of the last interval: with a random order, insertion slows down as n grows.
+    // The rate of the last interval: in file order, insertion slows down as n grows.
     const double rate = lastShown_ > 0 ? double(done - lastDone_) / (t - lastShown_) : done / t;
     lastShown_ = t;
     lastDone_ = done;
-    const double left = rate > 0 ? double(total_ - done) / rate : 0;
-    std::fprintf(stderr, "%sdelaunay2d: %zu of %zu points inserted (%.0f%%), %.0f points/s, "
-                 "about %.0f s left   %s", tty_ ? "\r" : "", done, total_,
-                 total_ ? 100.0 * double(done) / double(total_) : 100.0, rate, left,
-                 tty_ ? "" : "\n");
-    std::fflush(stderr);
-    shown_ = true;
+    char buf[200];
+    std::snprintf(buf, sizeof buf, "%zu of %zu points inserted (%.0f%%), %.0f points/s, about "
+                  "%.0f s left", done, total_, total_ ? 100.0 * double(done) / double(total_) : 100.0,
+                  rate, rate > 0 ? double(total_ - done) / rate : 0.0);
+    show(buf);
   }
-  // A phase without a count (the flips, the check): one line, if progress was shown.
-  void phase(const char* what) {
-    if (!on_ || !shown_) return;
-    std::fprintf(stderr, "%sdelaunay2d: %s   %s", tty_ ? "\r" : "", what, tty_ ? "" : "\n");
-    std::fflush(stderr);
-  }
-  // The last line: replaces the progress line on a terminal.
+  // The last line (it ends the rewritten line on a terminal).
   void finish(std::size_t points) {
-    if (!on_ || !shown_) return;
+    if (!on_ || !(forced_ || shown_)) return;
     std::fprintf(stderr, "%sdelaunay2d: %zu points triangulated in %.1f s\n",
                  tty_ ? "\r\033[K" : "", points, since(start_));
   }
-  void force() { shown_ = on_; }  // --progress: report even a short run
 
  private:
+  void show(const std::string& what) {
+    if (tty_)
+      std::fprintf(stderr, "\rdelaunay2d: %s\033[K", what.c_str());
+    else
+      std::fprintf(stderr, "delaunay2d: %s\n", what.c_str());
+    std::fflush(stderr);
+    shown_ = true;
+  }
   static double since(std::chrono::steady_clock::time_point t) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
   }
-  bool on_;
   bool tty_ = ::isatty(STDERR_FILENO) == 1;
+  bool on_, forced_;
   bool shown_ = false;
-  std::size_t total_, lastDone_ = 0;
+  std::size_t total_ = 0, lastDone_ = 0;
   double lastShown_ = 0;
-  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now(),
+                                        insertStart_ = start_;
 };
+
+constexpr std::size_t kNamedDuplicates = 10;
 
 // Inserts S[from..) with delaunayTrgl in chunks (the same insertions as one call), reporting
 // progress between chunks.
@@ -183,6 +195,7 @@ Options parse(int argc, char** argv) {
 
 int main(int argc, char** argv) {
   const Options opt = parse(argc, argv);
+  Progress progress(opt.progress);
   try {
     const dt::PointSet ps = dt::readPoints(opt.input);
     const std::size_t n = ps.size();
@@ -200,14 +213,18 @@ int main(int argc, char** argv) {
       const std::size_t a = order[k - 1], b = order[k];
       if (ps.xy[2 * a] == ps.xy[2 * b] && ps.xy[2 * a + 1] == ps.xy[2 * b + 1]) {
         keep[b] = 0;
-        ++nDup;
-        std::cerr << "delaunay2d: " << ps.path << ":" << ps.line[b] << ": point " << ps.number[b]
-                  << " duplicates point " << ps.number[runStart] << " (line "
-                  << ps.line[runStart] << "); merged\n";
+        // The first few are named; a file of 10^6 copies must not print 10^6 lines.
+        if (++nDup <= kNamedDuplicates)
+          std::cerr << "delaunay2d: " << ps.path << ":" << ps.line[b] << ": point "
+                    << ps.number[b] << " duplicates point " << ps.number[runStart] << " (line "
+                    << ps.line[runStart] << "); merged\n";
       } else {
         runStart = b;
       }
     }
+    if (nDup > kNamedDuplicates)
+      std::cerr << "delaunay2d: " << ps.path << ": " << nDup - kNamedDuplicates
+                << " more duplicate points merged (" << nDup << " in all)\n";
     dt::Triangulation T;
     std::vector<dt::Vertex*> S;
     S.reserve(n - nDup);
@@ -215,9 +232,7 @@ int main(int argc, char** argv) {
       if (keep[i]) S.push_back(T.addVertex(ps.xy[2 * i], ps.xy[2 * i + 1], long(i)));
 
     dt::InsertionStats st;
-    Progress progress(opt.progress == 1 || (opt.progress == -1 && ::isatty(STDERR_FILENO) == 1),
-                      S.size());
-    if (opt.progress == 1) progress.force();
+    progress.setTotal(S.size());
     const auto t0 = std::chrono::steady_clock::now();
     // --kernel fast: the distinct points go to fastDelaunay, which orders them itself.
     const bool useFast = opt.fastKernel && !opt.superMethod;
@@ -231,6 +246,7 @@ int main(int argc, char** argv) {
           fastMesh.xy.insert(fastMesh.xy.end(), {ps.xy[2 * i], ps.xy[2 * i + 1]});
           fastMesh.ids.push_back(long(i));
         }
+      progress.phase("triangulating " + std::to_string(S.size()) + " points (fast kernel)");
       dt::FastResult fr = dt::fastDelaunay(fastMesh.xy, fo);
       fastMesh.tri = std::move(fr.tri);
       st.insertions = fr.stats.insertions;
@@ -273,6 +289,8 @@ int main(int argc, char** argv) {
           if (factor == 1.01) throw std::runtime_error("super-triangles do not fit in doubles");
         }
       }
+      progress.phase("inserting " + std::to_string(S.size()) + " points (listings)");
+      progress.startInsertion();
       insertInChunks(T, S, 0, st, progress);
       progress.phase("recovering DT(S) by flips");
       fs = dt::recoverDelaunay(T);
@@ -284,6 +302,8 @@ int main(int argc, char** argv) {
       k = std::min(k + 1, S.size());
       dt::delaunayTrglHull(T, std::vector<dt::Vertex*>(S.begin(), S.begin() + long(k)),
                            dt::StartRule::LastCavity, &st);
+      progress.phase("inserting " + std::to_string(S.size()) + " points (listings)");
+      progress.startInsertion();
       insertInChunks(T, S, k, st, progress);
     }
     const double seconds =
@@ -302,6 +322,7 @@ int main(int argc, char** argv) {
     }
     std::vector<long> numbers(m.ids.size());
     for (std::size_t i = 0; i < m.ids.size(); ++i) numbers[i] = ps.number[std::size_t(m.ids[i])];
+    progress.phase("writing " + opt.out + ".ele");
     // All or nothing: if one output cannot be written, the ones already written are removed.
     std::vector<std::pair<std::string, std::string>> outputs = {
         {opt.out + ".ele", dt::eleText(m.tri, numbers, ps.firstIndex)}};

@@ -142,7 +142,9 @@ PointSet parseNode(const std::string& text, const std::string& path) {
   const long nmark =
       h.fields.size() > 3 ? toInteger(path, h.number, h.fields[3], "marker count") : 0;
   if (n < 0) bad(path, h.number, "point count " + std::to_string(n) + " is negative");
-  if (dim != 2) bad(path, h.number, "dimension " + std::to_string(dim) + " is not 2");
+  if (dim != 2)
+    bad(path, h.number, "dimension " + std::to_string(dim) + " is not 2" + headerForm +
+                            (h.fields.size() == 3 ? "; is the header missing?" : ""));
   if (nattr < 0 || nattr > 1000)
     bad(path, h.number, "attribute count " + std::to_string(nattr) + " is not in 0..1000");
   if (nmark != 0 && nmark != 1)

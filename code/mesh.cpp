@@ -32,7 +32,10 @@ bool Face::inCircle(const Vertex* c) const {
 //! [inCircle]
 
 Vertex Face::centroid() const {
-  return Vertex((V[0]->x + V[1]->x + V[2]->x) / 3, (V[0]->y + V[1]->y + V[2]->y) / 3);
+  // Dividing first: the sum of three coordinates near 1e308 overflows to infinity, and the
+  // walk's orientation tests would then get a non-finite point (found by fuzzing). The
+  // rounding differs a little; lineSearch copes with a centroid slightly off the face.
+  return Vertex(V[0]->x / 3 + V[1]->x / 3 + V[2]->x / 3, V[0]->y / 3 + V[1]->y / 3 + V[2]->y / 3);
 }
 
 Triangulation::Triangulation() : infinite_(0, 0, 0, -1000) { infinite_.infinite = true; }

@@ -1,0 +1,187 @@
+/// \file test_bad_input.cpp Every way a .node or xy file can be wrong, through the delaunay2d binary: one clear message naming file, line and value, exit status 2, and no output file.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+
+#include "support.h"
+
+namespace {
+
+struct Bad {
+  const char* name;  // file name: its extension picks the parser
+  std::string text;
+  const char* expect;  // a piece of the message (after "<file>")
+};
+
+// Runs the CLI on a bad file (with every output requested) and checks the contract.
+void expectRefused(const Bad& b, const std::string& extra = "") {
+  CAPTURE(b.name);
+  const std::string in = dttest::tmpPath(b.name);
+  const std::string out = dttest::tmpPath(std::string("bad_out_") + b.name);
+  for (const char* ext : {".ele", ".svg", ".msh"}) std::remove((out + ext).c_str());
+  dttest::writeText(in, b.text);
+  const dttest::CliResult r = dttest::runCli("'" + in + "' -o '" + out + "' --svg '" + out +
+                                             ".svg' --msh '" + out + ".msh' " + extra);
+  CHECK(r.status == 2);
+  // The message names the file (and, in `expect`, the line and the value).
+  const std::string want = "delaunay2d: " + in + b.expect;
+  CHECK_MESSAGE(r.err.find(want) != std::string::npos, "expected: " << want << "\ngot: " << r.err);
+  CHECK_MESSAGE(std::count(r.err.begin(), r.err.end(), '\n') == 1, "one line: " << r.err);
+  CHECK(r.out.empty());
+  for (const char* ext : {".ele", ".svg", ".msh"}) CHECK_FALSE(dttest::fileExists(out + ext));
+}
+
+}  // namespace
+
+TEST_CASE("bad input: a wrong or missing point count in a .node header") {
+  const Bad cases[] = {
+      {"count_high.node", "4 2 0 0\n1 0 0\n2 1 0\n3 0 1\n",
+       ":4: file ends after 3 of the 4 points announced in the header (line 1)"},
+      {"count_low.node", "2 2 0 0\n1 0 0\n2 1 0\n3 0 1\n",
+       ":4: extra line '3 0 1': the header (line 1) announces 2 points"},
+      {"count_word.node", "three 2 0 0\n1 0 0\n2 1 0\n3 0 1\n",
+       ":1: point count 'three' is not an integer"},
+      {"count_real.node", "3.0 2 0 0\n1 0 0\n2 1 0\n3 0 1\n",
+       ":1: point count '3.0' is not an integer"},
+      {"count_negative.node", "-3 2 0 0\n", ":1: point count -3 is negative"},
+      {"no_header.node", "1 0 0\n2 1 0\n3 0 1\n", ":1: dimension 0 is not 2"},
+      {"xy_as_node.node", "0.5 0.25\n1 2\n", ":1: point count '0.5' is not an integer"},
+      {"dimension.node", "3 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 1 0\n", ":1: dimension 3 is not 2"},
+      {"markers.node", "3 2 0 2\n1 0 0 1 1\n", ":1: marker count 2 is not 0 or 1"},
+      {"header_long.node", "3 2 0 0 7\n", ":1: header '3 2 0 0 7' has 5 fields"},
+  };
+  for (const Bad& b : cases) expectRefused(b);
+}
+
+TEST_CASE("bad input: non-numeric fields, NaN, infinities, overflow and underflow") {
+  const Bad cases[] = {
+      {"word.node", "3 2 0 0\n1 0 0\n2 1 zero\n3 0 1\n", ":3: y 'zero' is not a number"},
+      {"word.xy", "0 0\n1 0\nx1 1\n", ":3: x 'x1' is not a number"},
+      {"comma.xy", "0 0\n1,5 0\n0 1\n", ":2: x '1,5' is not a number"},
+      {"trailing.xy", "0 0\n1.5e 0\n0 1\n", ":2: x '1.5e' is not a number"},
+      {"nan.xy", "0 0\n1 0\nnan 1\n", ":3: x 'nan' is NaN"},
+      {"nan.node", "3 2 0 0\n1 0 0\n2 1 0\n3 0 -NaN\n", ":4: y '-NaN' is NaN"},
+      {"inf.xy", "0 0\n1 0\n0 inf\n", ":3: y 'inf' is infinite"},
+      {"minus_infinity.node", "3 2 0 0\n1 -Infinity 0\n2 1 0\n3 0 1\n",
+       ":2: x '-Infinity' is infinite"},
+      {"overflow.xy", "0 0\n1 0\n0 1e999\n", ":3: y '1e999' overflows a double"},
+      {"underflow.xy", "0 0\n1 1e-400\n0 1\n", ":2: y '1e-400' underflows to 0"},
+      {"number_word.node", "3 2 0 0\n1 0 0\nb 1 0\n3 0 1\n", ":3: point number 'b' is not an integer"},
+      {"attribute.node", "3 2 1 0\n1 0 0 a\n2 1 0 1\n3 0 1 1\n", ":2: attribute 'a' is not a number"},
+      {"marker.node", "3 2 0 1\n1 0 0 0.5\n2 1 0 1\n3 0 1 1\n",
+       ":2: boundary marker '0.5' is not an integer"},
+  };
+  for (const Bad& b : cases) expectRefused(b);
+}
+
+TEST_CASE("bad input: empty files, binary garbage, extra columns, line endings") {
+  std::string binary = "\x7f" "ELF\x02\x01\x01";
+  binary += '\0';
+  binary += "\x03\x3e\n";
+  const char withNul[] = "3 2 0 0\n1 0 0\n2 1\0 0\n3 0 1\n";
+  const Bad cases[] = {
+      {"empty.node", "", ": empty file"},
+      {"empty.xy", "", ": empty file"},
+      {"comments.xy", "# nothing here\n\n   \n", ": only blank lines and comments"},
+      {"binary.xy", binary, ":1: binary or control character (code 127) at column 1"},
+      {"nul.node", std::string(withNul, sizeof withNul - 1),
+       ":3: binary or control character (code 0) at column 4"},
+      {"latin1.xy", "0 0\n1 0\n0 1\xe9\n", ":3: y '1?' is not a number"},
+      {"columns.xy", "0 0\n1 0 5\n0 1\n", ":2: '1 0 5' has 3 fields; expected 'x y'"},
+      {"node_as_xy.xy", "3 2 0 0\n1 0 0\n", ":1: '3 2 0 0' has 4 fields; expected 'x y' (a .node header?"},
+      {"one_column.xy", "0 0\n1\n0 1\n", ":2: '1' has 1 field; expected 'x y'"},
+      {"columns.node", "3 2 0 0\n1 0 0\n2 1 0 9\n3 0 1\n",
+       ":3: '2 1 0 9' has 4 fields; expected 3 (number, x, y, as the header on line 1 says)"},
+      {"mac_cr.xy", "0 0\r1 0\r0 1\r", ":1: carriage return inside the line"},
+  };
+  for (const Bad& b : cases) expectRefused(b);
+}
+
+TEST_CASE("bad input: 0-based and 1-based numbering must be consistent") {
+  const Bad cases[] = {
+      {"starts_at_2.node", "3 2 0 0\n2 0 0\n3 1 0\n4 0 1\n",
+       ":2: first point number is 2; expected 0 or 1"},
+      {"mixed_base.node", "3 2 0 0\n0 0 0\n2 1 0\n3 0 1\n",
+       ":3: point number 2; expected 1 (numbers start at 0 on line 2 and follow on)"},
+      {"repeated_number.node", "3 2 0 0\n1 0 0\n2 1 0\n2 0 1\n",
+       ":4: point number 2; expected 3 (numbers start at 1 on line 2 and follow on)"},
+  };
+  for (const Bad& b : cases) expectRefused(b);
+}
+
+TEST_CASE("bad input: fewer than 3 distinct points, or all collinear, has no triangulation") {
+  const Bad cases[] = {
+      {"none.node", "0 2 0 0\n", ": fewer than 3 distinct points: no triangulation exists"},
+      {"one.xy", "1 1\n", ": fewer than 3 distinct points: no triangulation exists"},
+      {"two_repeated.xy", "0 0\n1 1\n0 0\n1 1\n1 1\n",
+       ": fewer than 3 distinct points: no triangulation exists"},
+      {"collinear.xy", "0 0\n1 1\n2 2\n3 3\n", ": all points are collinear: no triangulation exists"},
+      {"collinear_dups.node", "5 2 0 0\n0 0 0\n1 4 2\n2 0 0\n3 -2 -1\n4 1e-300 5e-301\n",
+       ": all points are collinear: no triangulation exists"},
+  };
+  for (const char* method : {"hull", "super"}) {
+    CAPTURE(method);
+    for (const Bad& b : cases) {
+      // Each input repeats a point at most; duplicates are reported on stderr first.
+      const std::string in = dttest::tmpPath(b.name);
+      const std::string out = dttest::tmpPath(std::string("deg_out_") + b.name);
+      std::remove((out + ".ele").c_str());
+      dttest::writeText(in, b.text);
+      const dttest::CliResult r =
+          dttest::runCli("'" + in + "' -o '" + out + "' --method " + std::string(method));
+      CHECK(r.status == 2);
+      CHECK_MESSAGE(r.err.find("delaunay2d: " + in + b.expect) != std::string::npos, r.err);
+      CHECK_FALSE(dttest::fileExists(out + ".ele"));
+    }
+  }
+}
+
+TEST_CASE("good input: Windows line endings, a byte order mark, comments, attributes") {
+  struct Good {
+    const char* name;
+    const char* text;
+  };
+  const Good cases[] = {
+      {"crlf.node", "# made on Windows\r\n4 2 0 0\r\n1 0 0\r\n2 1 0\r\n3 1 1\r\n4 0 1\r\n"},
+      {"crlf.xy", "0 0\r\n1 0\r\n1 1\r\n0 1\r\n"},
+      {"bom.xy", "\xEF\xBB\xBF" "0 0\n1 0\n1 1\n0 1\n"},
+      {"attrs.node", "4 2 2 1 # header\n0 0 0 1.5 2 1\n1 1 0 0 0 1\n\n2 1 1 3 3 0\n3 0 1 -1 1e5 1\n"},
+      {"tabs.xy", "0\t0\n1\t0  \n1 1\t# corner\n0 1\n"},
+  };
+  for (const Good& g : cases) {
+    CAPTURE(g.name);
+    const std::string in = dttest::tmpPath(g.name), out = dttest::tmpPath(std::string("good_") + g.name);
+    dttest::writeText(in, g.text);
+    const dttest::CliResult r = dttest::runCli("'" + in + "' -o '" + out + "'");
+    CHECK_MESSAGE(r.status == 0, r.err);
+    CHECK(r.err.empty());
+    const int first = std::string(g.name) == "attrs.node" ? 0 : 1;
+    const auto tri = dttest::readEle(out + ".ele", first);
+    CHECK(tri.size() == 2);  // the unit square: two triangles
+    const std::vector<double> square = {0, 0, 1, 0, 1, 1, 0, 1};
+    CHECK(dt::checkDelaunay(square, tri).ok);
+  }
+}
+
+TEST_CASE("bad usage and unwritable output: exit status and no partial output") {
+  const std::string in = dttest::tmpPath("usage.xy"), out = dttest::tmpPath("usage_out");
+  dttest::writeText(in, "0 0\n1 0\n0 1\n");
+  std::remove((out + ".ele").c_str());
+  dttest::CliResult r = dttest::runCli("'" + in + "'");
+  CHECK(r.status == 2);
+  CHECK(r.err.find("no output name (-o OUT)") != std::string::npos);
+  r = dttest::runCli("'" + in + "' -o '" + out + "' --frobnicate");
+  CHECK(r.status == 2);
+  CHECK(r.err.find("unknown option '--frobnicate'") != std::string::npos);
+  r = dttest::runCli("'" + dttest::tmpPath("no_such_file.node") + "' -o '" + out + "'");
+  CHECK(r.status == 2);
+  CHECK(r.err.find("no_such_file.node: cannot open file for reading") != std::string::npos);
+  r = dttest::runCli("'" + std::string(DT_TEST_TMP) + "' -o '" + out + "'");
+  CHECK(r.status == 2);
+  CHECK(r.err.find(": is a directory") != std::string::npos);
+  // The .ele can be written but the SVG cannot: nothing is left behind.
+  r = dttest::runCli("'" + in + "' -o '" + out + "' --svg '" + dttest::tmpPath("no/such/dir.svg") + "'");
+  CHECK(r.status == 1);
+  CHECK(r.err.find("no/such/dir.svg: cannot open for writing") != std::string::npos);
+  CHECK_FALSE(dttest::fileExists(out + ".ele"));
+}
