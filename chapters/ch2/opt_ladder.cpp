@@ -108,8 +108,8 @@ int main(int argc, char** argv) {
   steps.push_back({"BRIO", "BRIO order (dt::brioOrder): no skinny hull triangles, smaller "
                    "cavities", false, f});
   f.order = dt::FastOrder::RadixBrio;
-  steps.push_back({"radix", "BRIO rounds by coin flips, one radix sort of (round, Hilbert key)",
-                   false, f});
+  steps.push_back({"radix BRIO", "BRIO rounds by a biased coin (3/4 of the points in the last "
+                   "round), Hilbert keys by table, one radix sort of (round, key)", false, f});
 
   std::cout << "opt_ladder: " << n << " uniform random points, best of " << reps << "\n";
   ch::Progress progress("opt_ladder", steps.size() * std::size_t(reps));
