@@ -65,13 +65,16 @@ TEST_CASE("2.3.4 Table 2.1: N_search (faces visited by lineSearch) grows like sq
 TEST_CASE("2.3.4 Table 2.1: N_cavity tends to 4 on random points") {
   // Backward analysis: the cavity of point i has deg_i(p) - 2 faces, and the mean degree in
   // DT_i is 6 - (D_i - 6)/i with D_i the corners at the 4 super-vertices (a few dozen here), so
-  // E[N_cavity] = 4 - mean over i of (D_i - 6)/i: a deviation of order (log n)/n. The tolerances
-  // (0.15 at 10^3, 0.04 at 10^4) are several times the deviations measured over seeds.
+  // E[N_cavity] = 4 - mean over i of (D_i - 6)/i: a bias of order (log n)/n. Around it the
+  // mean of n cavity sizes (standard deviation about 1.5) fluctuates by about 1.5/sqrt(n):
+  // 0.05 at 10^3, 0.015 at 10^4; over 8 seeds the largest deviations from 4 were 0.12 and 0.023.
+  // The tolerances, 0.25 and 0.08, are about 5 standard deviations: a mean of 3.8 or 4.2 at
+  // 10^4 fails.
   const double c3 = table21(1000, 41u).nCavity;
   const double c4 = table21(10000, 42u).nCavity;
   MESSAGE("N_cavity: ", c3, " (10^3), ", c4, " (10^4)");
-  CHECK(std::fabs(c3 - 4) < 0.15);
-  CHECK(std::fabs(c4 - 4) < 0.04);
+  CHECK(std::fabs(c3 - 4) < 0.25);
+  CHECK(std::fabs(c4 - 4) < 0.08);
 }
 
 TEST_CASE("2.3.4 a cavity of size |C| gives |C| + 2 new triangles (4 -> 6)") {
