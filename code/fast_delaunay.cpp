@@ -131,34 +131,29 @@ inline bool onOpenSegment(const double* a, const double* b, const double* p) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// The kernel. Triangle t has vertices v[0..2] (counter-clockwise) and, across its edge
-// v[k] v[(k+1)%3], the neighbour half-edge a[k] = 3 t' + k' (the same edge seen from t'). Both
-// live in one 24-byte record, so a visit touches one cache line. Vertices are the points in
-// insertion order, 0..n-1; INF = n is the vertex at infinity, always at position 2 of a ghost.
-//! [fastTri]
-struct Tri {
-  int v[3];
-  int a[3];
-};
-
-//! [fastTri]
+// The kernel. Triangle t has vertices V[t][0..2] (counter-clockwise) and, across its edge
+// V[t][k] V[t][(k+1)%3], the neighbour half-edge A[t][k] = 3 t' + k' (the same edge seen from t').
+// Vertices are the points in insertion order, 0..n-1; INF = n is the vertex at infinity, always
+// at position 2 of a ghost. Two arrays rather than one record: at the end A is freed and V,
+// compacted in place, becomes the output, so the output costs no memory of its own.
 template <class Pred, bool kMapAdjacency, bool kCentroidWalk>
 class Kernel {
  public:
   Kernel(const double* P, int n, Pred pred, FastStats& st)
       : P_(P), INF(n), pred_(pred), st_(st) {
     const std::size_t maxTri = 2 * std::size_t(n) + 2;  // 2(n+1) - 4 faces on the sphere
-    T_.reserve(maxTri);
+    V_.reserve(maxTri);
+    A_.reserve(maxTri);
     mark_.assign(maxTri, 0);
-    startHalf_.assign(std::size_t(n) + 1, -1);
   }
 
   /// The first triangle a b c (counter-clockwise) and its three ghosts.
   void init(int a, int b, int c) {
-    T_ = {{{a, b, c}, {3 * 1 + 0, 3 * 2 + 0, 3 * 3 + 0}},
-          {{b, a, INF}, {3 * 0 + 0, 3 * 3 + 2, 3 * 2 + 1}},
-          {{c, b, INF}, {3 * 0 + 1, 3 * 1 + 2, 3 * 3 + 1}},
-          {{a, c, INF}, {3 * 0 + 2, 3 * 2 + 2, 3 * 1 + 1}}};
+    V_ = {{a, b, c}, {b, a, INF}, {c, b, INF}, {a, c, INF}};
+    A_ = {{3 * 1 + 0, 3 * 2 + 0, 3 * 3 + 0},
+          {3 * 0 + 0, 3 * 3 + 2, 3 * 2 + 1},
+          {3 * 0 + 1, 3 * 1 + 2, 3 * 3 + 1},
+          {3 * 0 + 2, 3 * 2 + 2, 3 * 1 + 1}};
     last_ = 0;
   }
 
@@ -181,13 +176,13 @@ class Kernel {
   }
 
 //! [fastInsert]
-  const std::vector<Tri>& triangles() const { return T_; }
+  std::vector<std::array<int, 3>>& vertices() { return V_; }
   int infinite() const { return INF; }
-  /// Frees everything but the triangles.
-  void releaseScratch() {
+  /// Frees everything but the vertices of the triangles.
+  void releaseAllButVertices() {
     // (v = {} would keep the capacity: it assigns an empty list.)
     std::vector<unsigned char>().swap(mark_);
-    std::vector<int>().swap(startHalf_);
+    std::vector<std::array<int, 3>>().swap(A_);
   }
 
  private:
@@ -195,13 +190,14 @@ class Kernel {
     int a, b;  // the edge a -> b as the cavity triangle sees it
     int out;   // the half-edge of the triangle outside the cavity
     int e1;    // the half-edge b -> p of the new triangle a b p
+    int e2;    // the half-edge p -> a of the new triangle a b p
   };
 
   const double* pt(int v) const { return P_ + 2 * v; }
 
   // Inlined by force: it is the innermost call of the walk and of the cavity search.
   __attribute__((always_inline)) bool conflict(int t, const double* p) const {
-    const int* v = T_[t].v;
+    const int* v = V_[t].data();
     if (v[2] == INF) {  // ghost (a, b, inf): p strictly left of a->b, or on the open segment
       const int o = pred_.orient(pt(v[0]), pt(v[1]), p);
       return o > 0 || (o == 0 && onOpenSegment(pt(v[0]), pt(v[1]), p));
@@ -216,17 +212,17 @@ class Kernel {
   // circle then contains p strictly unless p is one of its vertices) or in a ghost that sees p.
   int walk(const double* p, int& dup) {
     int t = last_, from = -1;
-    const std::size_t cap = T_.size() + 1;
+    const std::size_t cap = V_.size() + 1;
     for (std::size_t steps = 1;; ++steps) {
       if (steps > cap) throw std::logic_error("fastDelaunay: walk does not terminate");
-      const int* v = T_[t].v;
+      const int* v = V_[t].data();
       if (v[2] == INF) {
         // Entered from its finite side: p is strictly beyond that hull edge, a conflict.
         if (from == 0 || conflict(t, p)) {
           st_.walkSteps += steps;
           return t;
         }
-        const int h = T_[t].a[0];
+        const int h = A_[t][0];
         t = h / 3;
         from = h % 3;
         continue;
@@ -248,7 +244,7 @@ class Kernel {
           }
         return t;
       }
-      const int h = T_[t].a[k];
+      const int h = A_[t][k];
       t = h / 3;
       from = h % 3;
     }
@@ -259,16 +255,16 @@ class Kernel {
   // triangle, then the half-open sector of the centroid's ray).
   int walkCentroid(const double* p, int& dup) {
     int t = last_;
-    const std::size_t cap = T_.size() + 1;
+    const std::size_t cap = V_.size() + 1;
     for (std::size_t steps = 1;; ++steps) {
       if (steps > cap) throw std::logic_error("fastDelaunay: walk does not terminate");
       if (conflict(t, p)) {
         st_.walkSteps += steps;
         return t;
       }
-      const int* v = T_[t].v;
+      const int* v = V_[t].data();
       if (v[2] == INF) {
-        t = T_[t].a[0] / 3;
+        t = A_[t][0] / 3;
         continue;
       }
       const double c[2] = {(pt(v[0])[0] + pt(v[1])[0] + pt(v[2])[0]) / 3,
@@ -290,7 +286,7 @@ class Kernel {
           }
         throw std::logic_error("fastDelaunay: point inside a triangle but outside its circle");
       }
-      t = T_[t].a[next] / 3;
+      t = A_[t][next] / 3;
     }
   }
 
@@ -305,14 +301,14 @@ class Kernel {
     for (std::size_t i = 0; i < cav_.size(); ++i) {
       const int t = cav_[i];
       for (int k = 0; k < 3; ++k) {
-        const int h = T_[t].a[k];
+        const int h = A_[t][k];
         const int n = h / 3;
         if (mark_[n]) continue;  // inside the cavity: an interior edge
         if (conflict(n, p)) {
           mark_[n] = 1;
           cav_.push_back(n);
         } else {
-          bnd_.push_back({T_[t].v[k], T_[t].v[(k + 1) % 3], h, -1});
+          bnd_.push_back({V_[t][k], V_[t][(k + 1) % 3], h, -1, -1});
         }
       }
     }
@@ -321,13 +317,14 @@ class Kernel {
 //! [fastCavity]
 //! [fastFill]
   void link(int h, int g) {
-    T_[h / 3].a[h % 3] = g;
-    T_[g / 3].a[g % 3] = h;
+    A_[h / 3][h % 3] = g;
+    A_[g / 3][g % 3] = h;
   }
 
   // The Delaunay ball: triangle a b p on each boundary edge a -> b, in the slots of the cavity
   // and two new ones. Its edge b -> p meets the edge p -> b of the triangle built on the
-  // boundary edge leaving b; startHalf_[b] finds that triangle without a map.
+  // boundary edge that leaves b (the boundary is one closed polygon, Property 2.1.1): a search
+  // among the few boundary edges finds it, without a map.
   void fill(int ip) {
     const std::size_t nc = cav_.size();
     for (std::size_t i = 0; i < bnd_.size(); ++i) {
@@ -335,30 +332,48 @@ class Kernel {
       if (i < nc) {
         s = cav_[i];
       } else {
-        s = int(T_.size());
-        T_.push_back({{0, 0, 0}, {-1, -1, -1}});
+        s = int(V_.size());
+        V_.push_back({0, 0, 0});
+        A_.push_back({-1, -1, -1});
       }
       mark_[s] = 0;
       BoundaryEdge& e = bnd_[i];
       // Rotation that keeps the vertex at infinity at position 2 of a ghost.
       const int r = e.b == INF ? 2 : (e.a == INF ? 1 : 0);
       const int old[3] = {e.a, e.b, ip};
-      T_[s].v[0] = old[r];
-      T_[s].v[1] = old[(r + 1) % 3];
-      T_[s].v[2] = old[(r + 2) % 3];
-      const int e0 = 3 * s + (3 - r) % 3, e2 = 3 * s + (5 - r) % 3;
+      V_[s] = {old[r], old[(r + 1) % 3], old[(r + 2) % 3]};
+      const int e0 = 3 * s + (3 - r) % 3;
       e.e1 = 3 * s + (4 - r) % 3;
-      if (!kMapAdjacency) {
-        link(e0, e.out);
-        startHalf_[e.a] = e2;
-      }
+      e.e2 = 3 * s + (5 - r) % 3;
+      if (!kMapAdjacency) link(e0, e.out);
     }
-    if (kMapAdjacency) {
+    if (kMapAdjacency)
       linkWithMap();
-    } else {
-      for (const BoundaryEdge& e : bnd_) link(e.e1, startHalf_[e.b]);
-    }
+    else
+      linkAround();
     last_ = int(bnd_.back().e1 / 3);
+  }
+
+  void linkAround() {
+    const std::size_t m = bnd_.size();
+    if (m <= 32) {  // the usual case (about 6 edges): a plain search
+      for (const BoundaryEdge& e : bnd_) {
+        std::size_t j = 0;
+        while (j < m && bnd_[j].a != e.b) ++j;
+        if (j == m) throw std::logic_error("fastDelaunay: cavity boundary is not closed");
+        link(e.e1, bnd_[j].e2);
+      }
+      return;
+    }
+    byStart_.clear();  // a large cavity (degenerate input): sort the edges by their start
+    for (const BoundaryEdge& e : bnd_) byStart_.emplace_back(e.a, e.e2);
+    std::sort(byStart_.begin(), byStart_.end());
+    for (const BoundaryEdge& e : bnd_) {
+      const auto it = std::lower_bound(byStart_.begin(), byStart_.end(), std::make_pair(e.b, -1));
+      if (it == byStart_.end() || it->first != e.b)
+        throw std::logic_error("fastDelaunay: cavity boundary is not closed");
+      link(e.e1, it->second);
+    }
   }
 
 //! [fastFill]
@@ -371,7 +386,7 @@ class Kernel {
     for (const BoundaryEdge& e : bnd_) {
       const int s = e.e1 / 3;
       for (int k = 0; k < 3; ++k) {
-        const auto q = key(T_[s].v[k], T_[s].v[(k + 1) % 3]);
+        const auto q = key(V_[s][k], V_[s][(k + 1) % 3]);
         auto it = edgeToHalf.find(q);
         if (it == edgeToHalf.end()) {
           edgeToHalf.emplace(q, 3 * s + k);
@@ -387,9 +402,12 @@ class Kernel {
   const int INF;
   Pred pred_;
   FastStats& st_;
-  std::vector<Tri> T_;
+//! [fastArrays]
+  std::vector<std::array<int, 3>> V_;  // V_[t]: the vertices of triangle t, counter-clockwise
+  std::vector<std::array<int, 3>> A_;  // A_[t][k] = 3 t' + k': the same edge seen from t'
+//! [fastArrays]
   std::vector<unsigned char> mark_;  // in the current cavity
-  std::vector<int> startHalf_;       // per vertex: half-edge p -> v of the new triangle v . p
+  std::vector<std::pair<int, int>> byStart_;  // large cavities: (start vertex, half-edge p -> a)
   std::vector<int> cav_;
   std::vector<BoundaryEdge> bnd_;
   int last_ = 0;
@@ -565,15 +583,16 @@ void run(std::vector<double>& P, std::vector<int>& orig, FastResult& res, Pred p
     if (orig[i] < orig[d]) std::swap(orig[i], orig[d]);
     dups.emplace_back(orig[i], d);
   }
-  // The finite triangles, renumbered as the input. The scratch arrays and the sorted points go
-  // first, so that the output does not raise the peak memory.
-  K.releaseScratch();
+  // The output is the array of vertices itself: the adjacencies, the marks and the sorted
+  // points are freed, the finite triangles renumbered as the input and packed at the front.
+  K.releaseAllButVertices();
   std::vector<double>().swap(P);
-  std::size_t nFinite = 0;
-  for (const Tri& t : K.triangles()) nFinite += t.v[2] != K.infinite();
-  res.tri.reserve(nFinite);
-  for (const Tri& t : K.triangles())
-    if (t.v[2] != K.infinite()) res.tri.push_back({orig[t.v[0]], orig[t.v[1]], orig[t.v[2]]});
+  std::vector<std::array<int, 3>>& V = K.vertices();
+  std::size_t w = 0;
+  for (const auto& t : V)
+    if (t[2] != K.infinite()) V[w++] = {orig[t[0]], orig[t[1]], orig[t[2]]};
+  V.resize(w);
+  res.tri = std::move(V);
   res.duplicates.reserve(dups.size());
   for (const auto& [d, v] : dups) res.duplicates.emplace_back(d, orig[v]);
   std::sort(res.duplicates.begin(), res.duplicates.end());

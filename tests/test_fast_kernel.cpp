@@ -217,3 +217,16 @@ TEST_CASE("fast kernel: its table-driven Hilbert keys equal hilbertKeys (hilbert
   CHECK(dt::fastHilbertKeys(p) == dt::hilbertKeys(p, 0));
   CHECK(dt::fastHilbertKeys({1, 2, 1, 2}) == dt::hilbertKeys({1, 2, 1, 2}, 0));
 }
+
+TEST_CASE("fast kernel: a cavity of hundreds of triangles (the centre of a circle, inserted last)") {
+  // Every triangle of the points on the circle has the centre strictly inside its circle: the
+  // last insertion removes them all, and its boundary has 400 edges (the sorted linking path).
+  dttest::XY p = dttest::circlePoints(400);
+  p.push_back(0);
+  p.push_back(0);
+  dt::FastOptions o;
+  o.order = dt::FastOrder::Input;
+  const dt::FastResult r = fastChecked(p, o);
+  CHECK(r.tri.size() == 400);  // the fan around the centre
+  CHECK(r.stats.cavityFaces >= 398);
+}

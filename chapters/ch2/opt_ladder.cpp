@@ -94,8 +94,8 @@ int main(int argc, char** argv) {
   f.ladderCallPredicates = f.ladderCentroidWalk = f.ladderMapAdjacency = true;
   steps.push_back({"listings", "corrected listings: pointers, std::map, centroid walk; Hilbert "
                    "order, walk from the last cavity (the setting of Table 2.2)", true, f});
-  steps.push_back({"arrays", "index-based triangles in one contiguous array (24 bytes: 3 "
-                   "vertices, 3 neighbour half-edges)", false, f});
+  steps.push_back({"arrays", "index-based triangles in contiguous arrays (3 vertices, 3 "
+                   "neighbour half-edges: 24 bytes per triangle)", false, f});
   f.ladderMapAdjacency = false;
   steps.push_back({"no map", "no std::map: the new triangles are linked through a per-vertex "
                    "array", false, f});
