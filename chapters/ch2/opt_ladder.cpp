@@ -97,8 +97,8 @@ int main(int argc, char** argv) {
   steps.push_back({"arrays", "index-based triangles in contiguous arrays (3 vertices, 3 "
                    "neighbour half-edges: 24 bytes per triangle)", false, f});
   f.ladderMapAdjacency = false;
-  steps.push_back({"no map", "no std::map: the new triangles are linked through a per-vertex "
-                   "array", false, f});
+  steps.push_back({"no map", "no std::map: each new triangle finds its neighbour among the "
+                   "few cavity boundary edges", false, f});
   f.ladderCentroidWalk = false;
   steps.push_back({"walk", "orientation-only visibility walk that skips its entry edge (no "
                    "incircle, no centroid)", false, f});
