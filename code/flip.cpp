@@ -124,6 +124,7 @@ FlipStats lawsonFlip(Triangulation& T) {
 }
 //! [lawsonFlip]
 
+//! [superInCircle]
 int superInCircle(const Vertex* a, const Vertex* b, const Vertex* c, const Vertex* d) {
   // "d below the plane of a, b, c" is Q = O(d,b,c) z_a + O(a,d,c) z_b + O(a,b,d) z_c
   // - O(a,b,c) z_d > 0 (O = orientation), which has the sign of incircle(a, b, c, d).
@@ -148,6 +149,7 @@ int superInCircle(const Vertex* a, const Vertex* b, const Vertex* c, const Verte
   }
   return incircle(a->x, a->y, b->x, b->y, c->x, c->y, d->x, d->y);
 }
+//! [superInCircle]
 
 void compactFaces(Triangulation& T) {
   std::deque<Face>& F = T.faces();
