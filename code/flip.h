@@ -58,7 +58,6 @@ enum class RecoveryRule {
   Full
 };
 
-
 /// The incircle test with the super vertices p_{-m} pushed to infinity (2.2.1: "assume every
 /// p_{-j} is far enough so that it does not fall into any circumcircle"). Lift the points to
 /// z = x² + y², and lift each super vertex further by H_m, with H_{-1} >> H_{-2} >> H_{-3} >>
@@ -68,7 +67,6 @@ enum class RecoveryRule {
 /// exhausted ties) by the ordinary incircle test. > 0: d is in conflict with (a, b, c), which
 /// must be counter-clockwise.
 int superInCircle(const Vertex* a, const Vertex* b, const Vertex* c, const Vertex* d);
-
 
 /// Recovers DT(S) from T = DT(S0 ∪ S) (built with initSuperTriangles + delaunayTrgl):
 /// flips edges by `rule`, then, for RecoveryRule::Full, removes every face incident to a super

@@ -1,8 +1,19 @@
 #!/usr/bin/env bash
-# Runs every test: builds the library, the CLI and the doctest suite (Release), then ctest.
+# Runs every test: builds the library, the CLI and the doctest suite (Release), then ctest;
+# then the sanitizer build and a short fuzz run (below).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/deps.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release > /dev/null
 cmake --build build -j"$(nproc)"
 ctest --test-dir build --output-on-failure -j"$(nproc)"
+# Issue 10: the same tests built with AddressSanitizer and UndefinedBehaviorSanitizer (the CLI
+# too: the tests run build-asan/delaunay2d); any report aborts its test. Then a short fuzz run.
+# DT_SKIP_SANITIZERS=1 skips both (a quick local run).
+if [ "${DT_SKIP_SANITIZERS:-0}" != 1 ]; then
+  cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDT_SANITIZE=ON > /dev/null
+  cmake --build build-asan -j"$(nproc)" --target dt_tests delaunay2d
+  ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+    ctest --test-dir build-asan --output-on-failure -j"$(nproc)"
+  bash scripts/fuzz.sh "${DT_FUZZ_SECONDS:-60}"
+fi

@@ -131,15 +131,17 @@ Tris fastMethod(const dtdeg::Family& f, dt::FastOrder order) {
   return r.tri;
 }
 
-// The CLI, with either method; the .ele is read back and checked in input numbering.
-void cli(const dtdeg::Family& f, const std::string& method, int index) {
-  const std::string base = "degenerate_" + std::to_string(index) + "_" + method;
+// The CLI with the given options; the .ele is read back and checked in input numbering.
+void cli(const dtdeg::Family& f, const std::string& options, int index) {
+  std::string tag = options;
+  std::replace_if(tag.begin(), tag.end(), [](char c) { return c == ' ' || c == '-'; }, '_');
+  const std::string base = "degenerate_" + std::to_string(index) + tag;
   const std::string in = dttest::tmpPath(base + ".node"), out = dttest::tmpPath(base + "_out");
   std::remove((out + ".ele").c_str());
   dttest::writeText(in, dttest::nodeText(f.points, 1));
-  const dttest::CliResult r = dttest::runCli("'" + in + "' -o '" + out + "' --method " + method);
-  REQUIRE_MESSAGE(r.status == 0, f.name << " (CLI " << method << "): " << r.err);
-  checkResult(f.name + " (CLI " + method + ")", f.points, dttest::readEle(out + ".ele", 1));
+  const dttest::CliResult r = dttest::runCli("'" + in + "' -o '" + out + "' " + options);
+  REQUIRE_MESSAGE(r.status == 0, f.name << " (CLI " << options << "): " << r.err);
+  checkResult(f.name + " (CLI " + options + ")", f.points, dttest::readEle(out + ".ele", 1));
 }
 
 // Sorted list of triangles, each rotated to start at its smallest index: equal iff same mesh.
@@ -202,12 +204,13 @@ TEST_CASE("degenerate families: Algorithm 1 (plain triangle list) gives a valid 
   }
 }
 
-TEST_CASE("degenerate families: the CLI writes the exact DT(S) with both methods") {
+TEST_CASE("degenerate families: the CLI writes the exact DT(S) with every method and kernel") {
   int i = 0;
   for (const dtdeg::Family& f : dtdeg::families()) {
     CAPTURE(f.name);
-    cli(f, "hull", i);
-    cli(f, "super", i);
+    cli(f, "--method hull", i);  // the fast kernel
+    cli(f, "--method hull --kernel listings", i);
+    cli(f, "--method super", i);
     ++i;
   }
 }
@@ -239,7 +242,8 @@ TEST_CASE("degenerate families: a huge input of few distinct points") {
   // The hull is (0,0) (1,0) (2,0.25) (-1,3): n_f = 2(n-1) - n_h = 2*6 - 4.
   CHECK(hull.size() == 8);
   fastMethod(f, dt::FastOrder::RadixBrio);
-  cli(f, "hull", 1000);
+  cli(f, "--method hull", 1000);
+  cli(f, "--method hull --kernel listings --order input", 1000);
 }
 
 TEST_CASE("degenerate input without a triangulation is refused by every method") {

@@ -25,7 +25,7 @@ namespace dtfuzz {
 using XY = std::vector<double>;
 
 /// Largest point set the harnesses triangulate: bigger sets add little and slow the search.
-constexpr std::size_t kMaxPoints = 200;
+constexpr std::size_t kMaxPoints = 100;
 
 inline std::vector<char> firstOccurrences(const XY& p, std::size_t& distinct) {
   std::set<std::pair<double, double>> seen;
