@@ -12,6 +12,7 @@
 #include <cstring>
 #include <iostream>
 #include <numeric>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -122,6 +123,11 @@ class Progress {
 };
 
 constexpr std::size_t kNamedDuplicates = 10;
+
+// Valid input that the chosen method cannot handle (exit status 2, like bad input).
+struct UnsupportedInput : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
 
 // Inserts S[from..) with delaunayTrgl in chunks (the same insertions as one call), reporting
 // progress between chunks.
@@ -286,7 +292,10 @@ int main(int argc, char** argv) {
           dt::initSuperTriangles(T, x0, y0, x1, y1, factor);
           break;
         } catch (const dt::DegenerateInput&) {
-          if (factor == 1.01) throw std::runtime_error("super-triangles do not fit in doubles");
+          // The input is valid, the method cannot hold it: a usage error (exit 2), not a bug.
+          if (factor == 1.01) throw UnsupportedInput(
+              "--method super cannot enclose points this close to the overflow threshold "
+              "(|x| or |y| near 1.8e308) in double super-triangles; use --method hull");
         }
       }
       progress.phase("inserting " + std::to_string(S.size()) + " points (listings)");
@@ -352,6 +361,9 @@ int main(int argc, char** argv) {
   } catch (const dt::DegenerateInput& e) {
     std::cerr << "delaunay2d: " << opt.input << ": " << e.what()
               << ": no triangulation exists\n";
+    return 2;
+  } catch (const UnsupportedInput& e) {
+    std::cerr << "delaunay2d: " << opt.input << ": " << e.what() << "\n";
     return 2;
   } catch (const std::exception& e) {
     std::cerr << "delaunay2d: error: " << e.what() << "\n";

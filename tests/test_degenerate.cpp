@@ -257,3 +257,29 @@ TEST_CASE("degenerate input without a triangulation is refused by every method")
     CHECK_THROWS_AS(dt::fastDelaunay(p), dt::DegenerateInput);
   }
 }
+
+TEST_CASE("coordinates near the overflow threshold: hull methods exact, super refused cleanly") {
+  // Sums and differences of coordinates near DBL_MAX overflow; the hull method and the fast
+  // kernel need neither (exact predicates, centroid computed without overflow). Super-triangles
+  // 10x (or even 1.01x) the bounding box cannot be represented in doubles.
+  dtdeg::Family f{"near DBL_MAX", dtdeg::scaledUniform(300, 1.7e308, 31)};
+  f.points.insert(f.points.end(), {1.7976931348623157e308, 1.7976931348623157e308,
+                                   -1.7976931348623157e308, 0, 0, -1.7976931348623157e308,
+                                   0, 0, 5e-324, 0});
+  hullMethod(f, dt::StartRule::LastCavity);
+  fastMethod(f, dt::FastOrder::RadixBrio);
+  cli(f, "--method hull", 2000);
+  cli(f, "--method hull --kernel listings", 2000);
+  double x0, y0, x1, y1;
+  bbox(f.points, x0, y0, x1, y1);
+  dt::Triangulation T;
+  CHECK_THROWS_AS(dt::initSuperTriangles(T, x0, y0, x1, y1), dt::DegenerateInput);
+  const std::string in = dttest::tmpPath("near_max.node"), out = dttest::tmpPath("near_max_super");
+  std::remove((out + ".ele").c_str());
+  dttest::writeText(in, dttest::nodeText(f.points, 1));
+  const dttest::CliResult r = dttest::runCli("'" + in + "' -o '" + out + "' --method super");
+  CHECK(r.status == 2);
+  CHECK(r.err.find("--method super cannot enclose points this close to the overflow threshold") !=
+        std::string::npos);
+  CHECK_FALSE(dttest::fileExists(out + ".ele"));
+}
