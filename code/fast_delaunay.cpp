@@ -9,107 +9,31 @@
 
 #include "hilbert.h"
 #include "predicates.h"
+#include "predicates_inline.h"
 #include "triangulate.h"
 
 namespace dt {
 
 namespace {
 
-constexpr double kU = 0x1p-53;  // unit roundoff of binary64
-
 // ---------------------------------------------------------------------------------------------
-// The robust predicates of predicates.cpp, inlined and without the global counters. The filters
-// and their error bounds are exactly those derived there (5u (|L|+|R|) for the orientation, 12u
-// times the permanent for incircle, with the same underflow guards). Between the filter and the
-// GMP fallback sits one more exact stage, for the degenerate tests that grids and other
-// "round" data produce in bulk:
-//
-// Small-integer stage. Suppose every difference d_i is computed exactly (checked with Knuth's
-// two-sum: its rounding error is zero) and is an integer multiple of a power of two h, with
-// M = max |d_i| <= 2^12 h. Then in incircle every quantity the filter computes is an integer
-// multiple of h^k (k its degree) of magnitude below 2^53 h^k: products |d_i d_j| <= M^2,
-// lifts and minors <= 2 M^2, lift x minor <= 4 M^4, partial sums <= 12 M^4 < 2^52 h^4. Each
-// is representable (also as a subnormal, as long as h^4 >= 2^-1074), so every rounding is
-// exact and the filter's `det` IS the determinant. For orient2d the same holds with degree 2
-// and M <= 2^25 h (2 M^2 < 2^52 h^2). We take h = 2^(e-12) (resp. 2^(e-25)) with M < 2^e,
-// and stay far from underflow and overflow: 2^-260 <= h <= 2^200.
+// The robust predicates of predicates_inline.h (the one core: filter, small-multiple stage,
+// GMP), inlined, without the library's global counters; the kernel counts GMP calls itself.
 //! [fastPredicates]
-inline bool exactDifference(double a, double b, double d) {  // d = fl(a - b)
-  const double bb = d - a;
-  return (a - (d - bb)) - (b + bb) == 0;  // two-sum of a and -b: the rounding error
-}
-
-// All |d_i| <= 2^bits h for a power of two h in [2^-260, 2^200] that divides every d_i.
-template <int N>
-inline bool smallMultiples(const double (&d)[N], int bits) {
-  double m = 0;
-  for (double v : d) m = std::max(m, std::fabs(v));
-  if (!(m > 0)) return false;
-  int e = 0;
-  std::frexp(m, &e);  // m < 2^e
-  if (e - bits < -260 || e - bits > 200) return false;
-  const double inv = std::ldexp(1.0, bits - e);  // 1/h, exact
-  for (double v : d) {
-    const double q = v * inv;  // exact: a power-of-two scaling within range
-    if (q != double(std::int64_t(q))) return false;
-  }
-  return true;
-}
-
 struct InlinePredicates {
   FastStats* st;
   int orient(const double* a, const double* b, const double* c) const {
-    const double acx = a[0] - c[0], bcy = b[1] - c[1];
-    const double acy = a[1] - c[1], bcx = b[0] - c[0];
-    const double detleft = acx * bcy;
-    const double detright = acy * bcx;
-    const double det = detleft - detright;
-    const double detsum = std::fabs(detleft) + std::fabs(detright);
-    const double bound = 5 * kU * detsum;
-    if (detsum >= 0x1p-960 && (det > bound || -det > bound)) return det > 0 ? 1 : -1;
-    const double d[4] = {acx, bcy, acy, bcx};
-    if (exactDifference(a[0], c[0], acx) && exactDifference(b[1], c[1], bcy) &&
-        exactDifference(a[1], c[1], acy) && exactDifference(b[0], c[0], bcx) &&
-        smallMultiples(d, 25))
-      return (det > 0) - (det < 0);
-    ++st->exactOrient;
-    return orient2dExact(a[0], a[1], b[0], b[1], c[0], c[1]);
+    int stage = pred::kFilter;
+    const int s = pred::orient2d(a[0], a[1], b[0], b[1], c[0], c[1], stage);
+    if (__builtin_expect(stage == pred::kExact, 0)) ++st->exactOrient;
+    return s;
   }
   int incircle(const double* a, const double* b, const double* c, const double* d) const {
-    const double adx = a[0] - d[0], ady = a[1] - d[1];
-    const double bdx = b[0] - d[0], bdy = b[1] - d[1];
-    const double cdx = c[0] - d[0], cdy = c[1] - d[1];
-    const double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy;
-    const double cdxady = cdx * ady, adxcdy = adx * cdy;
-    const double adxbdy = adx * bdy, bdxady = bdx * ady;
-    const double alift = adx * adx + ady * ady;
-    const double blift = bdx * bdx + bdy * bdy;
-    const double clift = cdx * cdx + cdy * cdy;
-    const double det = alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy) +
-                       clift * (adxbdy - bdxady);
-    const double permanent = (std::fabs(bdxcdy) + std::fabs(cdxbdy)) * alift +
-                             (std::fabs(cdxady) + std::fabs(adxcdy)) * blift +
-                             (std::fabs(adxbdy) + std::fabs(bdxady)) * clift;
-    const double bound = 12 * kU * permanent;
-    if ((det > bound || -det > bound) && permanent >= 0x1p-900) {
-      // The underflow guard of predicates.cpp: every difference zero or at least 2^-511. The
-      // smallest magnitude decides it at once in the usual case (no zero difference).
-      const double m = std::min(std::min(std::min(std::fabs(adx), std::fabs(ady)),
-                                         std::min(std::fabs(bdx), std::fabs(bdy))),
-                                std::min(std::fabs(cdx), std::fabs(cdy)));
-      if (m >= 0x1p-511 || (big(adx) && big(ady) && big(bdx) && big(bdy) && big(cdx) && big(cdy)))
-        return det > 0 ? 1 : -1;
-    }
-    const double diff[6] = {adx, ady, bdx, bdy, cdx, cdy};
-    if (exactDifference(a[0], d[0], adx) && exactDifference(a[1], d[1], ady) &&
-        exactDifference(b[0], d[0], bdx) && exactDifference(b[1], d[1], bdy) &&
-        exactDifference(c[0], d[0], cdx) && exactDifference(c[1], d[1], cdy) &&
-        smallMultiples(diff, 12))
-      return (det > 0) - (det < 0);
-    ++st->exactIncircle;
-    return incircleExact(a[0], a[1], b[0], b[1], c[0], c[1], d[0], d[1]);
+    int stage = pred::kFilter;
+    const int s = pred::incircle(a[0], a[1], b[0], b[1], c[0], c[1], d[0], d[1], stage);
+    if (__builtin_expect(stage == pred::kExact, 0)) ++st->exactIncircle;
+    return s;
   }
-  static bool big(double v) { return v == 0 || std::fabs(v) >= 0x1p-511; }
 };
 //! [fastPredicates]
 
@@ -413,145 +337,6 @@ class Kernel {
   int last_ = 0;
 };
 
-// ---------------------------------------------------------------------------------------------
-// Insertion order: Hilbert keys (hilbert.h), optionally grouped in BRIO rounds, sorted by one
-// least-significant-digit radix sort on (round, key, index) packed in 64 bits. The index digits
-// need no pass: every pass is stable and the input is in index order, so equal keys keep it.
-// BRIO rounds drawn by coins as Amenta, Choi and Rote do, with a biased coin: a point goes to
-// the last round with probability 3/4, to the one before with probability 3/16, and so on; the
-// first round takes what is left. (Their fair coin makes the last round half of the points;
-// with 3/4 in one sweep the last, largest round keeps more locality; CGAL's spatial sort uses
-// the same ratio.) A hash of the point's number plays the coin, so the order is reproducible.
-std::uint64_t splitmix64(std::uint64_t z) {
-  z += 0x9e3779b97f4a7c15ULL;
-  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-  return z ^ (z >> 31);
-}
-
-// Hilbert keys, four levels per table look-up. The state of the descent of hilbertIndex
-// (hilbert.cpp) is the axis of "red" (blue is the other one) and the signs of red and blue: 8
-// states. kHilbert4[state][4 bits of i, 4 bits of j] holds the 4 quadrant digits and the state
-// after them; it is built once by running that descent, so the keys are the same (the tests
-// compare them with hilbertKeys).
-struct HilbertTables {
-  std::uint16_t one[8][4];     // one level:  digit | next state << 8
-  std::uint16_t four[8][256];  // four levels: 8 bits of key | next state << 8
-  HilbertTables() {
-    for (int s0 = 0; s0 < 8; ++s0)
-      for (int in = 0; in < 256; ++in) {
-        int s = s0, key = 0;
-        for (int l = 3; l >= 0; --l) {
-          const int d = step(s, (in >> (4 + l)) & 1, (in >> l) & 1);
-          key = (key << 2) | (d & 3);
-          s = d >> 8;
-        }
-        four[s0][in] = std::uint16_t(key | (s << 8));
-        if (in < 4) one[s0][in] = std::uint16_t(step(s0, in >> 1, in & 1));
-      }
-  }
-  // One level of hilbertIndex from state s for the bits bi (along x) and bj (along y).
-  static int step(int s, int bi, int bj) {
-    int redAxis = s & 1;
-    bool redNeg = (s >> 1) & 1, blueNeg = (s >> 2) & 1;
-    const int bit[2] = {bi, bj};
-    const bool plusRed = (bit[redAxis] != 0) != redNeg;
-    const bool plusBlue = (bit[1 - redAxis] != 0) != blueNeg;
-    const int q = plusRed ? (plusBlue ? 2 : 3) : (plusBlue ? 1 : 0);
-    if (q == 0 || q == 3) {
-      redAxis = 1 - redAxis;
-      std::swap(redNeg, blueNeg);
-      if (q == 3) {
-        redNeg = !redNeg;
-        blueNeg = !blueNeg;
-      }
-    }
-    return q | ((redAxis | int(redNeg) << 1 | int(blueNeg) << 2) << 8);
-  }
-};
-
-std::uint64_t hilbertIndexByTable(std::uint32_t i, std::uint32_t j, int depth) {
-  static const HilbertTables T;
-  int s = 0;  // red = +x, blue = +y
-  std::uint64_t key = 0;
-  int l = depth;
-  for (; l % 4 != 0; --l) {
-    const int d = T.one[s][(((i >> (l - 1)) & 1) << 1) | ((j >> (l - 1)) & 1)];
-    key = (key << 2) | std::uint64_t(d & 3);
-    s = d >> 8;
-  }
-  for (; l > 0; l -= 4) {
-    const int d = T.four[s][(((i >> (l - 4)) & 15) << 4) | ((j >> (l - 4)) & 15)];
-    key = (key << 8) | std::uint64_t(d & 255);
-    s = d >> 8;
-  }
-  return key;
-}
-
-// The cell of v along one axis, computed as in hilbert.cpp (so the keys are equal):
-// floor(t 2^depth), t = (v/2 - lo/2) / halfSide in [0, 1]; the scaling by 2^depth is exact.
-inline std::uint32_t cellOf(double v, double lo, double halfSide, double scale, double top) {
-  const double c = std::floor((v / 2 - lo / 2) / halfSide * scale);
-  return std::uint32_t(c < top ? c : top);
-}
-
-// Calls f(k, key of point k) for every point, keys as hilbertKeys computes them.
-template <class F>
-void forEachHilbertKey(const std::vector<double>& xy, int depth, F f) {
-  const HilbertBox box = hilbertBox(xy);  // also refuses NaN and infinities
-  const std::size_t n = xy.size() / 2;
-  const double scale = std::ldexp(1.0, depth), top = scale - 1;
-  const bool flat = !(box.halfSide > 0);  // all points equal: every cell is 0
-  for (std::size_t k = 0; k < n; ++k) {
-    const std::uint32_t i = flat ? 0 : cellOf(xy[2 * k], box.xmin, box.halfSide, scale, top);
-    const std::uint32_t j = flat ? 0 : cellOf(xy[2 * k + 1], box.ymin, box.halfSide, scale, top);
-    f(k, hilbertIndexByTable(i, j, depth));
-  }
-}
-
-std::vector<int> radixHilbertOrder(const std::vector<double>& xy, int rounds, std::uint64_t seed) {
-  const std::size_t n = xy.size() / 2;
-  int idxBits = 1;
-  while ((std::size_t{1} << idxBits) < n) ++idxBits;
-  int roundBits = 0;
-  while ((1 << roundBits) < rounds) ++roundBits;
-  const int depth = hilbertAutoDepth(n);
-  // Dropping the last levels of a key gives the key of a coarser curve: same order, more ties.
-  const int keyBits = std::min(2 * depth, 64 - idxBits - roundBits);
-  // The packed words, and the histograms of all the radix passes, in one sweep.
-  constexpr int kDigit = 13;  // 3 passes for the 39 bits of 10^6 points; 8192 counters fit L2
-  constexpr std::uint64_t kMask = (std::uint64_t{1} << kDigit) - 1;
-  const int passes = (keyBits + roundBits + kDigit - 1) / kDigit;
-  std::vector<std::uint32_t> count(std::size_t(passes) << kDigit, 0);
-  std::vector<std::uint64_t> a(n), b(n);
-  const int shift = 2 * depth - keyBits;
-  forEachHilbertKey(xy, depth, [&](std::size_t i, std::uint64_t key) {
-    std::uint64_t r = 0;
-    if (rounds > 1) {  // pairs of zero bits of a random word: none w.p. 3/4, one w.p. 3/16...
-      const std::uint64_t h = splitmix64(seed ^ (0x632be59bd9b4e019ULL * (i + 1)));
-      int z = 0;
-      while (z < rounds - 1 && ((h >> (2 * z)) & 3) == 0) ++z;
-      r = std::uint64_t(rounds - 1 - z);
-    }
-    const std::uint64_t v = (((r << keyBits) | (key >> shift)) << idxBits) | i;
-    a[i] = v;
-    for (int q = 0; q < passes; ++q) ++count[(std::size_t(q) << kDigit) + ((v >> (idxBits + kDigit * q)) & kMask)];
-  });
-  for (int q = 0; q < passes; ++q) {
-    std::uint32_t* c = &count[std::size_t(q) << kDigit];
-    std::uint32_t sum = 0;
-    for (std::size_t d = 0; d <= kMask; ++d) sum += std::exchange(c[d], sum);
-    const int lo = idxBits + kDigit * q;
-    for (std::uint64_t v : a) b[c[(v >> lo) & kMask]++] = v;
-    a.swap(b);
-  }
-  std::vector<std::uint64_t>().swap(b);
-  std::vector<int> order(n);
-  const std::uint64_t idxMask = (std::uint64_t{1} << idxBits) - 1;
-  for (std::size_t i = 0; i < n; ++i) order[i] = int(a[i] & idxMask);
-  return order;
-}
-
 template <class Pred, bool kMap, bool kCentroid>
 void run(std::vector<double>& P, std::vector<int>& orig, FastResult& res, Pred pred) {
   const int n = int(orig.size());
@@ -603,9 +388,7 @@ void run(std::vector<double>& P, std::vector<int>& orig, FastResult& res, Pred p
 std::vector<std::uint64_t> fastHilbertKeys(const std::vector<double>& xy, int depth) {
   if (depth == 0) depth = hilbertAutoDepth(xy.size() / 2);
   if (depth < 1 || depth > 31) throw std::invalid_argument("fastHilbertKeys: depth out of 1..31");
-  std::vector<std::uint64_t> keys(xy.size() / 2);
-  forEachHilbertKey(xy, depth, [&](std::size_t k, std::uint64_t key) { keys[k] = key; });
-  return keys;
+  return hilbertKeysFast(xy, depth);
 }
 
 //! [fastDelaunay]
@@ -624,11 +407,11 @@ FastResult fastDelaunay(const std::vector<double>& xy, const FastOptions& opt) {
   if (opt.order == FastOrder::Input) {
     orig.resize(n);
     for (std::size_t i = 0; i < n; ++i) orig[i] = int(i);
-  } else if (opt.order == FastOrder::RadixBrio) {
-    orig = radixHilbertOrder(xy, std::max(1, std::min(opt.rounds, 32)), opt.seed);
-  } else {
+  } else {  // hilbert.h: one Hilbert sort for the whole library
     const std::vector<std::size_t> o =
-        opt.order == FastOrder::Brio ? brioOrder(xy, opt.seed) : hilbertOrder(xy);
+        opt.order == FastOrder::RadixBrio
+            ? brioCoinOrder(xy, opt.seed, std::max(1, std::min(opt.rounds, 32)))
+            : (opt.order == FastOrder::Brio ? brioOrder(xy, opt.seed) : hilbertOrder(xy));
     orig.assign(o.begin(), o.end());
   }
   // The points in insertion order, contiguous: the walk and the cavity read neighbours.

@@ -14,8 +14,8 @@ namespace dt {
 
 /// Insertion order of fastDelaunay.
 enum class FastOrder {
-  RadixBrio,  ///< BRIO rounds drawn by coin flips, Hilbert keys, one radix sort (the default)
-  Brio,       ///< dt::brioOrder (hilbert.h): BRIO rounds, each Hilbert-sorted by std::sort
+  RadixBrio,  ///< dt::brioCoinOrder (hilbert.h): BRIO rounds drawn by biased coins (default)
+  Brio,       ///< dt::brioOrder (hilbert.h): BRIO rounds of doubling sizes, each Hilbert-sorted
   Hilbert,    ///< dt::hilbertOrder (hilbert.h): one Hilbert sort of all the points
   Input       ///< the order of the input
 };
@@ -59,7 +59,7 @@ struct FastResult {
 /// coordinates or more than 2^28 points.
 FastResult fastDelaunay(const std::vector<double>& xy, const FastOptions& opt = {});
 
-/// The Hilbert keys of hilbertKeys (hilbert.h), equal to them, computed four curve levels per
+/// dt::hilbertKeysFast (hilbert.h): the keys of hilbertKeys, computed four curve levels per
 /// table look-up (the descent of hilbertIndex has 8 states). depth 0 = hilbertAutoDepth(n).
 std::vector<std::uint64_t> fastHilbertKeys(const std::vector<double>& xy, int depth = 0);
 

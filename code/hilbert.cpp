@@ -167,7 +167,7 @@ std::vector<std::uint64_t> hilbertKeys(const std::vector<double>& xy, int depth)
   const HilbertBox box = hilbertBox(xy);
   const std::size_t n = xy.size() / 2;
   depth = checkedDepth(depth, n);
-  std::vector<std::uint64_t> keys(n);
+  std::vector<std::uint64_t> keys(n);  // the reference: hilbertIndex, one level at a time
   for (std::size_t k = 0; k < n; ++k)
     keys[k] = hilbertIndex(cellOf(xy[2 * k], box.xmin, box.halfSide, depth),
                            cellOf(xy[2 * k + 1], box.ymin, box.halfSide, depth), depth);
@@ -189,16 +189,146 @@ std::vector<std::uint64_t> hilbertKeysListing(const std::vector<double>& xy, int
   return keys;
 }
 
+// ---------------------------------------------------------------------------------------------
+// The keys the sorts use: hilbertIndex four levels per table look-up. The state of its descent
+// is the axis of "red" (blue is the other one) and the signs of red and blue: 8 states.
+// four[state][4 bits of i, 4 bits of j] holds the 4 quadrant digits and the state after them;
+// the tables are built once by running the listing's rules, so the keys are the same (the
+// tests compare them with hilbertKeys).
 namespace {
 
-// Sorts idx[lo, hi) by key, ties by index (so the order is reproducible and stable).
-void sortByKey(std::vector<std::size_t>& idx, std::size_t lo, std::size_t hi,
-               const std::vector<std::uint64_t>& keys) {
-  std::vector<std::pair<std::uint64_t, std::size_t>> kv;
-  kv.reserve(hi - lo);
-  for (std::size_t k = lo; k < hi; ++k) kv.emplace_back(keys[idx[k]], idx[k]);
-  std::sort(kv.begin(), kv.end());
-  for (std::size_t k = lo; k < hi; ++k) idx[k] = kv[k - lo].second;
+struct HilbertTables {
+  std::uint16_t one[8][4];     // one level:  digit | next state << 8
+  std::uint16_t four[8][256];  // four levels: 8 bits of key | next state << 8
+  HilbertTables() {
+    for (int s0 = 0; s0 < 8; ++s0)
+      for (int in = 0; in < 256; ++in) {
+        int s = s0, key = 0;
+        for (int l = 3; l >= 0; --l) {
+          const int d = step(s, (in >> (4 + l)) & 1, (in >> l) & 1);
+          key = (key << 2) | (d & 3);
+          s = d >> 8;
+        }
+        four[s0][in] = std::uint16_t(key | (s << 8));
+        if (in < 4) one[s0][in] = std::uint16_t(step(s0, in >> 1, in & 1));
+      }
+  }
+  // One level from state s for the bits bi (along x) and bj (along y).
+  static int step(int s, int bi, int bj) {
+    int redAxis = s & 1;
+    bool redNeg = (s >> 1) & 1, blueNeg = (s >> 2) & 1;
+    const int bit[2] = {bi, bj};
+    const bool plusRed = (bit[redAxis] != 0) != redNeg;
+    const bool plusBlue = (bit[1 - redAxis] != 0) != blueNeg;
+    const int q = plusRed ? (plusBlue ? 2 : 3) : (plusBlue ? 1 : 0);
+    if (q == 0 || q == 3) {
+      redAxis = 1 - redAxis;
+      std::swap(redNeg, blueNeg);
+      if (q == 3) {
+        redNeg = !redNeg;
+        blueNeg = !blueNeg;
+      }
+    }
+    return q | ((redAxis | int(redNeg) << 1 | int(blueNeg) << 2) << 8);
+  }
+};
+
+std::uint64_t hilbertIndexByTable(std::uint32_t i, std::uint32_t j, int depth) {
+  static const HilbertTables T;
+  int s = 0;  // red = +x, blue = +y
+  std::uint64_t key = 0;
+  int l = depth;
+  for (; l % 4 != 0; --l) {
+    const int d = T.one[s][(((i >> (l - 1)) & 1) << 1) | ((j >> (l - 1)) & 1)];
+    key = (key << 2) | std::uint64_t(d & 3);
+    s = d >> 8;
+  }
+  for (; l > 0; l -= 4) {
+    const int d = T.four[s][(((i >> (l - 4)) & 15) << 4) | ((j >> (l - 4)) & 15)];
+    key = (key << 8) | std::uint64_t(d & 255);
+    s = d >> 8;
+  }
+  return key;
+}
+
+// Calls f(k, key of point k) for every point, keys equal to hilbertKeys'.
+template <class F>
+void forEachKey(const std::vector<double>& xy, int depth, F f) {
+  const HilbertBox box = hilbertBox(xy);  // also refuses NaN and infinities
+  const std::size_t n = xy.size() / 2;
+  for (std::size_t k = 0; k < n; ++k)
+    f(k, hilbertIndexByTable(cellOf(xy[2 * k], box.xmin, box.halfSide, depth),
+                             cellOf(xy[2 * k + 1], box.ymin, box.halfSide, depth), depth));
+}
+
+int bitsFor(std::size_t n) {  // smallest b with n <= 2^b
+  int b = 0;
+  while ((std::size_t{1} << b) < n) ++b;
+  return b;
+}
+
+// Stable least-significant-digit radix sort of the words a on their bits [lo, hi). Each pass
+// keeps the order of equal digits, so words equal on [lo, hi) keep their input order.
+void radixSort(std::vector<std::uint64_t>& a, int lo, int hi) {
+  if (hi <= lo || a.size() < 2) return;
+  const int passes = (hi - lo + 12) / 13;  // digits of at most 13 bits: 8192 counters fit L2
+  const int digit = (hi - lo + passes - 1) / passes;
+  const std::uint64_t mask = (std::uint64_t{1} << digit) - 1;
+  std::vector<std::uint32_t> count(std::size_t(passes) << digit, 0);
+  for (std::uint64_t v : a)  // the histograms of all the passes in one sweep
+    for (int q = 0; q < passes; ++q)
+      ++count[(std::size_t(q) << digit) + ((v >> (lo + digit * q)) & mask)];
+  std::vector<std::uint64_t> b(a.size());
+  for (int q = 0; q < passes; ++q) {
+    std::uint32_t* c = &count[std::size_t(q) << digit];
+    std::uint32_t sum = 0;
+    for (std::size_t d = 0; d <= mask; ++d) sum += std::exchange(c[d], sum);
+    const int sh = lo + digit * q;
+    for (std::uint64_t v : a) b[c[(v >> sh) & mask]++] = v;
+    a.swap(b);
+  }
+}
+
+// Sorts the points by (group, key, index), group[k] < 2^groupBits (none if groupBits = 0),
+// with one radix sort of (group, key, index) packed in 64 bits when they fit, else std::sort.
+// With `coarsen`, levels of the curve are dropped until they fit: the key of a coarser curve,
+// the same order up to more ties (broken by index).
+std::vector<std::size_t> sortByGroupKeyIndex(const std::vector<double>& xy, int depth,
+                                             const std::vector<std::uint32_t>& group,
+                                             int groupBits, bool coarsen = false) {
+  const std::size_t n = xy.size() / 2;
+  const int idxBits = bitsFor(n);
+  if (coarsen) depth = std::max(1, std::min(depth, (64 - groupBits - idxBits) / 2));
+  const int keyBits = 2 * depth;
+  std::vector<std::size_t> order(n);
+  if (groupBits + keyBits + idxBits <= 64) {
+    std::vector<std::uint64_t> w(n);
+    forEachKey(xy, depth, [&](std::size_t k, std::uint64_t key) {
+      const std::uint64_t g = groupBits ? group[k] : 0;
+      w[k] = (((g << keyBits) | key) << idxBits) | k;
+    });
+    // The words are in index order and the sort is stable: the index bits need no pass.
+    radixSort(w, idxBits, idxBits + keyBits + groupBits);
+    const std::uint64_t idxMask = (std::uint64_t{1} << idxBits) - 1;
+    for (std::size_t k = 0; k < n; ++k) order[k] = std::size_t(w[k] & idxMask);
+    return order;
+  }
+  // More than 2^64 combinations (n beyond 2^24 or so at the auto depth): a comparison sort.
+  struct Item {
+    std::uint32_t g;
+    std::uint64_t key;
+    std::size_t k;
+    bool operator<(const Item& o) const {
+      return g != o.g ? g < o.g : (key != o.key ? key < o.key : k < o.k);
+    }
+  };
+  std::vector<Item> items(n);
+  forEachKey(xy, depth, [&](std::size_t k, std::uint64_t key) {
+    items[k] = {groupBits ? group[k] : 0u, key, k};
+  });
+  std::sort(items.begin(), items.end());
+  for (std::size_t k = 0; k < n; ++k) order[k] = items[k].k;
+  return order;
 }
 
 // splitmix64: a small, fully specified generator, so BRIO orders are the same everywhere.
@@ -211,12 +341,17 @@ std::uint64_t splitmix(std::uint64_t& s) {
 
 }  // namespace
 
+std::vector<std::uint64_t> hilbertKeysFast(const std::vector<double>& xy, int depth) {
+  const std::size_t n = xy.size() / 2;
+  depth = checkedDepth(depth, n);
+  std::vector<std::uint64_t> keys(n);
+  forEachKey(xy, depth, [&](std::size_t k, std::uint64_t key) { keys[k] = key; });
+  return keys;
+}
+
 std::vector<std::size_t> hilbertOrder(const std::vector<double>& xy, int depth) {
-  const std::vector<std::uint64_t> keys = hilbertKeys(xy, depth);
-  std::vector<std::size_t> idx(keys.size());
-  std::iota(idx.begin(), idx.end(), std::size_t{0});
-  sortByKey(idx, 0, idx.size(), keys);
-  return idx;
+  if (xy.size() % 2 != 0) throw std::invalid_argument("hilbertBox: odd number of coordinates");
+  return sortByGroupKeyIndex(xy, checkedDepth(depth, xy.size() / 2), {}, 0);
 }
 
 std::vector<std::size_t> brioRoundSizes(std::size_t n, std::size_t firstRound) {
@@ -235,8 +370,9 @@ std::vector<std::size_t> brioRoundSizes(std::size_t n, std::size_t firstRound) {
 //! [brioOrder]
 std::vector<std::size_t> brioOrder(const std::vector<double>& xy, std::uint64_t seed, int depth,
                                    std::vector<std::size_t>* roundStart) {
-  const std::vector<std::uint64_t> keys = hilbertKeys(xy, depth);  // one box for all rounds
-  const std::size_t n = keys.size();
+  if (xy.size() % 2 != 0) throw std::invalid_argument("hilbertBox: odd number of coordinates");
+  const std::size_t n = xy.size() / 2;
+  depth = checkedDepth(depth, n);
   std::vector<std::size_t> idx(n);
   std::iota(idx.begin(), idx.end(), std::size_t{0});
   // A uniform random permutation (Fisher-Yates), so each round is a random sample of the
@@ -246,16 +382,38 @@ std::vector<std::size_t> brioOrder(const std::vector<double>& xy, std::uint64_t 
     const std::size_t j = std::size_t(splitmix(state) % i);  // bias below i / 2^64: negligible
     std::swap(idx[i - 1], idx[j]);
   }
-  // Then locality inside each round: the Hilbert sort of that round alone.
+  // Its first sizes[0] points form round 0, the next sizes[1] round 1, ... Then locality inside
+  // each round: one sort by (round, Hilbert key over the whole data box, index).
+  std::vector<std::uint32_t> round(n);
   if (roundStart) roundStart->clear();
   std::size_t start = 0;
+  std::uint32_t r = 0;
   for (std::size_t size : brioRoundSizes(n)) {
     if (roundStart) roundStart->push_back(start);
-    sortByKey(idx, start, start + size, keys);
+    for (std::size_t k = start; k < start + size; ++k) round[idx[k]] = r;
     start += size;
+    ++r;
   }
-  return idx;
+  return sortByGroupKeyIndex(xy, depth, round, bitsFor(r));
 }
 //! [brioOrder]
+
+std::vector<std::size_t> brioCoinOrder(const std::vector<double>& xy, std::uint64_t seed,
+                                       int rounds) {
+  if (xy.size() % 2 != 0) throw std::invalid_argument("hilbertBox: odd number of coordinates");
+  if (rounds < 1 || rounds > 32) throw std::invalid_argument("brioCoinOrder: rounds out of 1..32");
+  const std::size_t n = xy.size() / 2;
+  std::vector<std::uint32_t> round(n, 0);
+  for (std::size_t i = 0; i < n && rounds > 1; ++i) {
+    // Pairs of zero bits of a hashed word: none w.p. 3/4 (last round), one w.p. 3/16, ...
+    std::uint64_t s = seed ^ (0x632be59bd9b4e019ULL * (i + 1));
+    const std::uint64_t h = splitmix(s);
+    int z = 0;
+    while (z < rounds - 1 && ((h >> (2 * z)) & 3) == 0) ++z;
+    round[i] = std::uint32_t(rounds - 1 - z);
+  }
+  return sortByGroupKeyIndex(xy, checkedDepth(0, n), round, rounds > 1 ? bitsFor(rounds) : 0,
+                             true);
+}
 
 }  // namespace dt

@@ -1,5 +1,7 @@
 #include "predicates.h"
 
+#include "predicates_inline.h"
+
 #include <gmp.h>
 #include <mpfr.h>
 
@@ -11,8 +13,6 @@ namespace dt {
 namespace {
 PredicateCounters g_counters;
 thread_local int g_lastStage = 0;
-
-constexpr double kU = 0x1p-53;  // unit roundoff of binary64, round to nearest
 
 int signOf(double v) { return (v > 0) - (v < 0); }
 }  // namespace
@@ -328,91 +328,27 @@ int incircleNotesAbs(double ax, double ay, double bx, double by, double cx, doub
 }
 
 // ---------------------------------------------------------------------------------------------
-// Robust predicates: a safe static-dynamic filter, then the exact sign.
-//
-// Error bound for orient2d (u = 2^-53, round to nearest, no FMA: -ffp-contract=off).
-// Write each rounded operation as an exact one times (1 + d), |d| <= u. The computed value is
-//   fl( fl(fl(ax-cx) fl(by-cy)) - fl(fl(ay-cy) fl(bx-cx)) ),
-// so each of the two exact products L = (ax-cx)(by-cy), R = (ay-cy)(bx-cx) reaches the result
-// multiplied by at most four factors (1+d): two differences, one product, one subtraction.
-// Hence |computed - (L - R)| <= g4 (|L| + |R|), g4 = 4u/(1-4u). The computed
-// detsum = fl(|fl(L)| + |fl(R)|) satisfies |L| + |R| <= detsum (1+u)/(1-g3) < detsum (1 + 5u).
-// So the error is below 4u(1 + 9u) detsum, which 5u detsum exceeds; computing 5u detsum itself
-// rounds by a relative u at most, still above. Two caveats the textbook bound ignores:
-//  - underflow: a product below 2^-1022 has an absolute (not relative) error of up to 2^-1075.
-//    Requiring detsum >= 2^-960 makes the margin (5u - 4u(1+9u)) detsum > 2^-1014 dwarf it;
-//    smaller inputs go to the exact stage.
-//  - overflow: any infinity or NaN makes the comparison false, so the exact stage decides.
-// The notes' rule |O| > 1e-15 max(...)^2 is not of this form: it ignores the cancellation in
-// the differences (it uses the coordinates, not |L| + |R|) and the sign of the coordinates.
-//! [orient2d]
+// Robust predicates: the core of predicates_inline.h (filter with a proved bound, the
+// small-multiple stage, GMP), plus the counters and the last stage for the chapter programs.
 int orient2d(double ax, double ay, double bx, double by, double cx, double cy) {
   ++g_counters.orient;
-  const double detleft = (ax - cx) * (by - cy);
-  const double detright = (ay - cy) * (bx - cx);
-  const double det = detleft - detright;
-  const double detsum = std::fabs(detleft) + std::fabs(detright);
-  if (detsum >= 0x1p-960) {
-    const double bound = 5 * kU * detsum;
-    if (det > bound || -det > bound) {
-      g_lastStage = 0;
-      return det > 0 ? 1 : -1;
-    }
-  }
-  g_lastStage = 1;
-  ++g_counters.orientExact;
-  return orient2dExact(ax, ay, bx, by, cx, cy);
+  int stage = pred::kFilter;
+  const int s = pred::orient2d(ax, ay, bx, by, cx, cy, stage);
+  g_lastStage = stage;
+  g_counters.orientExact += stage == pred::kExact;
+  g_counters.orientSmallInt += stage == pred::kSmallInt;
+  return s;
 }
-//! [orient2d]
 
-// Error bound for incircle, in the same style. The determinant is
-//   alift (bdx cdy - cdx bdy) + blift (cdx ady - adx cdy) + clift (adx bdy - bdx ady)
-// with differences to d. Expanded, it is a sum of 24 monomials of degree 4; in floating point
-// each reaches the result through at most 11 rounded operations: 2 differences and 1 product
-// and 1 sum in the lift (4), 2 differences and 1 product and 1 subtraction in the minor (4),
-// the product lift x minor (1), and the two final additions (2). So the error is at most
-// g11 P, where P is the sum of the absolute values of the monomials: the "permanent",
-// computed below as alift (|bdx cdy| + |cdx bdy|) + ... P is taken on the exact differences,
-// so each of its monomials also reaches the computed permanent through 11 roundings (the same
-// 2 + 2 differences, 1 square, 1 lift sum, 1 product, 1 sum of absolute values, 1 product by
-// the lift, 2 final sums): P <= permanent / (1-u)^11 < permanent (1 + 12u). The error is thus
-// below g11 (1 + 12u) permanent < 11u (1 + 24u) permanent, and the computed 12u permanent,
-// at least 12u (1-u) permanent, exceeds it.
-// Underflow: if every nonzero difference is at least 2^-511 in magnitude, no
-// degree-2 product underflows; a degree-4 product may, with an absolute error of at most
-// 2^-1075, which the margin u permanent covers once permanent >= 2^-900. Otherwise, and on
-// overflow (infinity or NaN), the exact stage decides.
-//! [incircle]
 int incircle(double ax, double ay, double bx, double by, double cx, double cy, double dx,
              double dy) {
   ++g_counters.incircle;
-  const double adx = ax - dx, ady = ay - dy;
-  const double bdx = bx - dx, bdy = by - dy;
-  const double cdx = cx - dx, cdy = cy - dy;
-  const double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy;
-  const double cdxady = cdx * ady, adxcdy = adx * cdy;
-  const double adxbdy = adx * bdy, bdxady = bdx * ady;
-  const double alift = adx * adx + ady * ady;
-  const double blift = bdx * bdx + bdy * bdy;
-  const double clift = cdx * cdx + cdy * cdy;
-  const double det = alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy) +
-                     clift * (adxbdy - bdxady);
-  const double permanent = (std::fabs(bdxcdy) + std::fabs(cdxbdy)) * alift +
-                           (std::fabs(cdxady) + std::fabs(adxcdy)) * blift +
-                           (std::fabs(adxbdy) + std::fabs(bdxady)) * clift;
-  auto big = [](double v) { return v == 0 || std::fabs(v) >= 0x1p-511; };
-  if (permanent >= 0x1p-900 && big(adx) && big(ady) && big(bdx) && big(bdy) && big(cdx) &&
-      big(cdy)) {
-    const double bound = 12 * kU * permanent;
-    if (det > bound || -det > bound) {
-      g_lastStage = 0;
-      return det > 0 ? 1 : -1;
-    }
-  }
-  g_lastStage = 1;
-  ++g_counters.incircleExact;
-  return incircleExact(ax, ay, bx, by, cx, cy, dx, dy);
+  int stage = pred::kFilter;
+  const int s = pred::incircle(ax, ay, bx, by, cx, cy, dx, dy, stage);
+  g_lastStage = stage;
+  g_counters.incircleExact += stage == pred::kExact;
+  g_counters.incircleSmallInt += stage == pred::kSmallInt;
+  return s;
 }
-//! [incircle]
 
 }  // namespace dt

@@ -21,9 +21,11 @@ namespace dt {
 /// share of time spent in the orientation test). Not thread-safe: one triangulation at a time.
 struct PredicateCounters {
   std::uint64_t orient = 0;       ///< calls of orient2d (robust)
-  std::uint64_t orientExact = 0;  ///< of which reached the exact stage
+  std::uint64_t orientExact = 0;  ///< of which reached the exact (GMP) stage
   std::uint64_t incircle = 0;     ///< calls of incircle (robust)
-  std::uint64_t incircleExact = 0;///< of which reached the exact stage
+  std::uint64_t incircleExact = 0;///< of which reached the exact (GMP) stage
+  std::uint64_t orientSmallInt = 0;   ///< of which the small-multiple stage decided
+  std::uint64_t incircleSmallInt = 0; ///< of which the small-multiple stage decided
   void reset() { *this = PredicateCounters{}; }
 };
 PredicateCounters& predicateCounters();
@@ -71,7 +73,8 @@ int exactBitsOrient2d(double ax, double ay, double bx, double by, double cx, dou
 int exactBitsIncircle(double ax, double ay, double bx, double by, double cx, double cy, double dx,
                       double dy);
 
-/// Robust orientation (2.3.1): double evaluation + safe error bound, exact fallback.
+/// Robust orientation (2.3.1): double evaluation + safe error bound, exact fallback (the core
+/// is dt::pred::orient2d in predicates_inline.h; this adds the counters).
 /// The sign is exact for every input of finite doubles.
 int orient2d(double ax, double ay, double bx, double by, double cx, double cy);
 /// Robust incircle (2.3.1): double evaluation + safe error bound, exact fallback.
@@ -79,7 +82,8 @@ int incircle(double ax, double ay, double bx, double by, double cx, double cy, d
              double dy);
 
 /// Stage that decided the last robust call (for tests and the 2.3.1 program): 0 = filter,
-/// 1 = exact.
+/// 1 = exact (GMP), 2 = small multiples of a power of two, evaluated exactly in doubles
+/// (predicates_inline.h, where the stages are defined and proved).
 int lastPredicateStage();
 
 }  // namespace dt

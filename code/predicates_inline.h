@@ -1,0 +1,193 @@
+// The one core of the robust predicates (2.3.1): a floating-point filter with a proved error
+// bound, an exact stage for small multiples of one power of two, then exact GMP integers. Inline,
+// so that the fast kernel (fast_delaunay.cpp) calls it without a function call; predicates.cpp
+// wraps it with its counters. The error-bound derivations live here and only here.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+#include "predicates.h"
+
+namespace dt {
+namespace pred {
+
+/// Which stage decided a robust predicate (the values of lastPredicateStage()).
+enum Stage : int {
+  kFilter = 0,    ///< the floating-point filter
+  kExact = 1,     ///< exact GMP integers (orient2dExact / incircleExact)
+  kSmallInt = 2,  ///< the floating-point value itself, proved exact (small multiples of 2^k)
+};
+
+constexpr double kU = 0x1p-53;  // unit roundoff of binary64, round to nearest
+
+// ---------------------------------------------------------------------------------------------
+// The small-multiple stage, between the filter and GMP, for the degenerate tests that grids and
+// other "round" data produce in bulk (the filter cannot decide a zero).
+//
+// Claim. Let every difference d_i of a predicate be computed exactly, and be an integer multiple
+// of a power of two h with |d_i| < 2^B h (B = 12 for incircle, 25 for orient2d), with
+// 2^-260 <= h <= 2^200. Then the filter's floating-point value `det` IS the determinant.
+// Proof. Every intermediate of degree k is an integer multiple of h^k. Its magnitude, for
+// incircle (M = max |d_i| < 2^12 h): products |d_i d_j| < 2^24 h^2; lifts (sum of two squares) and
+// minors (difference of two products) < 2^25 h^2; lift x minor < 2^50 h^4; the partial sums of
+// three such < 3 2^50 h^4 < 2^52 h^4. For orient2d (M < 2^25 h): products < 2^50 h^2, their
+// difference < 2^51 h^2. An integer N times 2^E with |N| < 2^53 and E >= -1074 is a double (a
+// subnormal if small), and h^4 >= 2^-1040, h^4 2^53 <= 2^853 < 2^1024: no operation rounds,
+// underflows or overflows, so each computed value equals the exact one. []
+// Exactness of a difference d = fl(a - b) is checked with Knuth's two-sum: its rounding error,
+// computed without error, is zero. (On overflow d is infinite, the check gives NaN != 0: no.)
+inline bool exactDifference(double a, double b, double d) {
+  const double bb = d - a;
+  return (a - (d - bb)) - (b + bb) == 0;
+}
+
+/// Are all d[0..N) integer multiples of one power of two h in [2^-260, 2^200] with
+/// |d_i| < 2^bits h? (h = 2^(e - bits), where 2^(e-1) <= max |d_i| < 2^e.)
+template <int N>
+inline bool smallMultiples(const double (&d)[N], int bits) {
+  double m = 0;
+  for (double v : d) m = std::max(m, std::fabs(v));
+  if (!(m > 0)) return false;
+  int e = 0;
+  std::frexp(m, &e);  // m < 2^e
+  if (e - bits < -260 || e - bits > 200) return false;
+  const double inv = std::ldexp(1.0, bits - e);  // 1/h, exact
+  for (double v : d) {
+    const double q = v * inv;  // exact: a power-of-two scaling within range; |q| < 2^bits
+    if (q != double(std::int64_t(q))) return false;
+  }
+  return true;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Error bound for orient2d (u = 2^-53, round to nearest, no FMA: -ffp-contract=off).
+// Write each rounded operation as an exact one times (1 + d), |d| <= u. The computed value is
+//   fl( fl(fl(ax-cx) fl(by-cy)) - fl(fl(ay-cy) fl(bx-cx)) ),
+// so each of the two exact products L = (ax-cx)(by-cy), R = (ay-cy)(bx-cx) reaches the result
+// multiplied by at most four factors (1+d): two differences, one product, one subtraction.
+// Hence |computed - (L - R)| <= g4 (|L| + |R|), g4 = 4u/(1-4u). The computed
+// detsum = fl(|fl(L)| + |fl(R)|) satisfies |L| + |R| <= detsum (1+u)/(1-g3) < detsum (1 + 5u).
+// So the error is below 4u(1 + 9u) detsum, which 5u detsum exceeds; computing 5u detsum itself
+// rounds by a relative u at most, still above. Two caveats the textbook bound ignores:
+//  - underflow: a product below 2^-1022 has an absolute (not relative) error of up to 2^-1075.
+//    Requiring detsum >= 2^-960 makes the margin (5u - 4u(1+9u)) detsum > 2^-1014 dwarf it;
+//    smaller inputs go to the exact stages.
+//  - overflow: any infinity or NaN makes the comparison false, so the exact stages decide.
+// The notes' rule |O| > 1e-15 max(...)^2 is not of this form: it ignores the cancellation in
+// the differences (it uses the coordinates, not |L| + |R|) and the sign of the coordinates.
+
+/// The stages after the filter (out of line: rarely reached, and it keeps the callers small).
+__attribute__((noinline)) inline int orient2dSlow(double ax, double ay, double bx, double by,
+                                                  double cx, double cy, int& stage) {
+  const double acx = ax - cx, bcy = by - cy, acy = ay - cy, bcx = bx - cx;
+  const double d[4] = {acx, bcy, acy, bcx};
+  if (exactDifference(ax, cx, acx) && exactDifference(by, cy, bcy) &&
+      exactDifference(ay, cy, acy) && exactDifference(bx, cx, bcx) && smallMultiples(d, 25)) {
+    const double det = acx * bcy - acy * bcx;  // exact, by the claim above
+    stage = kSmallInt;
+    return (det > 0) - (det < 0);
+  }
+  stage = kExact;
+  return orient2dExact(ax, ay, bx, by, cx, cy);
+}
+
+//! [orient2d]
+/// Robust orientation: the filter, then orient2dSlow. `stage` receives the stage that decided.
+__attribute__((always_inline)) inline int orient2d(double ax, double ay, double bx, double by,
+                                                   double cx, double cy, int& stage) {
+  const double detleft = (ax - cx) * (by - cy);
+  const double detright = (ay - cy) * (bx - cx);
+  const double det = detleft - detright;
+  const double detsum = std::fabs(detleft) + std::fabs(detright);
+  const double bound = 5 * kU * detsum;
+  if ((det > bound || -det > bound) && detsum >= 0x1p-960) {
+    stage = kFilter;
+    return det > 0 ? 1 : -1;
+  }
+  return orient2dSlow(ax, ay, bx, by, cx, cy, stage);
+}
+//! [orient2d]
+
+// Error bound for incircle, in the same style. The determinant is
+//   alift (bdx cdy - cdx bdy) + blift (cdx ady - adx cdy) + clift (adx bdy - bdx ady)
+// with differences to d. Expanded, it is a sum of 24 monomials of degree 4; in floating point
+// each reaches the result through at most 11 rounded operations: 2 differences and 1 product
+// and 1 sum in the lift (4), 2 differences and 1 product and 1 subtraction in the minor (4),
+// the product lift x minor (1), and the two final additions (2). So the error is at most
+// g11 P, where P is the sum of the absolute values of the monomials: the "permanent",
+// computed below as alift (|bdx cdy| + |cdx bdy|) + ... P is taken on the exact differences,
+// so each of its monomials also reaches the computed permanent through 11 roundings (the same
+// 2 + 2 differences, 1 square, 1 lift sum, 1 product, 1 sum of absolute values, 1 product by
+// the lift, 2 final sums): P <= permanent / (1-u)^11 < permanent (1 + 12u). The error is thus
+// below g11 (1 + 12u) permanent < 11u (1 + 24u) permanent, and the computed 12u permanent,
+// at least 12u (1-u) permanent, exceeds it.
+// Underflow: if every nonzero difference is at least 2^-511 in magnitude, no
+// degree-2 product underflows; a degree-4 product may, with an absolute error of at most
+// 2^-1075, which the margin u permanent covers once permanent >= 2^-900. Otherwise, and on
+// overflow (infinity or NaN), the exact stages decide.
+
+inline bool notTiny(double v) { return v == 0 || std::fabs(v) >= 0x1p-511; }
+
+__attribute__((noinline)) inline int incircleSlow(double ax, double ay, double bx, double by,
+                                                  double cx, double cy, double dx, double dy,
+                                                  int& stage) {
+  const double adx = ax - dx, ady = ay - dy;
+  const double bdx = bx - dx, bdy = by - dy;
+  const double cdx = cx - dx, cdy = cy - dy;
+  const double diff[6] = {adx, ady, bdx, bdy, cdx, cdy};
+  if (exactDifference(ax, dx, adx) && exactDifference(ay, dy, ady) &&
+      exactDifference(bx, dx, bdx) && exactDifference(by, dy, bdy) &&
+      exactDifference(cx, dx, cdx) && exactDifference(cy, dy, cdy) && smallMultiples(diff, 12)) {
+    // The filter's expression, in the filter's order: exact, by the claim above.
+    const double alift = adx * adx + ady * ady;
+    const double blift = bdx * bdx + bdy * bdy;
+    const double clift = cdx * cdx + cdy * cdy;
+    const double det = alift * (bdx * cdy - cdx * bdy) + blift * (cdx * ady - adx * cdy) +
+                       clift * (adx * bdy - bdx * ady);
+    stage = kSmallInt;
+    return (det > 0) - (det < 0);
+  }
+  stage = kExact;
+  return incircleExact(ax, ay, bx, by, cx, cy, dx, dy);
+}
+
+//! [incircle]
+/// Robust incircle: the filter, then incircleSlow. `stage` receives the stage that decided.
+__attribute__((always_inline)) inline int incircle(double ax, double ay, double bx, double by,
+                                                   double cx, double cy, double dx, double dy,
+                                                   int& stage) {
+  const double adx = ax - dx, ady = ay - dy;
+  const double bdx = bx - dx, bdy = by - dy;
+  const double cdx = cx - dx, cdy = cy - dy;
+  const double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy;
+  const double cdxady = cdx * ady, adxcdy = adx * cdy;
+  const double adxbdy = adx * bdy, bdxady = bdx * ady;
+  const double alift = adx * adx + ady * ady;
+  const double blift = bdx * bdx + bdy * bdy;
+  const double clift = cdx * cdx + cdy * cdy;
+  const double det = alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy) +
+                     clift * (adxbdy - bdxady);
+  const double permanent = (std::fabs(bdxcdy) + std::fabs(cdxbdy)) * alift +
+                           (std::fabs(cdxady) + std::fabs(adxcdy)) * blift +
+                           (std::fabs(adxbdy) + std::fabs(bdxady)) * clift;
+  const double bound = 12 * kU * permanent;
+  if ((det > bound || -det > bound) && permanent >= 0x1p-900) {
+    // The underflow guard: every difference zero or at least 2^-511. The smallest magnitude
+    // decides it at once in the usual case (no zero difference).
+    const double m = std::min(std::min(std::min(std::fabs(adx), std::fabs(ady)),
+                                       std::min(std::fabs(bdx), std::fabs(bdy))),
+                              std::min(std::fabs(cdx), std::fabs(cdy)));
+    if (m >= 0x1p-511 || (notTiny(adx) && notTiny(ady) && notTiny(bdx) && notTiny(bdy) &&
+                          notTiny(cdx) && notTiny(cdy))) {
+      stage = kFilter;
+      return det > 0 ? 1 : -1;
+    }
+  }
+  return incircleSlow(ax, ay, bx, by, cx, cy, dx, dy, stage);
+}
+//! [incircle]
+
+}  // namespace pred
+}  // namespace dt

@@ -1,0 +1,161 @@
+/// \file test_predicate_core.cpp Tests of the one predicate core (code/predicates_inline.h): each stage (filter, small multiples, GMP) is reached and agrees with the exact oracle.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <random>
+
+#include "predicates.h"
+#include "predicates_inline.h"
+
+namespace {
+
+struct Tally {
+  long calls = 0, wrong = 0, stage[3] = {0, 0, 0};
+};
+
+// Both predicates of the core on one quadruple, against the GMP oracle.
+void check(const double v[8], Tally& o, Tally& c) {
+  int s = -1;
+  const int r = dt::pred::orient2d(v[0], v[1], v[2], v[3], v[4], v[5], s);
+  ++o.calls;
+  ++o.stage[s];
+  o.wrong += r != dt::orient2dExact(v[0], v[1], v[2], v[3], v[4], v[5]);
+  const int q = dt::pred::incircle(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], s);
+  ++c.calls;
+  ++c.stage[s];
+  c.wrong += q != dt::incircleExact(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]);
+}
+
+}  // namespace
+
+TEST_CASE("predicate core: grids at every scale, small multiples of 2^k decided exactly in doubles") {
+  // Points of a small grid (side 2^g) scaled by h = 2^s and shifted far from the origin: many
+  // collinear and cocircular quadruples (the filter cannot decide a zero), differences exact.
+  std::mt19937_64 rng(909);
+  Tally o, c;
+  for (int g : {3, 6, 11, 12, 13, 24, 25, 26}) {
+    std::uniform_int_distribution<long> cell(0, (1L << g) - 1);
+    for (int s : {-255, -100, -30, 0, 30, 150, 195}) {
+      const double h = std::ldexp(1.0, s);
+      for (double shift : {0.0, std::ldexp(1.0, 40), -std::ldexp(3.0, 26)}) {
+        for (int it = 0; it < 400; ++it) {
+          double v[8];
+          for (double& x : v) x = (double(cell(rng)) + shift) * h;
+          check(v, o, c);
+        }
+      }
+    }
+  }
+  CHECK(o.wrong == 0);
+  CHECK(c.wrong == 0);
+  // The small-multiple stage does the bulk of the degenerate work on grids...
+  CHECK(o.stage[dt::pred::kSmallInt] > 300);  // collinear triples: rarer than cocircular
+  CHECK(c.stage[dt::pred::kSmallInt] > 1000);
+  // ...but not all of it: beyond 2^12 h (incircle) and 2^25 h (orient2d) GMP decides.
+  for (int s : {-255, 0, 195}) {
+    const double h = std::ldexp(1.0, s), m = 4097 * h, p = (double(1 << 24) + 1) * h;
+    int st = -1;
+    CHECK(dt::pred::incircle(0, 0, m, 0, m, m, 0, m, st) == 0);  // a square: cocircular
+    CHECK(st == dt::pred::kExact);
+    CHECK(dt::pred::incircle(0, 0, m - h, 0, m - h, m - h, 0, m - h, st) == 0);  // side 4096 h
+    CHECK(st == dt::pred::kSmallInt);
+    CHECK(dt::pred::orient2d(0, 0, p, h, 2 * p, 2 * h, st) == 0);  // 2p > 2^25 h: h no longer fits
+    CHECK(st == dt::pred::kExact);
+    const double q = double(1 << 24) * h;  // differences 2q = 2^25 h, q, 2h, 4h: multiples of 2h
+    CHECK(dt::pred::orient2d(0, 0, q, 2 * h, 2 * q, 4 * h, st) == 0);
+    CHECK(st == dt::pred::kSmallInt);
+  }
+  CHECK(o.stage[dt::pred::kFilter] > o.calls / 2);
+  CHECK(c.stage[dt::pred::kFilter] > c.calls / 4);
+}
+
+TEST_CASE("predicate core: huge and tiny grids go to GMP, where h leaves [2^-260, 2^200]") {
+  std::mt19937_64 rng(910);
+  std::uniform_int_distribution<long> cell(0, 7);
+  Tally o, c;
+  for (int s : {-1000, -600, -270, 230, 500, 900}) {  // h = 2^(s-25) .. 2^(s-9)
+    const double h = std::ldexp(1.0, s);
+    for (int it = 0; it < 500; ++it) {
+      double v[8];
+      for (double& x : v) x = double(cell(rng)) * h;
+      check(v, o, c);
+    }
+  }
+  CHECK(o.wrong == 0);
+  CHECK(c.wrong == 0);
+  CHECK(o.stage[dt::pred::kSmallInt] == 0);
+  CHECK(c.stage[dt::pred::kSmallInt] == 0);
+  CHECK(o.stage[dt::pred::kExact] > 100);
+  CHECK(c.stage[dt::pred::kExact] > 100);
+}
+
+TEST_CASE("predicate core: a difference that rounds is never taken for exact") {
+  // 2^60 - 1 rounds to 2^60, a multiple of a power of two: only the two-sum check stops it.
+  const double big = std::ldexp(1.0, 60);
+  int s = -1;
+  // a = (2^60, 0), b = (2^60, 1), c = (1, 0): det = -(2^60 - 1) * 1 ... computed exactly by GMP.
+  const int r = dt::pred::orient2d(big, 0, big, 1, 1, 0, s);
+  CHECK(r == dt::orient2dExact(big, 0, big, 1, 1, 0));
+  CHECK(s != dt::pred::kSmallInt);
+  CHECK_FALSE(dt::pred::exactDifference(big, 1, big - 1));
+  CHECK(dt::pred::exactDifference(big, big / 2, big - big / 2));
+  const double ok[3] = {4095, -4094, 2};
+  CHECK(dt::pred::smallMultiples(ok, 12));
+  const double odd[3] = {4097, 2, 0};  // 4097 >= 2^12: h = 2 would not divide it
+  CHECK_FALSE(dt::pred::smallMultiples(odd, 12));
+  const double zero[2] = {0, 0};
+  CHECK_FALSE(dt::pred::smallMultiples(zero, 12));
+}
+
+TEST_CASE("predicate core: random near-degenerate inputs, nudged by ulps, agree with GMP") {
+  std::mt19937_64 rng(911);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::uniform_int_distribution<int> k(-3, 3), sc(-200, 200);
+  Tally o, c;
+  auto nudge = [](double x, int n) {
+    for (; n > 0; --n) x = std::nextafter(x, 1e308);
+    for (; n < 0; ++n) x = std::nextafter(x, -1e308);
+    return x;
+  };
+  for (int it = 0; it < 40000; ++it) {
+    const double s = std::ldexp(1.0, sc(rng));
+    const double cx = u(rng) * s, cy = u(rng) * s, r = (0.5 + std::fabs(u(rng))) * s;
+    double v[8];
+    // a, b and d on a circle, c on the segment ab: near-collinear a b c, near-cocircular a b c d.
+    for (int p : {0, 1, 3}) {
+      const double t = 3.2 * u(rng);
+      v[2 * p] = nudge(cx + r * std::cos(t), k(rng));
+      v[2 * p + 1] = nudge(cy + r * std::sin(t), k(rng));
+    }
+    const double t = u(rng);
+    v[4] = nudge(v[0] + t * (v[2] - v[0]), k(rng));
+    v[5] = nudge(v[1] + t * (v[3] - v[1]), k(rng));
+    check(v, o, c);
+    // and the quadruple with c moved onto the circle too
+    const double w = 3.2 * u(rng);
+    v[4] = nudge(cx + r * std::cos(w), k(rng));
+    v[5] = nudge(cy + r * std::sin(w), k(rng));
+    check(v, o, c);
+  }
+  CHECK(o.wrong == 0);
+  CHECK(c.wrong == 0);
+  CHECK(o.stage[dt::pred::kExact] > 1000);
+  CHECK(c.stage[dt::pred::kExact] > 1000);
+  CHECK(o.stage[dt::pred::kFilter] > 1000);
+  CHECK(c.stage[dt::pred::kFilter] > 1000);
+}
+
+TEST_CASE("predicate core: dt::orient2d / dt::incircle report the small-multiple stage and count it") {
+  dt::predicateCounters().reset();
+  CHECK(dt::orient2d(0, 0, 1, 1, 2, 2) == 0);
+  CHECK(dt::lastPredicateStage() == dt::pred::kSmallInt);
+  CHECK(dt::incircle(0, 0, 1, 0, 1, 1, 0, 1) == 0);  // a square: cocircular
+  CHECK(dt::lastPredicateStage() == dt::pred::kSmallInt);
+  CHECK(dt::orient2d(0, 0, 1, 0, 0, 1) == 1);
+  CHECK(dt::lastPredicateStage() == dt::pred::kFilter);
+  const dt::PredicateCounters c = dt::predicateCounters();
+  CHECK(c.orient == 2);
+  CHECK(c.orientSmallInt == 1);
+  CHECK(c.orientExact == 0);
+  CHECK(c.incircleSmallInt == 1);
+}
