@@ -13,6 +13,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "io.h"
@@ -58,6 +59,25 @@ inline Options parseOptions(int argc, char** argv) {
     std::exit(1);
   }
   return o;
+}
+
+/// The main() of a chapter program: parses the options, runs `body(options)`, and reports an
+/// exception on stderr (prefixed with `name`) with exit status 1. A body that returns an int
+/// gives the exit status itself (2 for a usage error, say).
+template <class Body>
+int runMain(int argc, char** argv, const char* name, Body&& body) {
+  const Options o = parseOptions(argc, argv);
+  try {
+    if constexpr (std::is_void_v<decltype(body(o))>) {
+      body(o);
+    } else {
+      return body(o);
+    }
+  } catch (const std::exception& e) {
+    std::cerr << name << ": " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
 }
 
 /// Writes a file into the output directory and says so.

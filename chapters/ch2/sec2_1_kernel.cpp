@@ -20,21 +20,14 @@
 
 #include "check.h"
 #include "common.h"
+#include "generators.h"
 #include "predicates.h"
 #include "star.h"
 #include "triangulate.h"
 
 namespace {
 
-using XY = std::vector<double>;
-
-XY uniform(std::size_t n, std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> u(0, 1);
-  XY p(2 * n);
-  for (double& v : p) v = u(rng);
-  return p;
-}
+using dt::XY;
 
 std::string num(double v) { return ch::fmt("%.10g", v); }
 
@@ -354,27 +347,13 @@ void kernelChecks(const ch::Options& o) {
     XY p;
   };
   std::vector<Input> inputs;
-  inputs.push_back({"uniform random", uniform(n, 2111)});
-  XY grid;
+  inputs.push_back({"uniform random", dt::uniformPoints(n, 2111)});
   const int side = int(std::sqrt(double(n)));
-  for (int i = 0; i < side; ++i)
-    for (int j = 0; j < side; ++j) grid.push_back(i), grid.push_back(j);
-  {  // shuffled: a random insertion order of a grid
-    std::mt19937_64 rng(2112);
-    for (std::size_t i = grid.size() / 2; i > 1; --i) {
-      const std::size_t j = std::uniform_int_distribution<std::size_t>(0, i - 1)(rng);
-      std::swap(grid[2 * (i - 1)], grid[2 * j]);
-      std::swap(grid[2 * (i - 1) + 1], grid[2 * j + 1]);
-    }
-  }
+  XY grid = dt::gridPoints(side, side);
+  dt::shufflePoints(grid, 2112);  // a random insertion order of a grid
   inputs.push_back({"grid " + std::to_string(side) + "x" + std::to_string(side) + ", shuffled", grid});
-  XY circle;
-  const std::size_t nc = std::min<std::size_t>(n, 2000);
-  for (std::size_t i = 0; i < nc; ++i) {
-    const double t = 2 * M_PI * double((i * 7919) % nc) / double(nc);
-    circle.push_back(std::cos(t)), circle.push_back(std::sin(t));
-  }
-  inputs.push_back({"circle (rounded cos, sin)", circle});
+  // stride 7919 (prime): the points in a scattered order
+  inputs.push_back({"circle (rounded cos, sin)", dt::circlePoints(std::min<std::size_t>(n, 2000), 1, 7919)});
   ch::Table tab;
   tab.caption = "Proposition 2.1.1 and Property 2.1.1, checked exactly (checkCavity) at every "
                 "insertion into the two super-triangles; the cavity is computed by testing every "
@@ -418,14 +397,9 @@ void kernelChecks(const ch::Options& o) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const ch::Options o = ch::parseOptions(argc, argv);
-  try {
+  return ch::runMain(argc, argv, "sec2_1_kernel", [](const ch::Options& o) {
     figure22(o);
     figures21to24(o);
     kernelChecks(o);
-  } catch (const std::exception& e) {
-    std::cerr << "sec2_1_kernel: " << e.what() << "\n";
-    return 1;
-  }
-  return 0;
+  });
 }

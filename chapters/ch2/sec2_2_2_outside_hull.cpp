@@ -8,12 +8,13 @@
 //   table_outside_hull.*        how often a point falls outside the current hull, and what
 //                               its insertion costs, by family and insertion order
 #include <algorithm>
-#include <random>
+#include <cmath>
 #include <set>
 #include <sstream>
 
 #include "check.h"
 #include "common.h"
+#include "generators.h"
 #include "hilbert.h"
 #include "hull.h"
 #include "predicates.h"
@@ -21,7 +22,7 @@
 
 namespace {
 
-using XY = std::vector<double>;
+using dt::XY;
 
 std::string triData(const std::vector<const dt::Face*>& F) {
   std::ostringstream s;
@@ -107,15 +108,9 @@ void panels(const ch::Options& o, const std::string& stem, const XY& base, doubl
 }
 
 void figure(const ch::Options& o) {
-  std::mt19937_64 rng(222);
-  std::uniform_real_distribution<double> u(0, 1);
-  XY base;
-  for (int i = 0; i < 14; ++i) {
-    const double r = std::sqrt(u(rng)), t = 2 * M_PI * u(rng);
-    // Integer coordinates, so that the point on a supporting line below is exactly on it.
-    base.push_back(std::round(40 * r * std::cos(t)));
-    base.push_back(std::round(40 * r * std::sin(t)));
-  }
+  XY base = dt::uniformDiskPoints(14, 222, 40);
+  // Integer coordinates, so that the point on a supporting line below is exactly on it.
+  for (double& c : base) c = std::round(c);
   dt::Triangulation T;
   std::vector<dt::Vertex*> S;
   for (std::size_t i = 0; i < base.size() / 2; ++i)
@@ -151,21 +146,10 @@ void table(const ch::Options& o) {
               "mean cavity, outside (ghosts incl.)", "mean cavity, all", "DT(S) exact"};
   for (const std::string fam : {"uniform square", "uniform disk", "circle"})
     for (const std::string order : {"random", "Hilbert", "lexicographic"}) {
-      std::mt19937_64 rng(7);
-      std::uniform_real_distribution<double> u(0, 1);
       const std::size_t m = fam == "circle" ? std::min<std::size_t>(n, 3000) : n;
-      XY p;
-      for (std::size_t i = 0; i < m; ++i) {
-        if (fam == "uniform square") {
-          p.push_back(u(rng)), p.push_back(u(rng));
-        } else if (fam == "uniform disk") {
-          const double r = std::sqrt(u(rng)), a = 2 * M_PI * u(rng);
-          p.push_back(r * std::cos(a)), p.push_back(r * std::sin(a));
-        } else {
-          const double a = 2 * M_PI * u(rng);
-          p.push_back(std::cos(a)), p.push_back(std::sin(a));
-        }
-      }
+      const XY p = fam == "uniform square" ? dt::uniformPoints(m, 7)
+                   : fam == "uniform disk" ? dt::uniformDiskPoints(m, 7)
+                                           : dt::randomCirclePoints(m, 7);
       std::vector<std::size_t> idx(m);
       for (std::size_t i = 0; i < m; ++i) idx[i] = i;
       if (order == "Hilbert") idx = dt::hilbertOrder(p);
@@ -202,13 +186,8 @@ void table(const ch::Options& o) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const ch::Options o = ch::parseOptions(argc, argv);
-  try {
+  return ch::runMain(argc, argv, "sec2_2_2_outside_hull", [](const ch::Options& o) {
     figure(o);
     table(o);
-  } catch (const std::exception& e) {
-    std::cerr << "sec2_2_2_outside_hull: " << e.what() << "\n";
-    return 1;
-  }
-  return 0;
+  });
 }

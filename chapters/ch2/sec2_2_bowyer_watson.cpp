@@ -15,29 +15,21 @@
 #include <cstdlib>
 #include <iostream>
 #include <map>
-#include <random>
 #include <string>
 #include <vector>
 
 #include "bowyer_watson.h"
 #include "check.h"
 #include "common.h"
+#include "generators.h"
 #include "predicates.h"
 #include "star.h"
 #include "triangulate.h"
 
 namespace {
 
-using XY = std::vector<double>;
+using dt::XY;
 using Clock = std::chrono::steady_clock;
-
-XY uniform(std::size_t n, std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> u(0, 1);
-  XY p(2 * n);
-  for (double& v : p) v = u(rng);
-  return p;
-}
 
 std::string num(double v) { return ch::fmt("%.10g", v); }
 
@@ -195,7 +187,7 @@ void figure26(const ch::Options& o) {
   bool chosenLike = false;
   for (int seed = 1; seed <= 500; ++seed) {
     ++tried;
-    const XY q = uniform(10, 2600 + seed);
+    const XY q = dt::uniformPoints(10, 2600 + seed);
     dt::BowyerWatsonResult r = dt::bowyerWatson(q, factor);
     const auto m = dt::hullEdgesNotCovered(r.xy, r.ids, r.tri);
     if (m.empty()) continue;
@@ -252,7 +244,7 @@ void figure26(const ch::Options& o) {
   for (double f : {1.5, 3.0, 10.0, 100.0, 1000.0}) {
     int lost = 0;
     for (int seed = 1; seed <= 500; ++seed) {
-      const dt::BowyerWatsonResult r = dt::bowyerWatson(uniform(10, 2600 + seed), f);
+      const dt::BowyerWatsonResult r = dt::bowyerWatson(dt::uniformPoints(10, 2600 + seed), f);
       lost += !dt::hullEdgesNotCovered(r.xy, r.ids, r.tri).empty();
     }
     tab.add({ch::fmt("%g", f), "500", std::to_string(lost), ch::fmt("%.1f%%", 100.0 * lost / 500)});
@@ -271,7 +263,7 @@ void algorithm1Table(const ch::Options& o) {
   tab.header = {"n", "incircle tests", "tests / n(n+1)", "Algorithm 1 / Listing 2.7 time",
                 "same triangles", "Delaunay (exact)"};
   for (std::size_t n = 1000; n <= maxN; n *= 2) {
-    const XY p = uniform(n, 2200 + n);
+    const XY p = dt::uniformPoints(n, 2200 + n);
     // The machine may be shared: each time is the best of a few runs.
     auto t0 = Clock::now();
     dt::BowyerWatsonResult bw;
@@ -312,14 +304,9 @@ void algorithm1Table(const ch::Options& o) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const ch::Options o = ch::parseOptions(argc, argv);
-  try {
+  return ch::runMain(argc, argv, "sec2_2_bowyer_watson", [](const ch::Options& o) {
     figure25(o);
     figure26(o);
     algorithm1Table(o);
-  } catch (const std::exception& e) {
-    std::cerr << "sec2_2_bowyer_watson: " << e.what() << "\n";
-    return 1;
-  }
-  return 0;
+  });
 }

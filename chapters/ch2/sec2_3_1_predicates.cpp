@@ -17,6 +17,7 @@
 
 #include "check.h"
 #include "common.h"
+#include "generators.h"
 #include "predicates.h"
 #include "robustness.h"
 #include "triangulate.h"
@@ -571,20 +572,10 @@ void benchmark(const ch::Options& o) {
               "order), and the share that reached the exact stage";
   s.header = {"input", "n", "orient2d calls", "exact", "share", "incircle calls", "exact",
               "share", "seconds"};
-  auto shuffle = [](std::vector<double>& p, unsigned seed) {
-    std::mt19937_64 g(seed);
-    for (std::size_t i = p.size() / 2; i > 1; --i) {
-      const std::size_t j = std::uniform_int_distribution<std::size_t>(0, i - 1)(g);
-      std::swap(p[2 * (i - 1)], p[2 * j]);
-      std::swap(p[2 * (i - 1) + 1], p[2 * j + 1]);
-    }
-  };
   auto run = [&](const std::string& what, std::vector<double> xy) {
-    shuffle(xy, 7);
+    dt::shufflePoints(xy, 7);
     dt::Triangulation T;
-    std::vector<dt::Vertex*> S;
-    for (std::size_t i = 0; i < xy.size() / 2; ++i)
-      S.push_back(T.addVertex(xy[2 * i], xy[2 * i + 1], long(i)));
+    const std::vector<dt::Vertex*> S = dt::addPoints(T, xy);
     dt::predicateCounters().reset();
     const auto t0 = std::chrono::steady_clock::now();
     dt::delaunayTrglHull(T, S, dt::StartRule::LastCavity);
@@ -603,45 +594,23 @@ void benchmark(const ch::Options& o) {
     std::cout << "  triangulated " << what << " (" << xy.size() / 2 << " points) in "
               << ch::fmt("%.2f", sec) << " s, checked exactly\n";
   };
-  {
-    std::vector<double> p(2 * nMax);
-    std::mt19937_64 g(1);
-    for (double& x : p) x = u(g);
-    run("uniform in the unit square", p);
-  }
-  {
-    const int side = int(std::sqrt(double(nMax)));
-    std::vector<double> p;
-    for (int i = 0; i < side; ++i)
-      for (int j = 0; j < side; ++j) p.push_back(i), p.push_back(j);
-    run(ch::fmt("%d x %d grid", side, side), p);
-  }
-  {
-    const long nc = std::min<long>(nMax, o.quick ? 2000 : 20000);
-    std::vector<double> p;
-    for (long i = 0; i < nc; ++i) {
-      const double a = 2 * M_PI * double(i) / double(nc);
-      p.push_back(std::cos(a)), p.push_back(std::sin(a));
-    }
-    run("near-circle (rounded cos, sin)", p);
-  }
+  run("uniform in the unit square", dt::uniformPoints(std::size_t(nMax), 1));
+  const int side = int(std::sqrt(double(nMax)));
+  run(ch::fmt("%d x %d grid", side, side), dt::gridPoints(side, side));
+  run("near-circle (rounded cos, sin)",
+      dt::circlePoints(std::size_t(std::min<long>(nMax, o.quick ? 2000 : 20000))));
   s.emit(o, "table_exact_share");
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  const ch::Options o = ch::parseOptions(argc, argv);
-  try {
+  return ch::runMain(argc, argv, "sec2_3_1_predicates", [](const ch::Options& o) {
     header(o);
     orientMaps(o);
     incircleMaps(o);
     notesFilters(o);
     mpfr200(o);
     benchmark(o);
-  } catch (const std::exception& e) {
-    std::cerr << argv[0] << ": " << e.what() << "\n";
-    return 1;
-  }
-  return 0;
+  });
 }

@@ -6,10 +6,10 @@
 //   sec2_3_2_adjacencies [--out DIR] [--quick] [--max-n N] [--no-plot]
 #include <algorithm>
 #include <cmath>
-#include <random>
 
 #include "check.h"
 #include "common.h"
+#include "generators.h"
 #include "stats.h"
 #include "triangulate.h"
 
@@ -33,23 +33,6 @@ Result triangulate(const std::vector<double>& xy) {
   if (!rep.ok) throw std::runtime_error("invalid triangulation: " + rep.error);
   r.counts = dt::meshCounts(r.mesh.xy.size() / 2, r.mesh.tri);
   return r;
-}
-
-std::vector<double> uniform(std::size_t n, unsigned seed) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> u(0, 1);
-  std::vector<double> p(2 * n);
-  for (double& c : p) c = u(rng);
-  return p;
-}
-
-void shuffle(std::vector<double>& p, unsigned seed) {
-  std::mt19937_64 rng(seed);
-  for (std::size_t i = p.size() / 2; i > 1; --i) {
-    const std::size_t j = std::uniform_int_distribution<std::size_t>(0, i - 1)(rng);
-    std::swap(p[2 * (i - 1)], p[2 * j]);
-    std::swap(p[2 * (i - 1) + 1], p[2 * j + 1]);
-  }
 }
 
 // Figure 2.9: nine points on a slightly irregular ellipse (all on the hull) and three inside.
@@ -88,16 +71,11 @@ void countsTable(const ch::Options& o) {
   const long maxN = o.maxN > 0 ? o.maxN : (o.quick ? 10000 : 100000);
   std::vector<Input> inputs;
   for (long n : {100L, 10000L, 100000L})
-    if (n <= maxN) inputs.push_back({"uniform random", uniform(std::size_t(n), 232u + unsigned(n))});
+    if (n <= maxN) inputs.push_back({"uniform random", dt::uniformPoints(std::size_t(n), 232u + unsigned(n))});
   for (long k : {10L, 100L, 300L})
     if (k * k <= maxN) {
-      std::vector<double> g;
-      for (long i = 0; i < k; ++i)
-        for (long j = 0; j < k; ++j) {
-          g.push_back(double(i));
-          g.push_back(double(j));
-        }
-      shuffle(g, 7u);
+      std::vector<double> g = dt::gridPoints(int(k), int(k));
+      dt::shufflePoints(g, 7u);
       inputs.push_back({ch::fmt("grid %ldx%ld", k, k), g});
     }
   for (long n : {100L, 2000L})
@@ -108,20 +86,14 @@ void countsTable(const ch::Options& o) {
         c.push_back(double(i));
         c.push_back(double(i) * double(i));
       }
-      shuffle(c, 11u);
+      dt::shufflePoints(c, 11u);
       inputs.push_back({"convex (parabola)", c});
     }
   {
     // 1000 points rounded onto the unit circle: nearly cocircular, a hard case for the
     // predicates; the measured n_h says whether rounding left them all in convex position.
-    std::vector<double> c;
-    const long n = std::min(1000L, maxN);
-    for (long i = 0; i < n; ++i) {
-      const double t = 2 * M_PI * double(i) / double(n);
-      c.push_back(std::cos(t));
-      c.push_back(std::sin(t));
-    }
-    shuffle(c, 13u);
+    std::vector<double> c = dt::circlePoints(std::size_t(std::min(1000L, maxN)));
+    dt::shufflePoints(c, 13u);
     inputs.push_back({"circle (rounded)", c});
   }
   ch::Table t;
@@ -154,13 +126,8 @@ void countsTable(const ch::Options& o) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const ch::Options o = ch::parseOptions(argc, argv);
-  try {
+  return ch::runMain(argc, argv, "sec2_3_2_adjacencies", [](const ch::Options& o) {
     figure29(o);
     countsTable(o);
-  } catch (const std::exception& e) {
-    std::cerr << "sec2_3_2_adjacencies: " << e.what() << "\n";
-    return 1;
-  }
-  return 0;
+  });
 }

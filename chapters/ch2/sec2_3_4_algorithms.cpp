@@ -21,6 +21,7 @@
 #include "cavity.h"
 #include "check.h"
 #include "common.h"
+#include "generators.h"
 #include "predicates.h"
 #include "search.h"
 #include "triangulate.h"
@@ -32,14 +33,6 @@ double cpuSeconds() {
   getrusage(RUSAGE_SELF, &u);
   return double(u.ru_utime.tv_sec) + double(u.ru_stime.tv_sec) +
          1e-6 * double(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
-}
-
-std::vector<double> uniform(std::size_t n, unsigned seed) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> u(0, 1);
-  std::vector<double> p(2 * n);
-  for (double& c : p) c = u(rng);
-  return p;
 }
 
 void checkOrThrow(const dt::Triangulation& T, const std::string& what) {
@@ -67,11 +60,9 @@ std::string linkArrows(const dt::Face* f, const dt::Face* g) {
 void figure210(const ch::Options& o) {
   // 18 random points in the unit square; the new point p is the grid position whose cavity is
   // the largest with at most 6 faces, none of them on the hull (so every neighbour is a triangle).
-  const std::vector<double> xy = uniform(18, 2010u);
+  const std::vector<double> xy = dt::uniformPoints(18, 2010u);
   dt::Triangulation T;
-  std::vector<dt::Vertex*> S;
-  for (std::size_t i = 0; i < xy.size() / 2; ++i)
-    S.push_back(T.addVertex(xy[2 * i], xy[2 * i + 1], long(i)));
+  std::vector<dt::Vertex*> S = dt::addPoints(T, xy);
   dt::delaunayTrglHull(T, S, dt::StartRule::LastCavity);
   double bx = 0.5, by = 0.5;
   std::size_t best = 0;
@@ -153,10 +144,8 @@ struct Run {
 // at the first face T[0]. delaunayTrgl is called on slices of S so that progress can be shown;
 // with StartRule::FirstFace this is the same computation as one call.
 Run table21Run(long n, bool check) {
-  const std::vector<double> xy = uniform(std::size_t(n), 21u);
   dt::Triangulation T;
-  std::vector<dt::Vertex*> S;
-  for (long i = 0; i < n; ++i) S.push_back(T.addVertex(xy[2 * i], xy[2 * i + 1], i));
+  std::vector<dt::Vertex*> S = dt::addPoints(T, dt::uniformPoints(std::size_t(n), 21u));
   dt::initSuperTriangles(T, 0, 0, 1, 1);
   dt::InsertionStats st;
   ch::Progress prog(ch::fmt("Table 2.1, n = %ld", n), std::uint64_t(n));
@@ -316,7 +305,7 @@ bool perfProfile(const ch::Options& o, long n) {
 void countingEstimate(ch::Table& t, long n) {
   // Timings are the minimum over repetitions (the usual defence against other jobs): the
   // triangulation is repeated when it is short, each timed loop five times.
-  const std::vector<double> xy = uniform(std::size_t(n), 21u);
+  const std::vector<double> xy = dt::uniformPoints(std::size_t(n), 21u);
   const int reps = n <= 10000 ? 5 : 1;
   double total = 1e300;
   std::unique_ptr<dt::Triangulation> T;  // the last repetition is kept for the replay below
@@ -478,24 +467,19 @@ int main(int argc, char** argv) {
     table21Run(std::atol(argv[2]), false);
     return 0;
   }
-  const ch::Options o = ch::parseOptions(argc, argv);
-  bool profile = true;
-  for (const std::string& a : o.rest) {
-    if (a == "--no-profile") {
-      profile = false;
-    } else {
-      // scripts/main.sh passes its options to every chapter program: ignore other programs' ones
-      std::cerr << "sec2_3_4_algorithms: ignoring option " << a << "\n";
+  return ch::runMain(argc, argv, "sec2_3_4_algorithms", [](const ch::Options& o) {
+    bool profile = true;
+    for (const std::string& a : o.rest) {
+      if (a == "--no-profile") {
+        profile = false;
+      } else {
+        // scripts/main.sh passes its options to every chapter program: ignore other programs' ones
+        std::cerr << "sec2_3_4_algorithms: ignoring option " << a << "\n";
+      }
     }
-  }
-  try {
     figure210(o);
     table21(o);
     predicateShare(o, profile);
     parabola(o);
-  } catch (const std::exception& e) {
-    std::cerr << "sec2_3_4_algorithms: " << e.what() << "\n";
-    return 1;
-  }
-  return 0;
+  });
 }

@@ -14,88 +14,20 @@
 #include <cstdint>
 #include <iostream>
 #include <numeric>
-#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "check.h"
 #include "common.h"
+#include "generators.h"
 #include "hilbert.h"
 #include "triangulate.h"
 
 namespace {
 
 using Clock = std::chrono::steady_clock;
-using XY = std::vector<double>;
-
-// ---- inputs (fixed seeds) ------------------------------------------------------------------
-
-XY uniform(std::size_t n, std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> u(0, 1);
-  XY p(2 * n);
-  for (double& v : p) v = u(rng);
-  return p;
-}
-
-// Gaussian blobs whose widths range over a factor 50, so densities differ by ~2500.
-XY clustered(std::size_t n, std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> u(0, 1);
-  const int blobs = 12;
-  std::vector<double> cx(blobs), cy(blobs), s(blobs);
-  for (int b = 0; b < blobs; ++b) {
-    cx[b] = 0.1 + 0.8 * u(rng);
-    cy[b] = 0.1 + 0.8 * u(rng);
-    s[b] = 0.001 * std::pow(50.0, u(rng));
-  }
-  std::normal_distribution<double> g(0, 1);
-  XY p(2 * n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const int b = int(u(rng) * blobs) % blobs;
-    p[2 * i] = cx[b] + s[b] * g(rng);
-    p[2 * i + 1] = cy[b] + s[b] * g(rng);
-  }
-  return p;
-}
-
-// Points on the parabola y = x^2 (rounded): every point is on the hull of the others, the
-// classic bad case for insertion orders that follow the curve.
-XY parabola(std::size_t n, std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> u(-1, 1);
-  XY p(2 * n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const double x = u(rng);
-    p[2 * i] = x;
-    p[2 * i + 1] = x * x;
-  }
-  return p;
-}
-
-// A square grid, each point moved by at most 10% of the spacing: nearly cocircular quadruples
-// everywhere, in random input order.
-XY jitteredGrid(std::size_t n, std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> u(-0.1, 0.1);
-  const std::size_t m = std::size_t(std::ceil(std::sqrt(double(n))));
-  XY p;
-  p.reserve(2 * n);
-  for (std::size_t k = 0; k < n; ++k) {
-    p.push_back((double(k % m) + u(rng)) / double(m));
-    p.push_back((double(k / m) + u(rng)) / double(m));
-  }
-  std::vector<std::size_t> perm(n);
-  std::iota(perm.begin(), perm.end(), std::size_t{0});
-  std::shuffle(perm.begin(), perm.end(), rng);
-  XY q(2 * n);
-  for (std::size_t k = 0; k < n; ++k) {
-    q[2 * k] = p[2 * perm[k]];
-    q[2 * k + 1] = p[2 * perm[k] + 1];
-  }
-  return q;
-}
+using dt::XY;
 
 // ---- one measured triangulation ------------------------------------------------------------
 
@@ -200,7 +132,7 @@ void figure211(const ch::Options& o) {
 
 void figure212(const ch::Options& o) {
   for (std::size_t n : {std::size_t(1000), std::size_t(10000)}) {
-    const XY p = uniform(n, 2012 + n);
+    const XY p = dt::uniformPoints(n, 2012 + n);
     const std::vector<std::size_t> idx = dt::hilbertOrder(p);
     std::ostringstream s;
     s << "# x y rank: " << n << " random points in Hilbert order (depth "
@@ -232,7 +164,7 @@ void table22(const ch::Options& o, const std::vector<std::size_t>& sizes,
   ch::Progress prog("Table 2.2", sizes.size());
   std::size_t done = 0;
   for (std::size_t n : sizes) {
-    const XY p = uniform(n, 22 + n);
+    const XY p = dt::uniformPoints(n, 22 + n);
     const Run r = triangulate(p, Order::Hilbert, 0, n <= checkLimit);
     const int e = int(std::lround(std::log10(double(n))));
     std::vector<std::string> row = {sci(n), std::to_string(dt::hilbertAutoDepth(n)),
@@ -258,8 +190,8 @@ void table22(const ch::Options& o, const std::vector<std::size_t>& sizes,
 // ---- depth -----------------------------------------------------------------------------------
 
 void depthTable(const ch::Options& o, std::size_t n) {
-  const XY pu = uniform(n, 35);
-  const XY pc = clustered(n, 36);
+  const XY pu = dt::uniformPoints(n, 35);
+  const XY pc = dt::gaussianClusters(n, 36);
   const int autoDepth = dt::hilbertAutoDepth(n);
   std::vector<int> depths = {2, 4, 6, 8, 10, 12, 31};
   if (std::find(depths.begin(), depths.end(), autoDepth) == depths.end()) depths.push_back(autoDepth);
@@ -293,7 +225,7 @@ void depthTable(const ch::Options& o, std::size_t n) {
 // ---- keys against sort -----------------------------------------------------------------------
 
 void keysVersusSort(const ch::Options& o, std::size_t n) {
-  const XY p = uniform(n, 44);
+  const XY p = dt::uniformPoints(n, 44);
   const int depth = dt::hilbertAutoDepth(n);
   const int reps = 3;  // best of 3: the machine is shared
   double tInt = 1e30, tList = 1e30, tSort = 1e30, tOrder = 1e30;
@@ -335,7 +267,7 @@ void keysVersusSort(const ch::Options& o, std::size_t n) {
 
 void brioFigure(const ch::Options& o) {
   const std::size_t n = 4000;
-  const XY p = uniform(n, 77);
+  const XY p = dt::uniformPoints(n, 77);
   std::vector<std::size_t> starts;
   const std::vector<std::size_t> idx = dt::brioOrder(p, 5, 0, &starts);
   std::ostringstream s;
@@ -358,8 +290,11 @@ void brioFigure(const ch::Options& o) {
 void brioComparison(const ch::Options& o, const std::vector<std::size_t>& sizes,
                     std::size_t randomMax, std::size_t checkLimit) {
   struct Input { const char* name; XY (*make)(std::size_t, std::uint64_t); };
-  const Input inputs[] = {{"uniform", uniform}, {"clustered", clustered},
-                          {"parabola", parabola}, {"jittered grid", jitteredGrid}};
+  const Input inputs[] = {
+      {"uniform", [](std::size_t n, std::uint64_t s) { return dt::uniformPoints(n, s); }},
+      {"clustered", [](std::size_t n, std::uint64_t s) { return dt::gaussianClusters(n, s); }},
+      {"parabola", dt::parabolaPoints},
+      {"jittered grid", [](std::size_t n, std::uint64_t s) { return dt::jitteredGridPoints(n, s); }}};
   ch::Table tab;
   tab.caption = "BRIO against Hilbert-only and random insertion order: delaunayTrgl with "
                 "super-triangles and LastCavity; t includes the ordering. Random order only up "
@@ -407,19 +342,18 @@ void brioComparison(const ch::Options& o, const std::vector<std::size_t>& sizes,
 }  // namespace
 
 int main(int argc, char** argv) {
-  ch::Options o = ch::parseOptions(argc, argv);
-  bool huge = false;
-  for (const std::string& a : o.rest) {
-    if (a == "--huge") {
-      huge = true;
-    } else {
-      std::cerr << argv[0] << ": unknown option " << a
-                << "\nusage: " << argv[0]
-                << " [--out DIR] [--quick] [--max-n N] [--huge] [--no-plot]\n";
-      return 2;
+  return ch::runMain(argc, argv, "sec2_3_5_hilbert", [&](const ch::Options& o) {
+    bool huge = false;
+    for (const std::string& a : o.rest) {
+      if (a == "--huge") {
+        huge = true;
+      } else {
+        std::cerr << argv[0] << ": unknown option " << a
+                  << "\nusage: " << argv[0]
+                  << " [--out DIR] [--quick] [--max-n N] [--huge] [--no-plot]\n";
+        return 2;
+      }
     }
-  }
-  try {
     const std::size_t maxN = o.maxN > 0 ? std::size_t(o.maxN)
                                         : (o.quick ? 10000 : (huge ? 10000000 : 1000000));
     auto upTo = [&](std::vector<std::size_t> v) {
@@ -437,9 +371,6 @@ int main(int argc, char** argv) {
     brioFigure(o);
     brioComparison(o, upTo({1000, 10000, 100000, 1000000}), o.quick ? 10000 : 30000,
                    o.quick ? 10000 : 100000);
-  } catch (const std::exception& e) {
-    std::cerr << argv[0] << ": " << e.what() << "\n";
-    return 1;
-  }
-  return 0;
+    return 0;
+  });
 }

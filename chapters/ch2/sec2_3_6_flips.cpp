@@ -17,6 +17,7 @@
 #include "check.h"
 #include "common.h"
 #include "flip.h"
+#include "generators.h"
 #include "hilbert.h"
 #include "hull.h"
 #include "predicates.h"
@@ -24,14 +25,8 @@
 
 namespace {
 
-using XY = std::vector<double>;
-
-std::vector<dt::Vertex*> addPoints(dt::Triangulation& T, const XY& p) {
-  std::vector<dt::Vertex*> S;
-  for (std::size_t i = 0; i < p.size() / 2; ++i)
-    S.push_back(T.addVertex(p[2 * i], p[2 * i + 1], long(i)));
-  return S;
-}
+using dt::addPoints;
+using dt::XY;
 
 void bbox(const XY& p, double& x0, double& y0, double& x1, double& y1) {
   x0 = x1 = p[0], y0 = y1 = p[1];
@@ -168,6 +163,7 @@ void figureFlip(const ch::Options& o) {
 // ---- 2.3.3: degrees over many random flips ------------------------------------------------------
 void tableDegrees(const ch::Options& o) {
   dt::Triangulation T;
+  // Points and flipped edges come from one stream (so not from dt::uniformPoints).
   std::mt19937_64 rng(233);
   std::uniform_real_distribution<double> u(0, 1);
   XY p;
@@ -316,19 +312,14 @@ void figureRecovery(const ch::Options& o) {
 XY family(const std::string& name, std::size_t n, unsigned seed) {
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> u(0, 1);
+  if (name == "uniform square") return dt::uniformPoints(n, seed);
+  if (name == "grid") {
+    const int m = int(std::sqrt(double(n)));
+    return dt::gridPoints(m, m);
+  }
+  if (name == "circle") return dt::circlePoints(n);
   XY p;
-  if (name == "uniform square") {
-    for (std::size_t i = 0; i < n; ++i) p.push_back(u(rng)), p.push_back(u(rng));
-  } else if (name == "grid") {
-    const std::size_t m = std::size_t(std::sqrt(double(n)));
-    for (std::size_t i = 0; i < m; ++i)
-      for (std::size_t j = 0; j < m; ++j) p.push_back(double(i)), p.push_back(double(j));
-  } else if (name == "circle") {
-    for (std::size_t i = 0; i < n; ++i) {
-      const double t = 2 * M_PI * double(i) / double(n);
-      p.push_back(std::cos(t)), p.push_back(std::sin(t));
-    }
-  } else if (name == "bent line") {  // flat parabolic arc + a few points below it
+  if (name == "bent line") {  // flat parabolic arc + a few points below it
     for (std::size_t i = 0; i < n; ++i) {
       const double t = u(rng);
       p.push_back(t), p.push_back(1e-4 * t * (1 - t));
@@ -453,16 +444,11 @@ void tableSizes(const ch::Options& o) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const ch::Options o = ch::parseOptions(argc, argv);
-  try {
+  return ch::runMain(argc, argv, "sec2_3_6_flips", [](const ch::Options& o) {
     figureFlip(o);
     tableDegrees(o);
     figureRecovery(o);
     tableSizes(o);
     tableMethods(o);
-  } catch (const std::exception& e) {
-    std::cerr << "sec2_3_6_flips: " << e.what() << "\n";
-    return 1;
-  }
-  return 0;
+  });
 }
