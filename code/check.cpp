@@ -34,10 +34,19 @@ CheckReport checkDelaunay(const std::vector<double>& xy,
   auto X = [&](int i) { return xy[2 * i]; };
   auto Y = [&](int i) { return xy[2 * i + 1]; };
   std::vector<char> used(np, 0);
-  // Directed edge (a, b) -> (triangle, local index of a).
-  std::unordered_map<std::uint64_t, std::pair<std::size_t, int>> dir;
-  dir.reserve(tri.size() * 3);
-  auto key = [](int a, int b) { return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b); };
+  // Every edge of every triangle, keyed by its unordered vertex pair and sorted, so that the
+  // (at most two) triangles of an edge sit side by side. A sort, rather than a hash map, keeps
+  // the check of 10^6 points to a fraction of a second.
+  struct HalfEdge {
+    std::uint64_t key;  // (min vertex, max vertex)
+    std::uint32_t t;    // triangle
+    std::uint8_t k;     // local index of the edge's first vertex: edge T[k] -> T[k+1]
+  };
+  std::vector<HalfEdge> he;
+  he.reserve(tri.size() * 3);
+  auto key = [](int a, int b) {
+    return (std::uint64_t(std::uint32_t(std::min(a, b))) << 32) | std::uint32_t(std::max(a, b));
+  };
   for (std::size_t t = 0; t < tri.size(); ++t) {
     const auto& T = tri[t];
     for (int k = 0; k < 3; ++k)
@@ -49,30 +58,35 @@ CheckReport checkDelaunay(const std::vector<double>& xy,
                          pt(xy, T[0]) + " " + pt(xy, T[1]) + " " + pt(xy, T[2]));
     for (int k = 0; k < 3; ++k) {
       used[T[k]] = 1;
-      if (!dir.emplace(key(T[k], T[(k + 1) % 3]), std::make_pair(t, k)).second)
-        return fail(r, "edge " + pt(xy, T[k]) + " -> " + pt(xy, T[(k + 1) % 3]) +
-                           " belongs to two triangles with the same orientation");
+      he.push_back({key(T[k], T[(k + 1) % 3]), std::uint32_t(t), std::uint8_t(k)});
     }
   }
+  std::sort(he.begin(), he.end(), [](const HalfEdge& p, const HalfEdge& q) {
+    return p.key < q.key || (p.key == q.key && p.t < q.t);
+  });
   // Interior edges: locally Delaunay. Boundary edges: successor map.
   std::unordered_map<int, int> next;  // boundary: a -> b for boundary edge a->b
   std::size_t nInterior2 = 0;
-  for (const auto& [k, v] : dir) {
-    const int a = int(k >> 32), b = int(k & 0xffffffffu);
-    auto it = dir.find(key(b, a));
-    if (it == dir.end()) {
+  for (std::size_t i = 0; i < he.size();) {
+    std::size_t j = i + 1;
+    while (j < he.size() && he[j].key == he[i].key) ++j;
+    const auto& T = tri[he[i].t];
+    const int a = T[he[i].k], b = T[(he[i].k + 1) % 3];
+    if (j - i == 1) {
       if (!next.emplace(a, b).second)
         return fail(r, "boundary is not a simple polygon at " + pt(xy, a));
-      continue;
+    } else {
+      const auto& U = tri[he[i + 1].t];
+      if (j - i > 2 || U[he[i + 1].k] == a)
+        return fail(r, "edge " + pt(xy, a) + " -> " + pt(xy, b) +
+                           " belongs to two triangles with the same orientation");
+      nInterior2 += 2;
+      const int d = U[(he[i + 1].k + 2) % 3];  // vertex of U opposite edge b->a
+      if (incircle(X(T[0]), Y(T[0]), X(T[1]), Y(T[1]), X(T[2]), Y(T[2]), X(d), Y(d)) > 0)
+        return fail(r, "edge " + pt(xy, a) + " - " + pt(xy, b) + " is not locally Delaunay: " +
+                           pt(xy, d) + " is inside the circle of its neighbour");
     }
-    ++nInterior2;
-    if (a > b) continue;  // test each interior edge once
-    const auto& T = tri[v.first];
-    const auto& U = tri[it->second.first];
-    const int d = U[(it->second.second + 2) % 3];  // vertex of U opposite edge b->a
-    if (incircle(X(T[0]), Y(T[0]), X(T[1]), Y(T[1]), X(T[2]), Y(T[2]), X(d), Y(d)) > 0)
-      return fail(r, "edge " + pt(xy, a) + " - " + pt(xy, b) + " is not locally Delaunay: " +
-                         pt(xy, d) + " is inside the circle of its neighbour");
+    i = j;
   }
   // The boundary: one closed cycle, turning left or going straight at every vertex, and going
   // round once (the x-direction of its edges changes sign exactly twice).
