@@ -56,7 +56,7 @@ inline bool onOpenSegment(const double* a, const double* b, const double* p) {
 
 // ---------------------------------------------------------------------------------------------
 // The kernel. Triangle t has vertices V[t][0..2] (counter-clockwise) and, across its edge
-// V[t][k] V[t][(k+1)%3], the neighbour half-edge A[t][k] = 3 t' + k' (the same edge seen from t').
+// V[t][k] V[t][(k+1)%3], the neighbour half-edge A[3 t + k] = 3 t' + k' (the same edge seen from t').
 // Vertices are the points in insertion order, 0..n-1; INF = n is the vertex at infinity, always
 // at position 2 of a ghost. Two arrays rather than one record: at the end A is freed and V,
 // compacted in place, becomes the output, so the output costs no memory of its own.
@@ -67,17 +67,17 @@ class Kernel {
       : P_(P), INF(n), pred_(pred), st_(st) {
     const std::size_t maxTri = 2 * std::size_t(n) + 2;  // 2(n+1) - 4 faces on the sphere
     V_.reserve(maxTri);
-    A_.reserve(maxTri);
+    A_.reserve(3 * maxTri);
     mark_.assign(maxTri, 0);
   }
 
   /// The first triangle a b c (counter-clockwise) and its three ghosts.
   void init(int a, int b, int c) {
     V_ = {{a, b, c}, {b, a, INF}, {c, b, INF}, {a, c, INF}};
-    A_ = {{3 * 1 + 0, 3 * 2 + 0, 3 * 3 + 0},
-          {3 * 0 + 0, 3 * 3 + 2, 3 * 2 + 1},
-          {3 * 0 + 1, 3 * 1 + 2, 3 * 3 + 1},
-          {3 * 0 + 2, 3 * 2 + 2, 3 * 1 + 1}};
+    A_ = {3 * 1 + 0, 3 * 2 + 0, 3 * 3 + 0,
+          3 * 0 + 0, 3 * 3 + 2, 3 * 2 + 1,
+          3 * 0 + 1, 3 * 1 + 2, 3 * 3 + 1,
+          3 * 0 + 2, 3 * 2 + 2, 3 * 1 + 1};
     last_ = 0;
   }
 
@@ -106,7 +106,7 @@ class Kernel {
   void releaseAllButVertices() {
     // (v = {} would keep the capacity: it assigns an empty list.)
     std::vector<unsigned char>().swap(mark_);
-    std::vector<std::array<int, 3>>().swap(A_);
+    std::vector<int>().swap(A_);
   }
 
  private:
@@ -146,7 +146,7 @@ class Kernel {
           st_.walkSteps += steps;
           return t;
         }
-        const int h = A_[t][0];
+        const int h = A_[3 * t + 0];
         t = h / 3;
         from = h % 3;
         continue;
@@ -168,7 +168,7 @@ class Kernel {
           }
         return t;
       }
-      const int h = A_[t][k];
+      const int h = A_[3 * t + k];
       t = h / 3;
       from = h % 3;
     }
@@ -188,7 +188,7 @@ class Kernel {
       }
       const int* v = V_[t].data();
       if (v[2] == INF) {
-        t = A_[t][0] / 3;
+        t = A_[3 * t + 0] / 3;
         continue;
       }
       const double c[2] = {(pt(v[0])[0] + pt(v[1])[0] + pt(v[2])[0]) / 3,
@@ -210,7 +210,7 @@ class Kernel {
           }
         throw std::logic_error("fastDelaunay: point inside a triangle but outside its circle");
       }
-      t = A_[t][next] / 3;
+      t = A_[3 * t + next] / 3;
     }
   }
 
@@ -225,7 +225,7 @@ class Kernel {
     for (std::size_t i = 0; i < cav_.size(); ++i) {
       const int t = cav_[i];
       for (int k = 0; k < 3; ++k) {
-        const int h = A_[t][k];
+        const int h = A_[3 * t + k];
         const int n = h / 3;
         if (mark_[n]) continue;  // inside the cavity: an interior edge
         if (conflict(n, p)) {
@@ -240,9 +240,9 @@ class Kernel {
 
 //! [fastCavity]
 //! [fastFill]
-  void link(int h, int g) {
-    A_[h / 3][h % 3] = g;
-    A_[g / 3][g % 3] = h;
+  void link(int h, int g) {  // half-edge h = 3 t + k is entry h of A_: no division
+    A_[h] = g;
+    A_[g] = h;
   }
 
   // The Delaunay ball: triangle a b p on each boundary edge a -> b, in the slots of the cavity
@@ -258,7 +258,7 @@ class Kernel {
       } else {
         s = int(V_.size());
         V_.push_back({0, 0, 0});
-        A_.push_back({-1, -1, -1});
+        A_.insert(A_.end(), {-1, -1, -1});
       }
       mark_[s] = 0;
       BoundaryEdge& e = bnd_[i];
@@ -328,7 +328,7 @@ class Kernel {
   FastStats& st_;
 //! [fastArrays]
   std::vector<std::array<int, 3>> V_;  // V_[t]: the vertices of triangle t, counter-clockwise
-  std::vector<std::array<int, 3>> A_;  // A_[t][k] = 3 t' + k': the same edge seen from t'
+  std::vector<int> A_;  // A_[3 t + k] = 3 t' + k': the same edge seen from t' (flat: link needs no division)
 //! [fastArrays]
   std::vector<unsigned char> mark_;  // in the current cavity
   std::vector<std::pair<int, int>> byStart_;  // large cavities: (start vertex, half-edge p -> a)

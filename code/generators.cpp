@@ -140,7 +140,7 @@ void shufflePoints(XY& p, std::uint64_t seed) {
   }
 }
 
-std::vector<Vertex*> addPoints(Triangulation& T, const XY& p) {
+std::vector<Vertex*> addVertices(Triangulation& T, const XY& p) {
   std::vector<Vertex*> S;
   S.reserve(p.size() / 2);
   for (std::size_t i = 0; i < p.size() / 2; ++i)

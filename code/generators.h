@@ -57,6 +57,6 @@ void shufflePoints(XY& p, std::uint64_t seed);
 
 /// Adds the points to T as vertices numbered 0, 1, ... in order; returns them (the input of
 /// delaunayTrgl / delaunayTrglHull).
-std::vector<Vertex*> addPoints(Triangulation& T, const XY& p);
+std::vector<Vertex*> addVertices(Triangulation& T, const XY& p);
 
 }  // namespace dt

@@ -256,9 +256,15 @@ template <class F>
 void forEachKey(const std::vector<double>& xy, int depth, F f) {
   const HilbertBox box = hilbertBox(xy);  // also refuses NaN and infinities
   const std::size_t n = xy.size() / 2;
+  // cellOf with its powers of two computed once: t 2^depth is exact, so the cells are equal.
+  const double scale = std::ldexp(1.0, depth), top = scale - 1;
+  const bool flat = !(box.halfSide > 0);
+  auto cell = [&](double v, double lo) {
+    const double c = std::floor((v / 2 - lo / 2) / box.halfSide * scale);
+    return flat ? 0u : std::uint32_t(c < top ? c : top);
+  };
   for (std::size_t k = 0; k < n; ++k)
-    f(k, hilbertIndexByTable(cellOf(xy[2 * k], box.xmin, box.halfSide, depth),
-                             cellOf(xy[2 * k + 1], box.ymin, box.halfSide, depth), depth));
+    f(k, hilbertIndexByTable(cell(xy[2 * k], box.xmin), cell(xy[2 * k + 1], box.ymin), depth));
 }
 
 int bitsFor(std::size_t n) {  // smallest b with n <= 2^b

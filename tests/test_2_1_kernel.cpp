@@ -15,7 +15,7 @@
 
 namespace {
 
-using dttest::XY;
+using dt::XY;
 
 // All integer points of the circle x^2 + y^2 = R^2 with R = 5 13 17 29 (324 points, exactly
 // cocircular: every incircle test among them is 0).
@@ -133,7 +133,7 @@ TEST_CASE("2.1 eq. (2.1): DT_n - C + B is the brute-force DT(S_{n+1}) for p insi
   std::size_t trials = 0, cavitySum = 0;
   for (unsigned seed = 1; seed <= 60; ++seed) {
     const std::size_t n = 5 + seed % 20;
-    XY xy = dttest::uniformPoints(n, 1000 + seed);
+    XY xy = dt::uniformPoints(n, 1000 + seed);
     std::vector<dt::Tri> tri = dt::bruteForceDelaunay(xy);
     REQUIRE(dt::checkDelaunay(xy, tri).ok);  // general position: the brute force is a DT
     // p_{n+1}: the first random point strictly inside a triangle of DT_n.
@@ -223,15 +223,15 @@ TEST_CASE("2.1.1 ker(Sigma) is the intersection of the half-planes of the orient
 TEST_CASE("2.1.2 Prop. 2.1.1: the cavity is non-empty, edge-connected, star-shaped, p in its kernel") {
   // Checked exactly at every insertion; the cavity is computed by testing every face, so its
   // connectivity is a real check. Grids and exactly cocircular points are the hard cases.
-  XY uniform = dttest::uniformPoints(2000, 7);
-  XY grid = dttest::gridPoints(30, 30, 0.125);
-  dttest::shuffle(grid, 8);
-  XY circle = dttest::circlePoints(400);
-  dttest::shuffle(circle, 9);
+  XY uniform = dt::uniformPoints(2000, 7);
+  XY grid = dt::gridPoints(30, 30, 0.125);
+  dt::shufflePoints(grid, 8);
+  XY circle = dt::circlePoints(400);
+  dt::shufflePoints(circle, 9);
   XY cocircular = integerCirclePoints();
   REQUIRE(cocircular.size() / 2 == 324);
-  dttest::shuffle(cocircular, 10);
-  XY gridSorted = dttest::gridPoints(20, 20);  // lexicographic order: long thin cavities
+  dt::shufflePoints(cocircular, 10);
+  XY gridSorted = dt::gridPoints(20, 20);  // lexicographic order: long thin cavities
   std::size_t total = 0;
   for (const XY* p : {&uniform, &grid, &circle, &cocircular, &gridSorted}) {
     const KernelRun run = runKernel(*p, 1u << 30);
@@ -246,14 +246,14 @@ TEST_CASE("2.1.2 Prop. 2.1.1: the cavity is non-empty, edge-connected, star-shap
 TEST_CASE("2.1.2 Property 2.1.1: no point of S_n inside the cavity, hence |bnd| = |C| + 2") {
   // checkCavity counts the vertices off the boundary and the boundary edges; a cavity that
   // violated Property 2.1.1 would show |bnd| = |C| + 2 - 2 (inner vertices).
-  const KernelRun run = runKernel(dttest::uniformPoints(500, 11), 1u << 30);
+  const KernelRun run = runKernel(dt::uniformPoints(500, 11), 1u << 30);
   INFO(run.error);
   CHECK(run.ok);
   // Control: the star of an interior vertex s (all its faces) with p next to s is not a
   // cavity: s is an inner vertex and |bnd| = |C|. The check does see the difference.
   dt::Triangulation T;
   std::vector<dt::Vertex*> S;
-  const XY g = dttest::gridPoints(3, 3);
+  const XY g = dt::gridPoints(3, 3);
   for (std::size_t i = 0; i < 9; ++i) S.push_back(T.addVertex(g[2 * i], g[2 * i + 1], long(i)));
   dt::delaunayTrglHull(T, S, dt::StartRule::LastCavity);
   dt::Vertex* s = S[4];  // (1, 1), the centre of the 3 x 3 grid
@@ -270,17 +270,17 @@ TEST_CASE("2.1.2 Property 2.1.1: no point of S_n inside the cavity, hence |bnd| 
 
 TEST_CASE("2.1.3 the ball has |C| + 2 triangles and DT_{n+1} is Delaunay") {
   // Full exact check after every insertion on smaller inputs (it costs O(n) each).
-  XY grid = dttest::gridPoints(12, 12);
-  dttest::shuffle(grid, 12);
-  XY circle = dttest::circlePoints(120);
-  dttest::shuffle(circle, 13);
+  XY grid = dt::gridPoints(12, 12);
+  dt::shufflePoints(grid, 12);
+  XY circle = dt::circlePoints(120);
+  dt::shufflePoints(circle, 13);
   for (const XY* p : {&grid, &circle}) {
     const KernelRun run = runKernel(*p, 1);
     INFO(run.error);
     CHECK(run.ok);
     CHECK(run.fullChecks == p->size() / 2);
   }
-  const KernelRun big = runKernel(dttest::uniformPoints(400, 14), 1);
+  const KernelRun big = runKernel(dt::uniformPoints(400, 14), 1);
   INFO(big.error);
   CHECK(big.ok);
   CHECK(big.fullChecks == 400);

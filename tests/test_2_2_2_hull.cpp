@@ -11,14 +11,7 @@
 
 namespace {
 
-using dttest::XY;
-
-std::vector<dt::Vertex*> addPoints(dt::Triangulation& T, const XY& p) {
-  std::vector<dt::Vertex*> S;
-  for (std::size_t i = 0; i < p.size() / 2; ++i)
-    S.push_back(T.addVertex(p[2 * i], p[2 * i + 1], long(i)));
-  return S;
-}
+using dt::XY;
 
 // The hull read from the ghosts against brute force: every point on or left of every hull edge;
 // consecutive edges chained and turning left or going straight; every point lying on the
@@ -49,12 +42,12 @@ void checkHull(const dt::Triangulation& T, const std::vector<dt::Vertex*>& S) {
 
 TEST_CASE("2.2.2: visible hull edges form one chain, seen strictly, none from inside") {
   dt::Triangulation T;
-  const auto S = addPoints(T, dttest::uniformPoints(400, 222));
+  const auto S = dt::addVertices(T, dt::uniformPoints(400, 222));
   dt::delaunayTrglHull(T, S, dt::StartRule::LastCavity);
   REQUIRE(dt::checkTriangulation(T).ok);
   checkHull(T, S);
   const auto H = dt::hullEdges(T);
-  const XY probes = dttest::uniformPoints(300, 9, -1, 2);
+  const XY probes = dt::uniformPoints(300, 9, -1, 2);
   int outside = 0;
   for (std::size_t i = 0; i < probes.size() / 2; ++i) {
     dt::Vertex q(probes[2 * i], probes[2 * i + 1]);
@@ -75,7 +68,7 @@ TEST_CASE("2.2.2: visible hull edges form one chain, seen strictly, none from in
 }
 
 TEST_CASE("2.2.2: every point outside the hull (lexicographic order) is inserted exactly") {
-  XY p = dttest::uniformPoints(3000, 17);
+  XY p = dt::uniformPoints(3000, 17);
   std::vector<std::pair<double, double>> v;
   for (std::size_t i = 0; i < p.size() / 2; ++i) v.emplace_back(p[2 * i], p[2 * i + 1]);
   std::sort(v.begin(), v.end());
@@ -109,16 +102,16 @@ TEST_CASE("2.2.2: collinear starting points and points on hull supporting lines"
   // ends, then points on the supporting lines of the first triangle's edges, then the rest.
   XY line;
   for (int i = 0; i < 60; ++i) line.push_back(i), line.push_back(0.5 * i);
-  dttest::shuffle(line, 3);
+  dt::shufflePoints(line, 3);
   XY p = line;
   p.insert(p.end(), {10, 20});                            // the first point off the line
   p.insert(p.end(), {-10, -5, 100, 50, 200, 100});        // on the line, beyond its ends
   p.insert(p.end(), {10, 30, 10, -40, 15, 0, 300, 150});  // x = 10 line, y = 0 line, the line
-  XY rest = dttest::uniformPoints(200, 8, -20, 300);
+  XY rest = dt::uniformPoints(200, 8, -20, 300);
   p.insert(p.end(), rest.begin(), rest.end());
   for (auto rule : {dt::StartRule::LastCavity, dt::StartRule::FirstFace}) {
     dt::Triangulation T;
-    const auto S = addPoints(T, p);
+    const auto S = dt::addVertices(T, p);
     dt::delaunayTrglHull(T, S, rule);
     const dt::CheckReport r = dt::checkTriangulation(T);
     CHECK_MESSAGE(r.ok, r.error);
@@ -128,7 +121,7 @@ TEST_CASE("2.2.2: collinear starting points and points on hull supporting lines"
   // Growing the hull along its own edges' lines: a square, then points on the lines of its
   // sides; every step is validated.
   dt::Triangulation T;
-  const auto S = addPoints(T, {0, 0, 1, 0, 1, 1, 0, 1, 2, 0, 3, 0, -1, 0, 1, 2, 1, -3, 0, 5,
+  const auto S = dt::addVertices(T, {0, 0, 1, 0, 1, 1, 0, 1, 2, 0, 3, 0, -1, 0, 1, 2, 1, -3, 0, 5,
                                0.5, 0, 3, 1, -1, 1, 3, 3});
   dt::delaunayTrglHull(T, {S[0], S[1], S[2], S[3]}, dt::StartRule::LastCavity);
   dt::InsertionScratch scratch;
@@ -149,11 +142,11 @@ TEST_CASE("2.2.2: the sweep triangulation (plain outside-hull insertions) is a v
   XY col;  // a collinear start of 40 points, duplicates, then random points
   for (int i = 0; i < 40; ++i) col.push_back(0), col.push_back(i);
   col.insert(col.end(), {0, 3, 0, 3, 5, 5});
-  XY r = dttest::uniformPoints(500, 4, 0.5, 10);
+  XY r = dt::uniformPoints(500, 4, 0.5, 10);
   col.insert(col.end(), r.begin(), r.end());
-  for (const XY& p : {col, dttest::gridPoints(20, 20), dttest::circlePoints(100)}) {
+  for (const XY& p : {col, dt::gridPoints(20, 20), dt::circlePoints(100)}) {
     dt::Triangulation T;
-    const auto S = addPoints(T, p);
+    const auto S = dt::addVertices(T, p);
     dt::SweepStats st;
     dt::sweepTriangulation(T, S, &st);
     std::set<std::pair<double, double>> distinct;
@@ -177,10 +170,10 @@ TEST_CASE("2.2.2: the sweep triangulation (plain outside-hull insertions) is a v
     CHECK_MESSAGE(c.ok, c.error);
   }
   dt::Triangulation T;
-  CHECK_THROWS_AS(dt::sweepTriangulation(T, addPoints(T, {0, 0, 1, 1, 2, 2, 3, 3})),
+  CHECK_THROWS_AS(dt::sweepTriangulation(T, dt::addVertices(T, {0, 0, 1, 1, 2, 2, 3, 3})),
                   dt::DegenerateInput);
   dt::Triangulation U;
-  const auto S = addPoints(U, {0, 0, 1, 0, 0, 1});
+  const auto S = dt::addVertices(U, {0, 0, 1, 0, 0, 1});
   dt::sweepTriangulation(U, S);
   dt::Vertex inside(0.2, 0.2);
   CHECK_THROWS_AS(dt::insertOutsideHull(U, &inside, dt::anyGhost(U)), std::invalid_argument);
@@ -192,11 +185,11 @@ TEST_CASE("delaunay2d --method super and --method hull give the same exact DT(S)
     XY p;
   };
   XY bent;  // a flat arc: every hull triangle nearly flat (huge circumcircles)
-  const XY u = dttest::uniformPoints(300, 31);
+  const XY u = dt::uniformPoints(300, 31);
   for (std::size_t i = 0; i < 300; ++i) bent.push_back(u[2 * i]), bent.push_back(1e-7 * u[2 * i] * (1 - u[2 * i]));
-  const Case cases[] = {{"uniform", dttest::uniformPoints(2000, 30)},
-                        {"grid", dttest::gridPoints(25, 25)},
-                        {"circle", dttest::circlePoints(300)},
+  const Case cases[] = {{"uniform", dt::uniformPoints(2000, 30)},
+                        {"grid", dt::gridPoints(25, 25)},
+                        {"circle", dt::circlePoints(300)},
                         {"bent", bent}};
   for (const Case& c : cases) {
     CAPTURE(c.name);

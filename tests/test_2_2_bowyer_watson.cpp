@@ -12,7 +12,7 @@
 
 namespace {
 
-using dttest::XY;
+using dt::XY;
 
 // DT(S ∪ S0) by Listing 2.7 (delaunayTrgl) in the super-triangles of the same size.
 dt::PlainMesh listing27(const XY& p, double factor, dt::InsertionStats* st = nullptr) {
@@ -37,17 +37,17 @@ const XY kFig25 = {0.22, 0.31, 0.74, 0.27, 0.51, 0.62, 0.29, 0.83, 0.88, 0.71,
 }  // namespace
 
 TEST_CASE("2.2 Algorithm 1 (corrected) gives the same triangles as delaunayTrgl") {
-  XY grid = dttest::gridPoints(12, 12);
+  XY grid = dt::gridPoints(12, 12);
   XY gridShuffled = grid;
-  dttest::shuffle(gridShuffled, 21);
-  XY circle = dttest::circlePoints(100);
-  dttest::shuffle(circle, 22);
-  XY withDuplicates = dttest::uniformPoints(200, 23);
+  dt::shufflePoints(gridShuffled, 21);
+  XY circle = dt::circlePoints(100);
+  dt::shufflePoints(circle, 22);
+  XY withDuplicates = dt::uniformPoints(200, 23);
   for (std::size_t i = 0; i < 40; ++i) {  // 40 exact repeats of earlier points
     withDuplicates.push_back(withDuplicates[2 * (5 * i)]);
     withDuplicates.push_back(withDuplicates[2 * (5 * i) + 1]);
   }
-  const XY uniform = dttest::uniformPoints(600, 24);
+  const XY uniform = dt::uniformPoints(600, 24);
   int inputs = 0;
   for (const XY* p : std::initializer_list<const XY*>{&uniform, &grid, &gridShuffled, &circle,
                                                       &withDuplicates, &kFig25}) {
@@ -67,7 +67,7 @@ TEST_CASE("2.2 Algorithm 1 (corrected) gives the same triangles as delaunayTrgl"
 
 TEST_CASE("2.3 Algorithm 1 tests every triangle: 2i of them at iteration i, n(n+1) in all") {
   for (std::size_t n : {10u, 100u, 1000u}) {
-    const dt::BowyerWatsonResult bw = dt::bowyerWatson(dttest::uniformPoints(n, 25));
+    const dt::BowyerWatsonResult bw = dt::bowyerWatson(dt::uniformPoints(n, 25));
     // DT_{i-1} has 2 + 2(i-1) = 2i triangles (each insertion adds |C|+2 and removes |C|).
     CHECK(bw.incircleTests == n * (n + 1));
     CHECK(bw.tri.size() == 2 + 2 * n);
@@ -96,7 +96,7 @@ TEST_CASE("2.2.1 Figure 2.6: deleting the super-triangles' faces can leave part 
   // hull edge has a super-vertex strictly inside its circumcircle, as the notes explain.
   int found = 0, foundFar = 0;
   for (unsigned seed = 1; seed <= 200; ++seed) {
-    const XY p = dttest::uniformPoints(10, 3000 + seed);
+    const XY p = dt::uniformPoints(10, 3000 + seed);
     const dt::BowyerWatsonResult bw = dt::bowyerWatson(p, 1.5);
     const auto missing = dt::hullEdgesNotCovered(bw.xy, bw.ids, bw.tri);
     const dt::BowyerWatsonResult far = dt::bowyerWatson(p, 1e6);

@@ -20,7 +20,7 @@ struct Built {
 
 // DT(S) with ghost faces, checked exactly, and counted by meshCounts (which shares no code with
 // the checker: it sorts edges instead of hashing directed ones).
-Built build(const dttest::XY& p) {
+Built build(const dt::XY& p) {
   dt::Triangulation T;
   std::vector<dt::Vertex*> S;
   for (std::size_t i = 0; i < p.size() / 2; ++i) S.push_back(T.addVertex(p[2 * i], p[2 * i + 1], long(i)));
@@ -36,16 +36,16 @@ Built build(const dttest::XY& p) {
 
 // The inputs of the tests: random, degenerate (grids, cocircular, collinear but one, duplicates)
 // and badly scaled.
-std::vector<std::pair<std::string, dttest::XY>> inputs() {
-  std::vector<std::pair<std::string, dttest::XY>> v;
-  for (unsigned s = 1; s <= 6; ++s) v.push_back({"uniform", dttest::uniformPoints(50 * s * s, s)});
+std::vector<std::pair<std::string, dt::XY>> inputs() {
+  std::vector<std::pair<std::string, dt::XY>> v;
+  for (unsigned s = 1; s <= 6; ++s) v.push_back({"uniform", dt::uniformPoints(50 * s * s, s)});
   for (int k : {2, 3, 7, 20}) {
-    dttest::XY g = dttest::gridPoints(k, k + 1);
-    dttest::shuffle(g, unsigned(k));
+    dt::XY g = dt::gridPoints(k, k + 1);
+    dt::shufflePoints(g, unsigned(k));
     v.push_back({"grid", g});
   }
-  v.push_back({"circle", dttest::circlePoints(64)});
-  dttest::XY line;  // 30 collinear points and one off the line
+  v.push_back({"circle", dt::circlePoints(64)});
+  dt::XY line;  // 30 collinear points and one off the line
   for (int i = 0; i < 30; ++i) {
     line.push_back(i);
     line.push_back(2.0 * i);
@@ -53,12 +53,12 @@ std::vector<std::pair<std::string, dttest::XY>> inputs() {
   line.push_back(3);
   line.push_back(-1);
   v.push_back({"collinear + 1", line});
-  dttest::XY dup = dttest::uniformPoints(200, 9);
+  dt::XY dup = dt::uniformPoints(200, 9);
   for (std::size_t i = 0; i < 100; ++i) dup.push_back(dup[i]);  // 50 points given twice
   v.push_back({"duplicates", dup});
-  dttest::XY tiny = dttest::uniformPoints(300, 10, 0, 1e-200);
+  dt::XY tiny = dt::uniformPoints(300, 10, 0, 1e-200);
   v.push_back({"tiny", tiny});
-  dttest::XY huge = dttest::uniformPoints(300, 11, -1e100, 1e100);
+  dt::XY huge = dt::uniformPoints(300, 11, -1e100, 1e100);
   v.push_back({"huge", huge});
   return v;
 }
@@ -94,7 +94,7 @@ TEST_CASE("2.3.2 eqs. (2.2)-(2.3): n n_vf = 3 n_f = 6n - 3n_h - 6 and n n_ve = 2
 
 TEST_CASE("2.3.2 Figure 2.9: n = 12, n_h = 9, n_vf = 39/12 = 3.25") {
   // The points of Figure 2.9 (chapters/ch2/sec2_3_2_adjacencies.cpp).
-  const dttest::XY p = {1.285,  0.149,  0.843,  0.735,  0.033,  1.020,  -0.803, 0.774,
+  const dt::XY p = {1.285,  0.149,  0.843,  0.735,  0.033,  1.020,  -0.803, 0.774,
                         -1.287, 0.200,  -1.119, -0.469, -0.474, -0.931, 0.423,  -0.967,
                         1.098,  -0.516, -0.45,  0.15,   0.35,   0.3,    0.05,   -0.4};
   const dt::MeshCounts c = build(p).counts;
@@ -108,7 +108,7 @@ TEST_CASE("2.3.2 Figure 2.9: n = 12, n_h = 9, n_vf = 39/12 = 3.25") {
 
 TEST_CASE("2.3.2 on random points n_vf and n_ve tend to 6 (n >> n_h)") {
   // E[n_h] grows like log n for uniform points, so 6 - n_vf = (3 n_h + 6)/n is below 0.02 at 10^4.
-  const dt::MeshCounts c = build(dttest::uniformPoints(10000, 77)).counts;
+  const dt::MeshCounts c = build(dt::uniformPoints(10000, 77)).counts;
   CHECK(c.meanVF() > 5.98);
   CHECK(c.meanVF() < 6);
   CHECK(c.meanVE() > 5.98);
@@ -119,8 +119,8 @@ TEST_CASE("Exercise 2.3.2.1: counts of a grid's Delaunay triangulation in closed
   for (auto [nx, ny] : {std::pair<long, long>{2, 2}, {2, 9}, {5, 3}, {17, 11}}) {
     CAPTURE(nx);
     CAPTURE(ny);
-    dttest::XY g = dttest::gridPoints(int(nx), int(ny), 0.5, -3, 7);
-    dttest::shuffle(g, unsigned(nx * ny));
+    dt::XY g = dt::gridPoints(int(nx), int(ny), 0.5, -3, 7);
+    dt::shufflePoints(g, unsigned(nx * ny));
     const dt::MeshCounts c = build(g).counts;
     const std::array<long, 4> f = dt::gridCounts(nx, ny);
     CHECK(c.n == f[0]);
@@ -177,8 +177,8 @@ TEST_CASE("Exercise 2.3.3.2: vertexStar lists exactly the triangles of a vertex"
     CAPTURE(method);
     dt::Triangulation T;
     std::vector<dt::Vertex*> S;
-    dttest::XY p = dttest::gridPoints(6, 5);
-    const dttest::XY r = dttest::uniformPoints(40, 3, 0, 5);
+    dt::XY p = dt::gridPoints(6, 5);
+    const dt::XY r = dt::uniformPoints(40, 3, 0, 5);
     p.insert(p.end(), r.begin(), r.end());
     for (std::size_t i = 0; i < p.size() / 2; ++i) S.push_back(T.addVertex(p[2 * i], p[2 * i + 1], long(i)));
     if (method == 0) {
@@ -213,7 +213,7 @@ TEST_CASE("2.3.4 Listing 2.4: computeAdjacencies pairs every interior edge exact
   for (unsigned seed : {1u, 2u, 3u}) {
     dt::Triangulation T;
     std::vector<dt::Vertex*> S;
-    dttest::XY p = seed == 3 ? dttest::gridPoints(12, 9) : dttest::uniformPoints(500, seed);
+    dt::XY p = seed == 3 ? dt::gridPoints(12, 9) : dt::uniformPoints(500, seed);
     for (std::size_t i = 0; i < p.size() / 2; ++i) S.push_back(T.addVertex(p[2 * i], p[2 * i + 1], long(i)));
     dt::initSuperTriangles(T, 0, 0, 12, 12);
     dt::delaunayTrgl(T, S, dt::StartRule::LastCavity);

@@ -17,7 +17,7 @@ struct Table21Row {
 // One row of Table 2.1: Listing 2.7 on n uniform random points in random order, super-triangles,
 // the walk starting at the first face T[0]; the result checked exactly.
 Table21Row table21(std::size_t n, unsigned seed) {
-  const dttest::XY p = dttest::uniformPoints(n, seed);
+  const dt::XY p = dt::uniformPoints(n, seed);
   dt::Triangulation T;
   std::vector<dt::Vertex*> S;
   for (std::size_t i = 0; i < n; ++i) S.push_back(T.addVertex(p[2 * i], p[2 * i + 1], long(i)));
@@ -79,7 +79,7 @@ TEST_CASE("2.3.4 Table 2.1: N_cavity tends to 4 on random points") {
 
 TEST_CASE("2.3.4 a cavity of size |C| gives |C| + 2 new triangles (4 -> 6)") {
   // Each insertion: the ball has |C| + 2 faces, all incident to p; the face count grows by 2.
-  const dttest::XY p = dttest::uniformPoints(2000, 5);
+  const dt::XY p = dt::uniformPoints(2000, 5);
   dt::Triangulation T;
   std::vector<dt::Vertex*> S;
   for (std::size_t i = 0; i < p.size() / 2; ++i) S.push_back(T.addVertex(p[2 * i], p[2 * i + 1], long(i)));
@@ -106,7 +106,7 @@ TEST_CASE("2.3.4 a cavity of size |C| gives |C| + 2 new triangles (4 -> 6)") {
 }
 
 TEST_CASE("Exercise 2.3.4.2: the last point's cavity has deg(p) - 2 faces; their mean is 4 + (6 - D)/n") {
-  const dttest::XY p = dttest::uniformPoints(150, 8);
+  const dt::XY p = dt::uniformPoints(150, 8);
   const std::size_t n = p.size() / 2;
   double meanLast = 0;
   std::array<double, 2> backward{};
@@ -189,7 +189,7 @@ TEST_CASE("2.3.4 Listing 2.5 without recursion: a cavity of 10^5 faces") {
 
 TEST_CASE("Exercise 2.3.4.1: computeAdjacenciesSorted inside the kernel gives the same mesh") {
   // Rebuild each ball's links with the sorting method and compare with the map's.
-  const dttest::XY p = dttest::uniformPoints(3000, 12);
+  const dt::XY p = dt::uniformPoints(3000, 12);
   dt::Triangulation T;
   std::vector<dt::Vertex*> S;
   for (std::size_t i = 0; i < p.size() / 2; ++i) S.push_back(T.addVertex(p[2 * i], p[2 * i + 1], long(i)));

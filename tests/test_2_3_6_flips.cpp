@@ -13,7 +13,7 @@
 
 namespace {
 
-using dttest::XY;
+using dt::XY;
 
 // Structural validity without the Delaunay property: every link symmetric and across the shared
 // edge, every finite face strictly counter-clockwise (exact), and Euler's count n_f = 2(n-1) - n_h
@@ -47,13 +47,6 @@ std::string structure(const dt::Triangulation& T) {
   return "";
 }
 
-std::vector<dt::Vertex*> addPoints(dt::Triangulation& T, const XY& p) {
-  std::vector<dt::Vertex*> S;
-  for (std::size_t i = 0; i < p.size() / 2; ++i)
-    S.push_back(T.addVertex(p[2 * i], p[2 * i + 1], long(i)));
-  return S;
-}
-
 // Number of finite faces around each vertex.
 std::map<const dt::Vertex*, int> degrees(const dt::Triangulation& T) {
   std::map<const dt::Vertex*, int> deg;
@@ -82,7 +75,7 @@ void superDT(dt::Triangulation& T, const XY& p, double factor) {
     y0 = std::min(y0, p[2 * i + 1]), y1 = std::max(y1, p[2 * i + 1]);
   }
   dt::initSuperTriangles(T, x0, y0, x1, y1, factor);
-  const auto S = addPoints(T, p);
+  const auto S = dt::addVertices(T, p);
   dt::delaunayTrgl(T, S, dt::StartRule::LastCavity);
 }
 
@@ -98,7 +91,7 @@ dt::FlipStats superThenRecover(dt::Triangulation& T, const XY& p, double factor,
 // Random abscissae, so that no four points are cocircular (a symmetric sample would have
 // isosceles trapezoids, hence several Delaunay triangulations).
 XY bentLine(std::size_t n, double bend, unsigned seed = 1) {
-  const XY u = dttest::uniformPoints(n, seed);
+  const XY u = dt::uniformPoints(n, seed);
   XY p;
   for (std::size_t i = 0; i < n; ++i) {
     const double t = u[2 * i];
@@ -127,7 +120,7 @@ XY hugeCircleArc(std::size_t n, double R) {
 
 TEST_CASE("2.3.3: a flip changes the degrees of the four vertices by -1, -1, +1, +1") {
   dt::Triangulation T;
-  const auto S = addPoints(T, dttest::uniformPoints(300, 2336));
+  const auto S = dt::addVertices(T, dt::uniformPoints(300, 2336));
   dt::delaunayTrglHull(T, S, dt::StartRule::LastCavity);
   REQUIRE(dt::checkTriangulation(T).ok);
   int flipped = 0, refused = 0;
@@ -198,7 +191,7 @@ TEST_CASE("2.3.6: flipEdge refuses reflex or flat quadrilaterals and ghost edges
     }
   // Three collinear points: the quadrilateral (0,0) (1,0) (2,0) (1,1) is flat at (1,0).
   dt::Triangulation U;
-  auto P = addPoints(U, {0, 0, 2, 0, 1, 1, 1, 0});
+  auto P = dt::addVertices(U, {0, 0, 2, 0, 1, 1, 1, 0});
   dt::delaunayTrglHull(U, P, dt::StartRule::LastCavity);
   REQUIRE(dt::checkTriangulation(U).ok);
   for (dt::Face& f : U.faces())
@@ -210,19 +203,19 @@ TEST_CASE("2.3.6: Lawson's flips turn any triangulation into the Delaunay triang
     std::string name;
     XY p;
   };
-  XY grid = dttest::gridPoints(15, 12);
-  dttest::shuffle(grid, 3);
+  XY grid = dt::gridPoints(15, 12);
+  dt::shufflePoints(grid, 3);
   const Family fams[] = {
-      {"uniform", dttest::uniformPoints(2000, 11)},
+      {"uniform", dt::uniformPoints(2000, 11)},
       {"grid (cocircular)", grid},
-      {"circle (all on the hull)", dttest::circlePoints(200)},
+      {"circle (all on the hull)", dt::circlePoints(200)},
       {"bent line", bentLine(300, 1e-6)},
-      {"huge coordinates", dttest::uniformPoints(500, 12, 1e150, 1.0000001e150)},
+      {"huge coordinates", dt::uniformPoints(500, 12, 1e150, 1.0000001e150)},
   };
   for (const Family& fam : fams) {
     CAPTURE(fam.name);
     dt::Triangulation T;
-    const auto S = addPoints(T, fam.p);
+    const auto S = dt::addVertices(T, fam.p);
     dt::sweepTriangulation(T, S);
     REQUIRE(structure(T) == "");
     const std::size_t nf = T.numFiniteFaces();
@@ -235,28 +228,28 @@ TEST_CASE("2.3.6: Lawson's flips turn any triangulation into the Delaunay triang
   }
   // The sweep is not Delaunay on random points, so Lawson has real work to do.
   dt::Triangulation T;
-  const auto S = addPoints(T, dttest::uniformPoints(1000, 5));
+  const auto S = dt::addVertices(T, dt::uniformPoints(1000, 5));
   dt::sweepTriangulation(T, S);
   CHECK_FALSE(dt::checkTriangulation(T).ok);
   CHECK(dt::lawsonFlip(T).flips > 500);
 }
 
 TEST_CASE("2.2.1/2.3.6: the recovery from DT(S0 ∪ S) gives DT(S) for super-triangles of any size") {
-  XY grid = dttest::gridPoints(12, 9, 0.5);
-  dttest::shuffle(grid, 4);
-  XY circle = dttest::circlePoints(120, 3);
-  dttest::shuffle(circle, 5);
+  XY grid = dt::gridPoints(12, 9, 0.5);
+  dt::shufflePoints(grid, 4);
+  XY circle = dt::circlePoints(120, 3);
+  dt::shufflePoints(circle, 5);
   XY bent = bentLine(200, 1e-4);
-  dttest::shuffle(bent, 6);
+  dt::shufflePoints(bent, 6);
   XY huge = hugeCircleArc(150, 1e6);
-  dttest::shuffle(huge, 7);
+  dt::shufflePoints(huge, 7);
   struct Family {
     std::string name;
     XY p;
     bool generic;  // no four cocircular points on an empty circle: DT(S) is unique
   };
   const Family fams[] = {
-      {"uniform", dttest::uniformPoints(1500, 21), true},
+      {"uniform", dt::uniformPoints(1500, 21), true},
       {"grid", grid, false},
       {"circle", circle, false},
       {"bent line", bent, true},
@@ -275,7 +268,7 @@ TEST_CASE("2.2.1/2.3.6: the recovery from DT(S0 ∪ S) gives DT(S) for super-tri
       CHECK(st.removedFaces == r.nHull + 4);  // n_f(S0 ∪ S) - n_f(S) = (2n+2) - (2n-2-n_h)
       // Same as the hull method (2.2.2).
       dt::Triangulation H;
-      dt::delaunayTrglHull(H, addPoints(H, fam.p), dt::StartRule::LastCavity);
+      dt::delaunayTrglHull(H, dt::addVertices(H, fam.p), dt::StartRule::LastCavity);
       REQUIRE(dt::checkTriangulation(H).ok);
       if (fam.generic) CHECK(canonical(T) == canonical(H));
       CHECK(dt::convexHull(T).size() == dt::convexHull(H).size());

@@ -7,7 +7,7 @@
 
 #include "support.h"
 
-using dttest::XY;
+using dt::XY;
 
 namespace {
 
@@ -42,15 +42,10 @@ void runAndValidate(const std::string& name, const XY& p, int first = 1) {
 }  // namespace
 
 TEST_CASE("delaunay2d: exact DT(S) on degenerate families") {
-  runAndValidate("grid", dttest::gridPoints(30, 30));
-  XY rot;  // an integer grid rotated by an angle with rational cos and sin (3/5, 4/5)
-  for (int i = 0; i < 20; ++i)
-    for (int j = 0; j < 20; ++j) {
-      rot.push_back(3.0 * i - 4.0 * j);
-      rot.push_back(4.0 * i + 3.0 * j);
-    }
-  runAndValidate("grid_rotated", rot);
-  runAndValidate("circle", dttest::circlePoints(400));
+  runAndValidate("grid", dt::gridPoints(30, 30));
+  // an integer grid rotated by an angle with rational cos and sin (3/5, 4/5)
+  runAndValidate("grid_rotated", dt::rotatedGridPoints(20, 20));
+  runAndValidate("circle", dt::circlePoints(400));
   XY col;
   for (int i = 0; i < 300; ++i) {
     col.push_back(i);
@@ -58,16 +53,16 @@ TEST_CASE("delaunay2d: exact DT(S) on degenerate families") {
   }
   col.insert(col.end(), {10, 0, 100, 500, 299, 0});
   runAndValidate("collinear", col, 0);
-  XY dup = dttest::uniformPoints(500, 9);
+  XY dup = dt::uniformPoints(500, 9);
   for (int i = 0; i < 100; ++i) {
     dup.push_back(dup[2 * (i * 3)]);
     dup.push_back(dup[2 * (i * 3) + 1]);
   }
   runAndValidate("duplicates", dup);
-  runAndValidate("big", dttest::uniformPoints(3000, 2, 1e9, 1e9 + 1));
-  runAndValidate("tiny", dttest::uniformPoints(3000, 3, 1e-200, 2e-200));
-  runAndValidate("convex", dttest::circlePoints(1000, 1e6));
-  XY sorted = dttest::uniformPoints(5000, 4);
+  runAndValidate("big", dt::uniformPoints(3000, 2, 1e9, 1e9 + 1));
+  runAndValidate("tiny", dt::uniformPoints(3000, 3, 1e-200, 2e-200));
+  runAndValidate("convex", dt::circlePoints(1000, 1e6));
+  XY sorted = dt::uniformPoints(5000, 4);
   std::vector<std::pair<double, double>> v;
   for (std::size_t i = 0; i < sorted.size() / 2; ++i) v.emplace_back(sorted[2 * i], sorted[2 * i + 1]);
   std::sort(v.begin(), v.end());

@@ -11,7 +11,7 @@
 #include "support.h"
 
 using namespace dt;
-using dttest::XY;
+using dt::XY;
 
 namespace {
 
@@ -64,7 +64,7 @@ TEST_CASE("errata Listing 2.6: the printed walk has no exit when its line passes
 TEST_CASE("errata Listing 2.7: faces across the cavity boundary are not left marked deleted") {
   // Listing 2.5 marks the faces of otherSide as deleted; the printed Listing 2.7 never clears
   // the mark, so a later cavity stops at them. After every insertion no face may stay marked.
-  XY p = dttest::uniformPoints(2000, 23);
+  XY p = dt::uniformPoints(2000, 23);
   Triangulation T;
   std::vector<Vertex*> S;
   for (std::size_t i = 0; i < p.size() / 2; ++i) S.push_back(T.addVertex(p[2 * i], p[2 * i + 1], long(i)));
@@ -88,8 +88,8 @@ TEST_CASE("errata Listing 2.7: faces across the cavity boundary are not left mar
 TEST_CASE("errata Listing 2.7: every face of every Delaunay ball is counter-clockwise") {
   // The printed Edge keeps only (vmin, vmax) sorted by address, which loses the orientation of
   // the boundary edge; a ball built from it has about half its faces clockwise.
-  XY p = dttest::gridPoints(15, 15);
-  dttest::shuffle(p, 9);
+  XY p = dt::gridPoints(15, 15);
+  dt::shufflePoints(p, 9);
   Triangulation T;
   std::vector<Vertex*> S;
   for (std::size_t i = 0; i < p.size() / 2; ++i) S.push_back(T.addVertex(p[2 * i], p[2 * i + 1], long(i)));

@@ -3,6 +3,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <random>
 #include <set>
 
 #include "adjacency.h"
@@ -12,7 +13,7 @@
 #include "support.h"
 
 using namespace dt;
-using dttest::XY;
+using dt::XY;
 
 namespace {
 
@@ -131,7 +132,7 @@ TEST_CASE("Listing 2.4: computeAdjacencies pairs every interior edge exactly onc
 
 TEST_CASE("Listing 2.5: the cavity search needs no recursion, even for a cavity of 20000 faces") {
   // 20000 points on a circle then its centre: the centre is inside every circumcircle.
-  XY p = dttest::circlePoints(20000, 1.0);
+  XY p = dt::circlePoints(20000, 1.0);
   p.push_back(0);
   p.push_back(0);
   SuperRun run(p);
@@ -142,17 +143,17 @@ TEST_CASE("Listing 2.5: the cavity search needs no recursion, even for a cavity 
 
 TEST_CASE("2.1.2 Property 2.1.1: |bnd| = |C| + 2 at every insertion, on random, grid and circle points") {
   // insertVertex throws std::logic_error when the boundary count is wrong.
-  for (const XY& p : {dttest::uniformPoints(3000, 11), dttest::gridPoints(40, 40),
-                      dttest::circlePoints(500)}) {
+  for (const XY& p : {dt::uniformPoints(3000, 11), dt::gridPoints(40, 40),
+                      dt::circlePoints(500)}) {
     XY q = p;
-    dttest::shuffle(q, 3);
+    dt::shufflePoints(q, 3);
     CHECK_NOTHROW(SuperRun run(q));
   }
 }
 
 TEST_CASE("Listing 2.6: the walk stops on duplicates, passes through vertices, and sees the outside") {
   // On a grid, the line from a centroid to a far target runs through vertices.
-  XY g = dttest::gridPoints(20, 20);
+  XY g = dt::gridPoints(20, 20);
   SuperRun run(g, StartRule::FirstFace);
   CHECK(checkTriangulation(run.T).ok);
   Vertex dup(7, 7);
@@ -174,7 +175,7 @@ TEST_CASE("Listing 2.6: the walk stops on duplicates, passes through vertices, a
 }
 
 TEST_CASE("Listing 2.7: super-triangles give DT(S u S0), and removing them gives DT(S) on this input") {
-  XY p = dttest::uniformPoints(2000, 5);
+  XY p = dt::uniformPoints(2000, 5);
   SuperRun run(p, StartRule::FirstFace, 1000);
   const CheckReport r = checkTriangulation(run.T);
   CHECK_MESSAGE(r.ok, r.error);
@@ -194,7 +195,7 @@ TEST_CASE("2.3.4 Table 2.1: the Delaunay cavity has about 4 triangles on random 
   // Each insertion creates a ball of |C| + 2 faces, and the mean degree of a vertex tends to 6,
   // so the mean cavity size tends to 4. At n = 20000 the notes print 3.97 (10^4) - 3.99 (10^5);
   // the tolerance covers the seed-to-seed spread measured here (about 0.01).
-  XY p = dttest::uniformPoints(20000, 17);
+  XY p = dt::uniformPoints(20000, 17);
   SuperRun run(p, StartRule::LastCavity);
   CHECK(run.st.meanCavity() > 3.93);
   CHECK(run.st.meanCavity() < 4.05);
@@ -205,8 +206,8 @@ TEST_CASE("2.3.2 Euler counts: n_f = 2(n-1) - n_h and n_e = 3(n-1) - n_h on DT(S
     XY p;
     std::size_t nh;  // expected hull vertices (collinear ones included)
   };
-  std::vector<Case> cases = {{dttest::gridPoints(10, 7), 2 * (10 + 7) - 4},
-                             {dttest::circlePoints(64), 64}};
+  std::vector<Case> cases = {{dt::gridPoints(10, 7), 2 * (10 + 7) - 4},
+                             {dt::circlePoints(64), 64}};
   for (auto& c : cases) {
     Triangulation T;
     std::vector<Vertex*> S;
@@ -248,8 +249,8 @@ TEST_CASE("the validator rejects what is not a Delaunay triangulation") {
 
 TEST_CASE("DT(S) by the hull method on degenerate families, validated exactly") {
   std::vector<XY> families;
-  families.push_back(dttest::gridPoints(25, 25));
-  families.push_back(dttest::circlePoints(300));
+  families.push_back(dt::gridPoints(25, 25));
+  families.push_back(dt::circlePoints(300));
   XY col;  // 200 collinear points and three off the line
   for (int i = 0; i < 200; ++i) {
     col.push_back(i * 0.1);
@@ -260,15 +261,15 @@ TEST_CASE("DT(S) by the hull method on degenerate families, validated exactly") 
     col.push_back(15 - off);
   }
   families.push_back(col);
-  XY big = dttest::uniformPoints(1000, 3, 1e9, 1e9 + 1);
+  XY big = dt::uniformPoints(1000, 3, 1e9, 1e9 + 1);
   families.push_back(big);
-  XY tiny = dttest::uniformPoints(1000, 4, 1e-200, 3e-200);
+  XY tiny = dt::uniformPoints(1000, 4, 1e-200, 3e-200);
   families.push_back(tiny);
   for (std::size_t i = 0; i < families.size(); ++i) {
     CAPTURE(i);
     for (unsigned seed : {0u, 1u}) {
       XY p = families[i];
-      if (seed) dttest::shuffle(p, seed);
+      if (seed) dt::shufflePoints(p, seed);
       const CheckReport r = dttest::triangulateAndCheck(p);
       CHECK_MESSAGE(r.ok, r.error);
     }

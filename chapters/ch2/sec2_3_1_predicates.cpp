@@ -575,7 +575,7 @@ void benchmark(const ch::Options& o) {
   auto run = [&](const std::string& what, std::vector<double> xy) {
     dt::shufflePoints(xy, 7);
     dt::Triangulation T;
-    const std::vector<dt::Vertex*> S = dt::addPoints(T, xy);
+    const std::vector<dt::Vertex*> S = dt::addVertices(T, xy);
     dt::predicateCounters().reset();
     const auto t0 = std::chrono::steady_clock::now();
     dt::delaunayTrglHull(T, S, dt::StartRule::LastCavity);

@@ -49,7 +49,7 @@ void pointerTable(const ch::Options& o) {
   std::vector<Case> cases;
   {
     dt::Triangulation T;
-    dt::delaunayTrglHull(T, dt::addPoints(T, dt::uniformPoints(1000, 233)), dt::StartRule::LastCavity);
+    dt::delaunayTrglHull(T, dt::addVertices(T, dt::uniformPoints(1000, 233)), dt::StartRule::LastCavity);
     const dt::CheckReport r = dt::checkTriangulation(T);
     if (!r.ok) throw std::runtime_error("pointer table: " + r.error);
     cases.push_back({"1000 random points", double(r.nVertices), double(r.nHull)});

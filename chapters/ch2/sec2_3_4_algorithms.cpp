@@ -62,7 +62,7 @@ void figure210(const ch::Options& o) {
   // the largest with at most 6 faces, none of them on the hull (so every neighbour is a triangle).
   const std::vector<double> xy = dt::uniformPoints(18, 2010u);
   dt::Triangulation T;
-  std::vector<dt::Vertex*> S = dt::addPoints(T, xy);
+  std::vector<dt::Vertex*> S = dt::addVertices(T, xy);
   dt::delaunayTrglHull(T, S, dt::StartRule::LastCavity);
   double bx = 0.5, by = 0.5;
   std::size_t best = 0;
@@ -145,7 +145,7 @@ struct Run {
 // with StartRule::FirstFace this is the same computation as one call.
 Run table21Run(long n, bool check) {
   dt::Triangulation T;
-  std::vector<dt::Vertex*> S = dt::addPoints(T, dt::uniformPoints(std::size_t(n), 21u));
+  std::vector<dt::Vertex*> S = dt::addVertices(T, dt::uniformPoints(std::size_t(n), 21u));
   dt::initSuperTriangles(T, 0, 0, 1, 1);
   dt::InsertionStats st;
   ch::Progress prog(ch::fmt("Table 2.1, n = %ld", n), std::uint64_t(n));

@@ -25,7 +25,6 @@
 
 namespace {
 
-using dt::addPoints;
 using dt::XY;
 
 void bbox(const XY& p, double& x0, double& y0, double& x1, double& y1) {
@@ -40,7 +39,7 @@ void superDT(dt::Triangulation& T, const XY& p, double factor, dt::InsertionStat
   double x0, y0, x1, y1;
   bbox(p, x0, y0, x1, y1);
   dt::initSuperTriangles(T, x0, y0, x1, y1, factor);
-  dt::delaunayTrgl(T, addPoints(T, p), dt::StartRule::LastCavity, st);
+  dt::delaunayTrgl(T, dt::addVertices(T, p), dt::StartRule::LastCavity, st);
 }
 
 bool meshIsDT(const dt::Triangulation& T, std::size_t n) {
@@ -97,7 +96,7 @@ void figureFlip(const ch::Options& o) {
   const XY p = {0, 0, 4, 0.4, 2.2, 2.2, 1.8, -1.6,        // a b c d
                 -1.6, 1.6, 5.2, 2.4, 0.2, -3.2, 4.4, -2.6,  // beyond c a, b c, a d, d b
                 -3, -1, 6.5, -0.5, 1.5, 4, 2.5, -4.5};
-  auto S = addPoints(T, p);
+  auto S = dt::addVertices(T, p);
   dt::delaunayTrglHull(T, S, dt::StartRule::LastCavity);
   // The face with edge a b (either direction). If the Delaunay triangulation chose the other
   // diagonal c d, flip it first: the figure needs a valid triangulation, not a Delaunay one.
@@ -168,7 +167,7 @@ void tableDegrees(const ch::Options& o) {
   std::uniform_real_distribution<double> u(0, 1);
   XY p;
   for (int i = 0; i < 2000; ++i) p.push_back(u(rng)), p.push_back(u(rng));
-  dt::delaunayTrglHull(T, addPoints(T, p), dt::StartRule::LastCavity);
+  dt::delaunayTrglHull(T, dt::addVertices(T, p), dt::StartRule::LastCavity);
   std::vector<dt::Face*> live;
   for (dt::Face& f : T.faces())
     if (!f.isGhost()) live.push_back(&f);
@@ -246,7 +245,7 @@ void figureRecovery(const ch::Options& o) {
   };
   // conv(S), shaded as in Figure 2.6's caption.
   dt::Triangulation H;
-  dt::delaunayTrglHull(H, addPoints(H, p), dt::StartRule::LastCavity);
+  dt::delaunayTrglHull(H, dt::addVertices(H, p), dt::StartRule::LastCavity);
   std::vector<const dt::Vertex*> hull;
   for (dt::Vertex* v : dt::convexHull(H)) hull.push_back(byId(v->id));
   std::vector<std::string> titles;
@@ -372,7 +371,7 @@ void tableMethods(const ch::Options& o) {
       for (int r = 0; r < reps; ++r) {
         dt::Triangulation H;
         auto t0 = clk::now();
-        dt::delaunayTrglHull(H, addPoints(H, p), dt::StartRule::LastCavity);
+        dt::delaunayTrglHull(H, dt::addVertices(H, p), dt::StartRule::LastCavity);
         th.push_back(ch::secondsSince(t0));
         dt::Triangulation T;
         t0 = clk::now();
@@ -383,7 +382,7 @@ void tableMethods(const ch::Options& o) {
         ts.push_back(ch::secondsSince(t0));
         dt::Triangulation L;
         t0 = clk::now();
-        dt::sweepTriangulation(L, addPoints(L, p));
+        dt::sweepTriangulation(L, dt::addVertices(L, p));
         ls = dt::lawsonFlip(L);
         tl.push_back(ch::secondsSince(t0));
         if (r == 0) {
