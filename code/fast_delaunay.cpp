@@ -118,6 +118,7 @@ class Kernel {
   };
 
   const double* pt(int v) const { return P_ + 2 * v; }
+  static constexpr int kNext[3] = {1, 2, 0};
 
   // Inlined by force: it is the innermost call of the walk and of the cavity search.
   __attribute__((always_inline)) bool conflict(int t, const double* p) const {
@@ -251,24 +252,29 @@ class Kernel {
   // among the few boundary edges finds it, without a map.
   void fill(int ip) {
     const std::size_t nc = cav_.size();
+    // The two new slots at once (the capacity is reserved: no reallocation).
+    const int base = int(V_.size());
+    V_.resize(V_.size() + (bnd_.size() - nc));
+    A_.resize(A_.size() + 3 * (bnd_.size() - nc));
     for (std::size_t i = 0; i < bnd_.size(); ++i) {
-      int s;
-      if (i < nc) {
-        s = cav_[i];
-      } else {
-        s = int(V_.size());
-        V_.push_back({0, 0, 0});
-        A_.insert(A_.end(), {-1, -1, -1});
-      }
+      const int s = i < nc ? cav_[i] : base + int(i - nc);
       mark_[s] = 0;
       BoundaryEdge& e = bnd_[i];
-      // Rotation that keeps the vertex at infinity at position 2 of a ghost.
-      const int r = e.b == INF ? 2 : (e.a == INF ? 1 : 0);
-      const int old[3] = {e.a, e.b, ip};
-      V_[s] = {old[r], old[(r + 1) % 3], old[(r + 2) % 3]};
-      const int e0 = 3 * s + (3 - r) % 3;
-      e.e1 = 3 * s + (4 - r) % 3;
-      e.e2 = 3 * s + (5 - r) % 3;
+      // The vertex at infinity stays at position 2 of a ghost: a b p, or p a inf, or b p inf.
+      int k0;  // the position of the edge a -> b in the new triangle
+      if (__builtin_expect(e.a != INF && e.b != INF, 1)) {
+        V_[s] = {e.a, e.b, ip};
+        k0 = 0;
+      } else if (e.b == INF) {
+        V_[s] = {ip, e.a, INF};
+        k0 = 1;
+      } else {
+        V_[s] = {e.b, ip, INF};
+        k0 = 2;
+      }
+      const int e0 = 3 * s + k0;
+      e.e1 = 3 * s + kNext[k0];
+      e.e2 = 3 * s + kNext[kNext[k0]];
       if (!kMapAdjacency) link(e0, e.out);
     }
     if (kMapAdjacency)
