@@ -139,6 +139,7 @@ __attribute__((always_inline)) inline int orient2d(double ax, double ay, double 
 
 inline bool notTiny(double v) { return v == 0 || std::fabs(v) >= 0x1p-511; }
 
+//! [incircleSlow]
 __attribute__((noinline)) inline int incircleSlow(double ax, double ay, double bx, double by,
                                                   double cx, double cy, double dx, double dy,
                                                   int& stage) {
@@ -161,6 +162,8 @@ __attribute__((noinline)) inline int incircleSlow(double ax, double ay, double b
   stage = kExact;
   return incircleExact(ax, ay, bx, by, cx, cy, dx, dy);
 }
+
+//! [incircleSlow]
 
 //! [incircle]
 /// Robust incircle: the filter, then incircleSlow. `stage` receives the stage that decided.

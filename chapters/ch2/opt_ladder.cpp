@@ -103,13 +103,14 @@ int main(int argc, char** argv) {
   steps.push_back({"walk", "orientation-only visibility walk that skips its entry edge (no "
                    "incircle, no centroid)", false, f});
   f.ladderCallPredicates = false;
-  steps.push_back({"inline", "filtered predicates inlined, exact stage only on failure", false, f});
+  steps.push_back({"inline", "the predicate core (predicates_inline.h) inlined, without the "
+                   "library's counters", false, f});
   f.order = dt::FastOrder::Brio;
   steps.push_back({"BRIO", "BRIO order (dt::brioOrder): no skinny hull triangles, smaller "
                    "cavities", false, f});
   f.order = dt::FastOrder::RadixBrio;
-  steps.push_back({"radix BRIO", "BRIO rounds by a biased coin (3/4 of the points in the last "
-                   "round), Hilbert keys by table, one radix sort of (round, key)", false, f});
+  steps.push_back({"coin BRIO", "BRIO rounds by a biased coin (dt::brioCoinOrder: 3/4 of the "
+                   "points in the last round)", false, f});
 
   std::cout << "opt_ladder: " << n << " uniform random points, best of " << reps << "\n";
   ch::Progress progress("opt_ladder", steps.size() * std::size_t(reps));
