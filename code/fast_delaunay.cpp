@@ -442,8 +442,11 @@ FastResult fastDelaunay(const std::vector<double>& xy, const FastOptions& opt) {
       run<CalledPredicates, false, true>(P, orig, res, pred);
     else
       run<CalledPredicates, false, false>(P, orig, res, pred);
-    res.stats.exactOrient = predicateCounters().orientExact - before.orientExact;
-    res.stats.exactIncircle = predicateCounters().incircleExact - before.incircleExact;
+    const PredicateCounters after = predicateCounters();  // GMP calls: exact - small-multiple
+    res.stats.exactOrient = (after.orientExact - after.orientSmallInt) -
+                            (before.orientExact - before.orientSmallInt);
+    res.stats.exactIncircle = (after.incircleExact - after.incircleSmallInt) -
+                              (before.incircleExact - before.incircleSmallInt);
   } else {
     run<InlinePredicates, false, false>(P, orig, res, InlinePredicates{&res.stats});
   }

@@ -38,8 +38,8 @@ struct FastStats {
   std::uint64_t insertions = 0;   ///< points inserted (duplicates excluded)
   std::uint64_t walkSteps = 0;    ///< triangles visited by the walks, summed
   std::uint64_t cavityFaces = 0;  ///< triangles of the cavities, summed
-  std::uint64_t exactOrient = 0;  ///< orientation tests that needed the exact stage
-  std::uint64_t exactIncircle = 0;///< incircle tests that needed the exact stage
+  std::uint64_t exactOrient = 0;  ///< orientation tests that needed GMP (the last stage)
+  std::uint64_t exactIncircle = 0;///< incircle tests that needed GMP (the last stage)
   double sortSeconds = 0;         ///< computing the insertion order
   double insertSeconds = 0;       ///< the insertions (and the output)
 };

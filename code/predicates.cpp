@@ -335,7 +335,7 @@ int orient2d(double ax, double ay, double bx, double by, double cx, double cy) {
   int stage = pred::kFilter;
   const int s = pred::orient2d(ax, ay, bx, by, cx, cy, stage);
   g_lastStage = stage;
-  g_counters.orientExact += stage == pred::kExact;
+  g_counters.orientExact += stage != pred::kFilter;
   g_counters.orientSmallInt += stage == pred::kSmallInt;
   return s;
 }
@@ -346,7 +346,7 @@ int incircle(double ax, double ay, double bx, double by, double cx, double cy, d
   int stage = pred::kFilter;
   const int s = pred::incircle(ax, ay, bx, by, cx, cy, dx, dy, stage);
   g_lastStage = stage;
-  g_counters.incircleExact += stage == pred::kExact;
+  g_counters.incircleExact += stage != pred::kFilter;
   g_counters.incircleSmallInt += stage == pred::kSmallInt;
   return s;
 }

@@ -21,11 +21,12 @@ namespace dt {
 /// share of time spent in the orientation test). Not thread-safe: one triangulation at a time.
 struct PredicateCounters {
   std::uint64_t orient = 0;       ///< calls of orient2d (robust)
-  std::uint64_t orientExact = 0;  ///< of which reached the exact (GMP) stage
+  std::uint64_t orientExact = 0;  ///< of which the filter failed: an exact stage decided
   std::uint64_t incircle = 0;     ///< calls of incircle (robust)
-  std::uint64_t incircleExact = 0;///< of which reached the exact (GMP) stage
-  std::uint64_t orientSmallInt = 0;   ///< of which the small-multiple stage decided
-  std::uint64_t incircleSmallInt = 0; ///< of which the small-multiple stage decided
+  std::uint64_t incircleExact = 0;///< of which the filter failed: an exact stage decided
+  std::uint64_t orientSmallInt = 0;   ///< of orientExact, decided by the small-multiple stage
+  std::uint64_t incircleSmallInt = 0; ///< of incircleExact, decided by the small-multiple
+                                      ///< stage (the rest went to GMP)
   void reset() { *this = PredicateCounters{}; }
 };
 PredicateCounters& predicateCounters();

@@ -9,6 +9,7 @@
 
 #include "fast_delaunay.h"
 #include "hilbert.h"
+#include "predicates.h"
 #include "support.h"
 
 namespace {
@@ -164,6 +165,16 @@ TEST_CASE("fast kernel: the filters send exactly the degenerate tests to the exa
     CHECK(g.stats.exactOrient == 0);
     CHECK(g.tri.size() == 2 * 49 * 49);
   }
+  // The same with the library's out-of-line predicates (the ladder's first rungs): one core, so
+  // the filter fails as often, and the small-multiple stage again leaves nothing to GMP.
+  dt::FastOptions called;
+  called.ladderCallPredicates = true;
+  dt::predicateCounters().reset();
+  const dt::FastResult gc = fastChecked(dttest::gridPoints(50, 50, 1.0), called);
+  CHECK(dt::predicateCounters().incircleExact > 0);
+  CHECK(dt::predicateCounters().incircleSmallInt == dt::predicateCounters().incircleExact);
+  CHECK(gc.stats.exactIncircle == 0);
+  CHECK(gc.stats.exactOrient == 0);
   // A grid of step 0.1 (not a power of two: rounded coordinates) still ends in GMP sometimes,
   // and nearly cocircular points on a circle do.
   const dt::FastResult d = fastChecked(dttest::gridPoints(40, 40, 0.1));
