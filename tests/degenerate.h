@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "generators.h"
+
 namespace dtdeg {
 
 using XY = std::vector<double>;  // x0 y0 x1 y1 ...
@@ -19,22 +21,12 @@ inline void add(XY& p, double x, double y) {
 }
 
 /// The integer grid {0..nx-1} x {0..ny-1}: every unit square has 4 cocircular corners.
-inline XY integerGrid(int nx, int ny) {
-  XY p;
-  for (int i = 0; i < nx; ++i)
-    for (int j = 0; j < ny; ++j) add(p, i, j);
-  return p;
-}
+inline XY integerGrid(int nx, int ny) { return dt::gridPoints(nx, ny); }
 
 /// The integer grid rotated exactly by the angle of cos = 3/5, sin = 4/5 (scaled by 5, so that
 /// the coordinates stay integers): still exactly cocircular quadruples, but no edge is axis
 /// parallel.
-inline XY rotatedGridExact(int nx, int ny) {
-  XY p;
-  for (int i = 0; i < nx; ++i)
-    for (int j = 0; j < ny; ++j) add(p, 3.0 * i - 4.0 * j, 4.0 * i + 3.0 * j);
-  return p;
-}
+inline XY rotatedGridExact(int nx, int ny) { return dt::rotatedGridPoints(nx, ny); }
 
 /// The unit grid rotated by `angle` in floating point: the rounded points are almost, but not
 /// exactly, cocircular: the incircle signs are decided by the last bits.
@@ -177,13 +169,7 @@ inline XY fewDistinct(std::size_t n, unsigned seed) {
 
 /// Fisher-Yates with a fixed seed: the input order of each family is random but reproducible.
 inline XY shuffled(XY p, unsigned seed) {
-  std::mt19937_64 rng(seed);
-  const std::size_t n = p.size() / 2;
-  for (std::size_t i = n; i > 1; --i) {
-    const std::size_t j = std::size_t(rng() % i);
-    std::swap(p[2 * (i - 1)], p[2 * j]);
-    std::swap(p[2 * (i - 1) + 1], p[2 * j + 1]);
-  }
+  dt::shufflePoints(p, seed);
   return p;
 }
 
