@@ -336,7 +336,7 @@ int orient2d(double ax, double ay, double bx, double by, double cx, double cy) {
   const int s = pred::orient2d(ax, ay, bx, by, cx, cy, stage);
   g_lastStage = stage;
   g_counters.orientExact += stage != pred::kFilter;
-  g_counters.orientSmallInt += stage == pred::kSmallInt;
+  g_counters.orientSmallInt += stage == pred::kSmallInt || stage == pred::kWide;
   return s;
 }
 
@@ -347,7 +347,7 @@ int incircle(double ax, double ay, double bx, double by, double cx, double cy, d
   const int s = pred::incircle(ax, ay, bx, by, cx, cy, dx, dy, stage);
   g_lastStage = stage;
   g_counters.incircleExact += stage != pred::kFilter;
-  g_counters.incircleSmallInt += stage == pred::kSmallInt;
+  g_counters.incircleSmallInt += stage == pred::kSmallInt || stage == pred::kWide;
   return s;
 }
 

@@ -24,9 +24,9 @@ struct PredicateCounters {
   std::uint64_t orientExact = 0;  ///< of which the filter failed: an exact stage decided
   std::uint64_t incircle = 0;     ///< calls of incircle (robust)
   std::uint64_t incircleExact = 0;///< of which the filter failed: an exact stage decided
-  std::uint64_t orientSmallInt = 0;   ///< of orientExact, decided by the small-multiple stage
-  std::uint64_t incircleSmallInt = 0; ///< of incircleExact, decided by the small-multiple
-                                      ///< stage (the rest went to GMP)
+  std::uint64_t orientSmallInt = 0;   ///< of orientExact, decided in machine arithmetic
+  std::uint64_t incircleSmallInt = 0; ///< (stages 2 and 3, see lastPredicateStage); the rest
+                                      ///< of orientExact / incircleExact went to GMP
   void reset() { *this = PredicateCounters{}; }
 };
 PredicateCounters& predicateCounters();
@@ -83,8 +83,9 @@ int incircle(double ax, double ay, double bx, double by, double cx, double cy, d
              double dy);
 
 /// Stage that decided the last robust call (for tests and the 2.3.1 program): 0 = filter,
-/// 1 = exact (GMP), 2 = small multiples of a power of two, evaluated exactly in doubles
-/// (predicates_inline.h, where the stages are defined and proved).
+/// 1 = exact (GMP), 2 = small multiples of a power of two, evaluated exactly in doubles,
+/// 3 = multiples of up to 62 bits, in 128/256-bit integers (predicates_inline.h, where the
+/// stages are defined and proved).
 int lastPredicateStage();
 
 }  // namespace dt

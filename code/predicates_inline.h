@@ -18,6 +18,7 @@ enum Stage : int {
   kFilter = 0,    ///< the floating-point filter
   kExact = 1,     ///< exact GMP integers (orient2dExact / incircleExact)
   kSmallInt = 2,  ///< the floating-point value itself, proved exact (small multiples of 2^k)
+  kWide = 3,      ///< the same integers, up to 62 bits, evaluated in 128- and 256-bit integers
 };
 
 constexpr double kU = 0x1p-53;  // unit roundoff of binary64, round to nearest
@@ -61,6 +62,70 @@ inline bool smallMultiples(const double (&d)[N], int bits) {
   return true;
 }
 
+// The wide stage, for what the small-multiple stage leaves: the differences exact and integer
+// multiples of one power of two h with |d_i| < 2^62 h (points on a circle: rounded coordinates
+// whose differences are exact but have up to about 40 significant bits). Then q_i = d_i / h are
+// integers below 2^62 (int64), their products are below 2^124 (int128), lifts and minors below
+// 2^125, and lift x minor below 2^250: the determinant is evaluated exactly with 128- and
+// 256-bit integers, far cheaper than GMP. Any power of two h will do (d_i 2^(62-e) is exact
+// whatever e), so there is no range to guard.
+__extension__ typedef __int128 Int128;
+__extension__ typedef unsigned __int128 UInt128;
+
+/// q[i] = d[i] / h as integers, h = 2^(e-62) with 2^(e-1) <= max |d_i| < 2^e; false if some
+/// d[i] is not an integer multiple of h (or all are zero).
+template <int N>
+inline bool wideMultiples(const double (&d)[N], std::int64_t (&q)[N]) {
+  double m = 0;
+  for (double v : d) m = std::max(m, std::fabs(v));
+  if (!(m > 0)) return false;
+  int e = 0;
+  std::frexp(m, &e);
+  for (int i = 0; i < N; ++i) {
+    // Exact when d[i] is a multiple of h (then |x| < 2^62 is an integer); otherwise x is not
+    // an integer, or a nonzero d[i] far below h underflowed to 0: both rejected.
+    const double x = std::ldexp(d[i], 62 - e);
+    if (x != std::floor(x) || (x == 0 && d[i] != 0)) return false;
+    q[i] = std::int64_t(x);
+  }
+  return true;
+}
+
+/// An unsigned 256-bit integer (hi, lo), enough for the sums of lift x minor products.
+struct UInt256 {
+  UInt128 hi = 0, lo = 0;
+  void add(const UInt256& o) {
+    lo += o.lo;
+    hi += o.hi + (lo < o.lo);  // carry
+  }
+  bool operator<(const UInt256& o) const { return hi != o.hi ? hi < o.hi : lo < o.lo; }
+};
+
+/// a b for a, b < 2^127, from four 64 x 64-bit products.
+inline UInt256 mul256(UInt128 a, UInt128 b) {
+  const std::uint64_t a0 = std::uint64_t(a), a1 = std::uint64_t(a >> 64);
+  const std::uint64_t b0 = std::uint64_t(b), b1 = std::uint64_t(b >> 64);
+  const UInt128 p00 = UInt128(a0) * b0, p01 = UInt128(a0) * b1;
+  const UInt128 p10 = UInt128(a1) * b0, p11 = UInt128(a1) * b1;
+  const UInt128 mid = (p00 >> 64) + std::uint64_t(p01) + std::uint64_t(p10);  // < 3 2^64
+  UInt256 r;
+  r.lo = (mid << 64) | std::uint64_t(p00);
+  r.hi = p11 + (p01 >> 64) + (p10 >> 64) + (mid >> 64);
+  return r;
+}
+
+/// Sign of lift_a minor_a + lift_b minor_b + lift_c minor_c, lifts >= 0, all below 2^126:
+/// the positive and the negative terms summed apart (each sum < 2^252), then compared.
+inline int signOfLiftedSum(const Int128 (&lift)[3], const Int128 (&minor)[3]) {
+  UInt256 pos, neg;
+  for (int i = 0; i < 3; ++i) {
+    if (minor[i] == 0 || lift[i] == 0) continue;
+    const UInt256 t = mul256(UInt128(lift[i]), UInt128(minor[i] > 0 ? minor[i] : -minor[i]));
+    (minor[i] > 0 ? pos : neg).add(t);
+  }
+  return (neg < pos) - (pos < neg);
+}
+
 // ---------------------------------------------------------------------------------------------
 // Error bound for orient2d (u = 2^-53, round to nearest, no FMA: -ffp-contract=off).
 // Write each rounded operation as an exact one times (1 + d), |d| <= u. The computed value is
@@ -88,6 +153,13 @@ __attribute__((noinline)) inline int orient2dSlow(double ax, double ay, double b
     const double det = acx * bcy - acy * bcx;  // exact, by the claim above
     stage = kSmallInt;
     return (det > 0) - (det < 0);
+  }
+  std::int64_t q[4];
+  if (exactDifference(ax, cx, acx) && exactDifference(by, cy, bcy) &&
+      exactDifference(ay, cy, acy) && exactDifference(bx, cx, bcx) && wideMultiples(d, q)) {
+    const Int128 l = Int128(q[0]) * q[1], r = Int128(q[2]) * q[3];  // each below 2^124
+    stage = kWide;
+    return (l > r) - (l < r);
   }
   stage = kExact;
   return orient2dExact(ax, ay, bx, by, cx, cy);
@@ -158,6 +230,20 @@ __attribute__((noinline)) inline int incircleSlow(double ax, double ay, double b
                        clift * (adx * bdy - bdx * ady);
     stage = kSmallInt;
     return (det > 0) - (det < 0);
+  }
+  std::int64_t q[6];
+  if (exactDifference(ax, dx, adx) && exactDifference(ay, dy, ady) &&
+      exactDifference(bx, dx, bdx) && exactDifference(by, dy, bdy) &&
+      exactDifference(cx, dx, cdx) && exactDifference(cy, dy, cdy) && wideMultiples(diff, q)) {
+    auto sq = [](std::int64_t x) { return Int128(x) * x; };
+    auto cross = [](std::int64_t x1, std::int64_t y1, std::int64_t x2, std::int64_t y2) {
+      return Int128(x1) * y2 - Int128(x2) * y1;
+    };
+    const Int128 lift[3] = {sq(q[0]) + sq(q[1]), sq(q[2]) + sq(q[3]), sq(q[4]) + sq(q[5])};
+    const Int128 minor[3] = {cross(q[2], q[3], q[4], q[5]), cross(q[4], q[5], q[0], q[1]),
+                             cross(q[0], q[1], q[2], q[3])};
+    stage = kWide;
+    return signOfLiftedSum(lift, minor);
   }
   stage = kExact;
   return incircleExact(ax, ay, bx, by, cx, cy, dx, dy);

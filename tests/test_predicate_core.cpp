@@ -10,7 +10,7 @@
 namespace {
 
 struct Tally {
-  long calls = 0, wrong = 0, stage[3] = {0, 0, 0};
+  long calls = 0, wrong = 0, stage[4] = {0, 0, 0, 0};
 };
 
 // Both predicates of the core on one quadruple, against the GMP oracle.
@@ -51,16 +51,16 @@ TEST_CASE("predicate core: grids at every scale, small multiples of 2^k decided 
   // The small-multiple stage does the bulk of the degenerate work on grids...
   CHECK(o.stage[dt::pred::kSmallInt] > 300);  // collinear triples: rarer than cocircular
   CHECK(c.stage[dt::pred::kSmallInt] > 1000);
-  // ...but not all of it: beyond 2^12 h (incircle) and 2^25 h (orient2d) GMP decides.
+  // ...but not all of it: beyond 2^12 h (incircle) and 2^25 h (orient2d) the wide stage decides.
   for (int s : {-255, 0, 195}) {
     const double h = std::ldexp(1.0, s), m = 4097 * h, p = (double(1 << 24) + 1) * h;
     int st = -1;
     CHECK(dt::pred::incircle(0, 0, m, 0, m, m, 0, m, st) == 0);  // a square: cocircular
-    CHECK(st == dt::pred::kExact);
+    CHECK(st == dt::pred::kWide);
     CHECK(dt::pred::incircle(0, 0, m - h, 0, m - h, m - h, 0, m - h, st) == 0);  // side 4096 h
     CHECK(st == dt::pred::kSmallInt);
     CHECK(dt::pred::orient2d(0, 0, p, h, 2 * p, 2 * h, st) == 0);  // 2p > 2^25 h: h no longer fits
-    CHECK(st == dt::pred::kExact);
+    CHECK(st == dt::pred::kWide);
     const double q = double(1 << 24) * h;  // differences 2q = 2^25 h, q, 2h, 4h: multiples of 2h
     CHECK(dt::pred::orient2d(0, 0, q, 2 * h, 2 * q, 4 * h, st) == 0);
     CHECK(st == dt::pred::kSmallInt);
@@ -69,11 +69,11 @@ TEST_CASE("predicate core: grids at every scale, small multiples of 2^k decided 
   CHECK(c.stage[dt::pred::kFilter] > c.calls / 4);
 }
 
-TEST_CASE("predicate core: huge and tiny grids go to GMP, where h leaves [2^-260, 2^200]") {
+TEST_CASE("predicate core: huge and tiny grids, where h leaves [2^-260, 2^200], go to the wide stage") {
   std::mt19937_64 rng(910);
   std::uniform_int_distribution<long> cell(0, 7);
   Tally o, c;
-  for (int s : {-1000, -600, -270, 230, 500, 900}) {  // h = 2^(s-25) .. 2^(s-9)
+  for (int s : {-1070, -1000, -600, -270, 230, 500, 900}) {  // h = 2^(s-25) .. 2^(s-9)
     const double h = std::ldexp(1.0, s);
     for (int it = 0; it < 500; ++it) {
       double v[8];
@@ -85,8 +85,55 @@ TEST_CASE("predicate core: huge and tiny grids go to GMP, where h leaves [2^-260
   CHECK(c.wrong == 0);
   CHECK(o.stage[dt::pred::kSmallInt] == 0);
   CHECK(c.stage[dt::pred::kSmallInt] == 0);
-  CHECK(o.stage[dt::pred::kExact] > 100);
-  CHECK(c.stage[dt::pred::kExact] > 100);
+  CHECK(o.stage[dt::pred::kWide] > 100);
+  CHECK(c.stage[dt::pred::kWide] > 100);
+}
+
+TEST_CASE("predicate core: the wide stage's 128- and 256-bit integers, up to 62-bit multiples") {
+  std::mt19937_64 rng(912);
+  Tally o, c;
+  // Integers of up to 50 bits at random offsets: differences exact, of up to 51 bits, scaled
+  // to up to 61 bits; lift x minor reaches 2^246, signs at random.
+  std::uniform_int_distribution<std::int64_t> big(-(std::int64_t(1) << 49), std::int64_t(1) << 49);
+  for (int it = 0; it < 20000; ++it) {
+    double v[8];
+    for (double& x : v) x = double(big(rng));
+    if (it % 2) {  // a cocircular square of odd side: the positive and negative sums are equal
+      const double m = double(big(rng) | 1), x0 = v[0], y0 = v[1];
+      const double w[8] = {x0, y0, x0 + m, y0, x0 + m, y0 + m, x0, y0 + m};
+      for (int k = 0; k < 8; ++k) v[k] = w[k];
+    }
+    check(v, o, c);
+  }
+  CHECK(o.wrong == 0);
+  CHECK(c.wrong == 0);
+  CHECK(c.stage[dt::pred::kWide] > 5000);  // the squares at least
+  // Points on a circle, rounded (the bench's circle family): exact differences of 40-odd bits.
+  for (int it = 0; it < 20000; ++it) {
+    const double s = std::ldexp(1.0, int(rng() % 200) - 100), t0 = double(rng() % 100000);
+    double v[8];
+    for (int p = 0; p < 4; ++p) {
+      const double t = 2 * M_PI * (t0 + double(rng() % 8)) / 100000;
+      v[2 * p] = s * std::cos(t);
+      v[2 * p + 1] = s * std::sin(t);
+    }
+    check(v, o, c);
+  }
+  CHECK(o.wrong == 0);
+  CHECK(c.wrong == 0);
+  CHECK(c.stage[dt::pred::kWide] > 10000);
+  // The 256-bit product at its limits: (2^126 - 1)^2 and a carry out of the low half.
+  const dt::pred::UInt128 a = (dt::pred::UInt128(1) << 126) - 1;
+  const dt::pred::UInt256 sq = dt::pred::mul256(a, a);  // 2^252 - 2^127 + 1
+  CHECK(sq.lo == (dt::pred::UInt128(1) << 127) + 1);  // -2^127 + 1 mod 2^128
+  CHECK(sq.hi == (dt::pred::UInt128(1) << 124) - 1);
+  dt::pred::UInt256 x;
+  x.lo = ~dt::pred::UInt128(0);
+  dt::pred::UInt256 one;
+  one.lo = 1;
+  x.add(one);
+  CHECK(x.lo == 0);
+  CHECK(x.hi == 1);
 }
 
 TEST_CASE("predicate core: a difference that rounds is never taken for exact") {
@@ -139,8 +186,8 @@ TEST_CASE("predicate core: random near-degenerate inputs, nudged by ulps, agree 
   }
   CHECK(o.wrong == 0);
   CHECK(c.wrong == 0);
-  CHECK(o.stage[dt::pred::kExact] > 1000);
-  CHECK(c.stage[dt::pred::kExact] > 1000);
+  CHECK(o.stage[dt::pred::kExact] > 100);  // inexact differences: only GMP can decide
+  CHECK(c.stage[dt::pred::kExact] > 100);
   CHECK(o.stage[dt::pred::kFilter] > 1000);
   CHECK(c.stage[dt::pred::kFilter] > 1000);
 }
