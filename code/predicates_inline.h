@@ -267,7 +267,7 @@ __attribute__((always_inline)) inline int incircle(double ax, double ay, double 
   const double clift = cdx * cdx + cdy * cdy;
   const double det = alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy) +
                      clift * (adxbdy - bdxady);
-  // A cheaper, semi-static bound first (below): it decides most tests without the permanent.
+  // A cheaper, semi-static bound first (derived above): most tests need no permanent.
   const double M = std::max(std::max(std::max(std::fabs(adx), std::fabs(ady)),
                                      std::max(std::fabs(bdx), std::fabs(bdy))),
                             std::max(std::fabs(cdx), std::fabs(cdy)));
