@@ -56,8 +56,11 @@ inline bool smallMultiples(const double (&d)[N], int bits) {
   if (e - bits < -260 || e - bits > 200) return false;
   const double inv = std::ldexp(1.0, bits - e);  // 1/h, exact
   for (double v : d) {
-    const double q = v * inv;  // exact: a power-of-two scaling within range; |q| < 2^bits
-    if (q != double(std::int64_t(q))) return false;
+    // Exact unless it underflows: a nonzero v far below h (h > 1, v subnormal) can scale to 0,
+    // which would pass for the integer 0 and make the "exact" value lose v (found by fuzzing:
+    // orient2d((0, 8e-320), (1.4e-312, 1e34), (0, 0)) returned 0). Reject it.
+    const double q = v * inv;
+    if (q != double(std::int64_t(q)) || (q == 0 && v != 0)) return false;
   }
   return true;
 }

@@ -34,3 +34,24 @@ TEST_CASE("fuzz regression 1: triangles near 1e308 made the walk's centroid over
   CHECK(dt::orientationTest(&b, &c, &g) > 0);
   CHECK(dt::orientationTest(&c, &a, &g) > 0);
 }
+
+TEST_CASE("fuzz regression 2: a subnormal difference vanished in the small-multiple exact stage") {
+  // fuzz_triangulate, mode 0 (raw doubles): (0, 0), (0, 8.0869e-320) and (1.3568e-312,
+  // 1.0385e34). The orientation's differences 8e-320 and 1e34 were taken as multiples of
+  // h = 2^89 because 8e-320 / 2^89 underflows to 0, so orient2d returned 0 instead of -1 and
+  // the recovery of DT(S) by flips (2.3.6) met an edge "in conflict but not flippable".
+  // Fixed in smallMultiples (predicates_inline.h): a nonzero difference that scales to 0 is
+  // not a multiple of h.
+  const std::vector<std::uint8_t> crash = {
+      0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00,
+      0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00,
+      0x00, 0xf0, 0x3f, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00,
+      0x00, 0x00, 0x00, 0x00, 0x00, 0xf0, 0x3f, 0x00, 0x00, 0x00, 0x00, 0x00,
+      0x00, 0xf0, 0x33, 0x00, 0xf0, 0x3f, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00,
+      0xe0, 0x3f, 0x00, 0x00, 0x47, 0x00, 0x00, 0x00, 0x00, 0xe0, 0x3f};
+  CHECK(replayTriangulate(crash) == "");
+  const double tiny = 8.0868664911295234e-320, x = 1.3567511245393893e-312, y = 1.038522630442973e34;
+  CHECK(dt::orient2dExact(0, tiny, x, y, 0, 0) == -1);
+  CHECK(dt::orient2d(0, tiny, x, y, 0, 0) == -1);
+  CHECK(dt::orient2d(x, y, 0, tiny, 0, 0) == 1);
+}
