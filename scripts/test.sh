@@ -1,12 +1,15 @@
 #!/usr/bin/env bash
 # Runs every test: builds the library, the CLI and the doctest suite (Release), then ctest;
-# then the sanitizer build and a short fuzz run (below).
+# then the sanitizer build and a short fuzz run (below). Ends with one summary line
+# "tests: P passed, F failed" over both ctest runs.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/deps.sh
+log=$(mktemp)
+trap 'rm -f "$log"' EXIT
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release > /dev/null
 cmake --build build -j"$(nproc)"
-ctest --test-dir build --output-on-failure -j"$(nproc)"
+ctest --test-dir build --output-on-failure -j"$(nproc)" | tee -a "$log"
 # Issue 10: the same tests built with AddressSanitizer and UndefinedBehaviorSanitizer (the CLI
 # too: the tests run build-asan/delaunay2d); any report aborts its test. Then a short fuzz run.
 # DT_SKIP_SANITIZERS=1 skips both (a quick local run).
@@ -14,6 +17,9 @@ if [ "${DT_SKIP_SANITIZERS:-0}" != 1 ]; then
   cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDT_SANITIZE=ON > /dev/null
   cmake --build build-asan -j"$(nproc)" --target dt_tests delaunay2d
   ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-    ctest --test-dir build-asan --output-on-failure -j"$(nproc)"
+    ctest --test-dir build-asan --output-on-failure -j"$(nproc)" | tee -a "$log"
   bash scripts/fuzz.sh "${DT_FUZZ_SECONDS:-60}"
 fi
+# ctest's own summaries ("N% tests passed, F tests failed out of T"), added up.
+awk '/tests passed, [0-9]+ tests failed out of/ { f += $(NF-4); t += $NF }
+     END { printf "tests: %d passed, %d failed\n", t - f, f }' "$log"
