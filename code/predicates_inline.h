@@ -151,15 +151,16 @@ __attribute__((noinline)) inline int orient2dSlow(double ax, double ay, double b
                                                   double cx, double cy, int& stage) {
   const double acx = ax - cx, bcy = by - cy, acy = ay - cy, bcx = bx - cx;
   const double d[4] = {acx, bcy, acy, bcx};
-  if (exactDifference(ax, cx, acx) && exactDifference(by, cy, bcy) &&
-      exactDifference(ay, cy, acy) && exactDifference(bx, cx, bcx) && smallMultiples(d, 25)) {
+  // Both integer stages need the differences exact: test that once.
+  const bool exact = exactDifference(ax, cx, acx) && exactDifference(by, cy, bcy) &&
+                     exactDifference(ay, cy, acy) && exactDifference(bx, cx, bcx);
+  if (exact && smallMultiples(d, 25)) {
     const double det = acx * bcy - acy * bcx;  // exact, by the claim above
     stage = kSmallInt;
     return (det > 0) - (det < 0);
   }
   std::int64_t q[4];
-  if (exactDifference(ax, cx, acx) && exactDifference(by, cy, bcy) &&
-      exactDifference(ay, cy, acy) && exactDifference(bx, cx, bcx) && wideMultiples(d, q)) {
+  if (exact && wideMultiples(d, q)) {
     const Int128 l = Int128(q[0]) * q[1], r = Int128(q[2]) * q[3];  // each below 2^124
     stage = kWide;
     return (l > r) - (l < r);
@@ -222,9 +223,11 @@ __attribute__((noinline)) inline int incircleSlow(double ax, double ay, double b
   const double bdx = bx - dx, bdy = by - dy;
   const double cdx = cx - dx, cdy = cy - dy;
   const double diff[6] = {adx, ady, bdx, bdy, cdx, cdy};
-  if (exactDifference(ax, dx, adx) && exactDifference(ay, dy, ady) &&
-      exactDifference(bx, dx, bdx) && exactDifference(by, dy, bdy) &&
-      exactDifference(cx, dx, cdx) && exactDifference(cy, dy, cdy) && smallMultiples(diff, 12)) {
+  // Both integer stages need the differences exact: test that once.
+  const bool exact = exactDifference(ax, dx, adx) && exactDifference(ay, dy, ady) &&
+                     exactDifference(bx, dx, bdx) && exactDifference(by, dy, bdy) &&
+                     exactDifference(cx, dx, cdx) && exactDifference(cy, dy, cdy);
+  if (exact && smallMultiples(diff, 12)) {
     // The filter's expression, in the filter's order: exact, by the claim above.
     const double alift = adx * adx + ady * ady;
     const double blift = bdx * bdx + bdy * bdy;
@@ -235,9 +238,7 @@ __attribute__((noinline)) inline int incircleSlow(double ax, double ay, double b
     return (det > 0) - (det < 0);
   }
   std::int64_t q[6];
-  if (exactDifference(ax, dx, adx) && exactDifference(ay, dy, ady) &&
-      exactDifference(bx, dx, bdx) && exactDifference(by, dy, bdy) &&
-      exactDifference(cx, dx, cdx) && exactDifference(cy, dy, cdy) && wideMultiples(diff, q)) {
+  if (exact && wideMultiples(diff, q)) {
     auto sq = [](std::int64_t x) { return Int128(x) * x; };
     auto cross = [](std::int64_t x1, std::int64_t y1, std::int64_t x2, std::int64_t y2) {
       return Int128(x1) * y2 - Int128(x2) * y1;
