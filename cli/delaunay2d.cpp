@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <iostream>
 #include <numeric>
@@ -22,6 +23,7 @@
 #include "io.h"
 #include "predicates.h"
 #include "fast_delaunay.h"
+#include "fast_parallel.h"
 #include "flip.h"
 #include "hilbert.h"
 #include "triangulate.h"
@@ -48,6 +50,8 @@ const char* kUsage =
     "  --kernel K     'fast' (default: code/fast_delaunay.h, index arrays, inlined filters,\n"
     "                 its own BRIO/Hilbert order) or 'listings' (the corrected Listings 2.4-2.7);\n"
     "                 both give the exact DT(S); --method super always uses the listings\n"
+    "  --threads N    threads of the fast kernel with --order brio (default: all cores;\n"
+    "                 1: the sequential kernel); the same exact DT(S), see the parallel page\n"
     "  --progress     report progress on stderr (default: only when stderr is a terminal)\n"
     "  --no-progress  never report progress\n"
     "  -h, --help     this help\n"
@@ -63,6 +67,7 @@ struct Options {
   // parabola) cost O(n) per insertion, BRIO's random rounds do not (sec2_3_5_hilbert).
   std::string order = "brio";
   int progress = -1;         // --progress 1, --no-progress 0, default -1: if stderr is a tty
+  int threads = dt::defaultThreadCount();  // --threads N (fast kernel, BRIO order)
 };
 
 // Progress on stderr for long runs: the phase, and while the listings insert, the points
@@ -180,6 +185,13 @@ Options parse(int argc, char** argv) {
       o.fastKernel = k == "fast";
     } else if (a == "--progress" || a == "--no-progress") {
       o.progress = a == "--progress";
+    } else if (a == "--threads") {
+      const std::string v = value("--threads");
+      char* end = nullptr;
+      const long t = std::strtol(v.c_str(), &end, 10);
+      if (v.empty() || *end != '\0' || t < 1 || t > 1024)
+        usageError("--threads must be an integer from 1 to 1024, not '" + v + "'");
+      o.threads = int(t);
     } else if (a == "--no-check") {
       o.check = false;
     } else if (!a.empty() && a[0] == '-' && a != "-") {
@@ -253,7 +265,8 @@ int main(int argc, char** argv) {
           fastMesh.ids.push_back(long(i));
         }
       progress.phase("triangulating " + std::to_string(S.size()) + " points (fast kernel)");
-      dt::FastResult fr = dt::fastDelaunay(fastMesh.xy, fo);
+      dt::FastResult fr = dt::fastDelaunayParallel(
+          fastMesh.xy, fo.order == dt::FastOrder::RadixBrio ? opt.threads : 1, fo);
       fastMesh.tri = std::move(fr.tri);
       st.insertions = fr.stats.insertions;
       st.searchSteps = fr.stats.walkSteps;

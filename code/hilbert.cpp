@@ -404,20 +404,23 @@ std::vector<std::size_t> brioOrder(const std::vector<double>& xy, std::uint64_t 
 }
 //! [brioOrder]
 
+int brioCoinRound(std::size_t i, std::uint64_t seed, int rounds) {
+  // Pairs of zero bits of a hashed word: none w.p. 3/4 (last round), one w.p. 3/16, ...
+  std::uint64_t s = seed ^ (0x632be59bd9b4e019ULL * (i + 1));
+  const std::uint64_t h = splitmix(s);
+  int z = 0;
+  while (z < rounds - 1 && ((h >> (2 * z)) & 3) == 0) ++z;
+  return rounds - 1 - z;
+}
+
 std::vector<std::size_t> brioCoinOrder(const std::vector<double>& xy, std::uint64_t seed,
                                        int rounds) {
   if (xy.size() % 2 != 0) throw std::invalid_argument("hilbertBox: odd number of coordinates");
   if (rounds < 1 || rounds > 32) throw std::invalid_argument("brioCoinOrder: rounds out of 1..32");
   const std::size_t n = xy.size() / 2;
   std::vector<std::uint32_t> round(n, 0);
-  for (std::size_t i = 0; i < n && rounds > 1; ++i) {
-    // Pairs of zero bits of a hashed word: none w.p. 3/4 (last round), one w.p. 3/16, ...
-    std::uint64_t s = seed ^ (0x632be59bd9b4e019ULL * (i + 1));
-    const std::uint64_t h = splitmix(s);
-    int z = 0;
-    while (z < rounds - 1 && ((h >> (2 * z)) & 3) == 0) ++z;
-    round[i] = std::uint32_t(rounds - 1 - z);
-  }
+  for (std::size_t i = 0; i < n && rounds > 1; ++i)
+    round[i] = std::uint32_t(brioCoinRound(i, seed, rounds));
   return sortByGroupKeyIndex(xy, checkedDepth(0, n), round, rounds > 1 ? bitsFor(rounds) : 0,
                              true);
 }

@@ -90,4 +90,8 @@ std::vector<std::size_t> brioOrder(const std::vector<double>& xy, std::uint64_t 
 std::vector<std::size_t> brioCoinOrder(const std::vector<double>& xy, std::uint64_t seed,
                                        int rounds = 8);
 
+/// The round (0 = first, rounds - 1 = last) that brioCoinOrder(xy, seed, rounds) gives to point
+/// i: the parallel kernel (fast_parallel.h) finds the rounds' boundaries in the order with it.
+int brioCoinRound(std::size_t i, std::uint64_t seed, int rounds);
+
 }  // namespace dt
