@@ -289,6 +289,17 @@ void insertRange(Inserter& in, Worker& w, int from, int to, int i1, int i2, bool
   }
 }
 
+// body(k, lo, hi) on `threads` consecutive pieces [lo, hi) of [0, n), piece k by thread k.
+template <class Body>
+void parallelFor(int threads, std::size_t n, Body body) {
+  auto piece = [&](int k) { body(k, n * std::size_t(k) / std::size_t(threads),
+                                 n * std::size_t(k + 1) / std::size_t(threads)); };
+  std::vector<std::thread> pool;
+  for (int k = 1; k < threads; ++k) pool.emplace_back(piece, k);
+  piece(0);
+  for (std::thread& th : pool) th.join();
+}
+
 }  // namespace
 
 int defaultThreadCount() { return std::max(1, int(std::thread::hardware_concurrency())); }
@@ -325,15 +336,21 @@ FastResult fastDelaunayParallel(const std::vector<double>& xy, int threads, cons
     orig.assign(o.begin(), o.end());
   }
   // Where each round starts in the order (the rounds are consecutive, first round first).
-  std::vector<int> roundStart(std::size_t(rounds) + 1, 0);
-  for (std::size_t i = 0; i < n; ++i)
-    ++roundStart[std::size_t(brioCoinRound(i, opt.seed, rounds)) + 1];
-  for (int r = 0; r < rounds; ++r) roundStart[r + 1] += roundStart[r];
+  // Counting the rounds' sizes and copying the points in insertion order are split too.
+  std::vector<std::vector<int>> roundSize(std::size_t(threads), std::vector<int>(rounds, 0));
   std::vector<double> P(2 * n + 2, 0.0);  // + the dummy point of INF (a stale walk may read it)
-  for (std::size_t i = 0; i < n; ++i) {
-    if (i + 16 < n) __builtin_prefetch(&xy[2 * std::size_t(orig[i + 16])]);
-    P[2 * i] = xy[2 * std::size_t(orig[i])];
-    P[2 * i + 1] = xy[2 * std::size_t(orig[i]) + 1];
+  parallelFor(threads, n, [&](int k, std::size_t lo, std::size_t hi) {
+    for (std::size_t i = lo; i < hi; ++i) {
+      ++roundSize[std::size_t(k)][std::size_t(brioCoinRound(i, opt.seed, rounds))];
+      if (i + 16 < hi) __builtin_prefetch(&xy[2 * std::size_t(orig[i + 16])]);
+      P[2 * i] = xy[2 * std::size_t(orig[i])];
+      P[2 * i + 1] = xy[2 * std::size_t(orig[i]) + 1];
+    }
+  });
+  std::vector<int> roundStart(std::size_t(rounds) + 1, 0);
+  for (int r = 0; r < rounds; ++r) {
+    roundStart[r + 1] = roundStart[r];
+    for (const std::vector<int>& c : roundSize) roundStart[r + 1] += c[std::size_t(r)];
   }
   res.stats.sortSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
@@ -391,19 +408,13 @@ FastResult fastDelaunayParallel(const std::vector<double>& xy, int threads, cons
     if (from >= to) continue;
     ++ps.parallelRounds;
     ps.parallelPoints += std::uint64_t(to - from);
-    auto piece = [&](int k) {
-      const int lo = from + int(std::int64_t(to - from) * k / threads);
-      const int hi = from + int(std::int64_t(to - from) * (k + 1) / threads);
+    parallelFor(threads, std::size_t(to - from), [&](int k, std::size_t lo, std::size_t hi) {
       try {  // (the walk starts where this thread's previous piece ended)
-        insertRange(*ins[k], W[k], lo, hi, i1, i2, false);
+        insertRange(*ins[k], W[k], from + int(lo), from + int(hi), i1, i2, false);
       } catch (...) {
         W[k].error = std::current_exception();
       }
-    };
-    std::vector<std::thread> pool;
-    for (int k = 1; k < threads; ++k) pool.emplace_back(piece, k);
-    piece(0);
-    for (std::thread& th : pool) th.join();
+    });
     for (Worker& w : W)
       if (w.error) std::rethrow_exception(w.error);
     // The deferred insertions, by one thread, in their order (the lock of every triangle is free).
@@ -437,11 +448,23 @@ FastResult fastDelaunayParallel(const std::vector<double>& xy, int threads, cons
   S.owner.reset();
   std::vector<int>().swap(S.A);
   std::vector<double>().swap(P);
+  // Renumbered by pieces, each compacted in place, then the pieces moved together.
   std::vector<std::array<int, 3>>& V = S.V;
   V.resize(std::size_t(S.count.load()));
+  std::vector<std::size_t> pieceLo(static_cast<std::size_t>(threads)), pieceLen(pieceLo);
+  parallelFor(threads, V.size(), [&](int k, std::size_t lo, std::size_t hi) {
+    std::size_t w = lo;
+    for (std::size_t t = lo; t < hi; ++t)
+      if (V[t][2] != N) V[w++] = {orig[V[t][0]], orig[V[t][1]], orig[V[t][2]]};
+    pieceLo[std::size_t(k)] = lo;
+    pieceLen[std::size_t(k)] = w - lo;
+  });
   std::size_t w = 0;
-  for (const auto& t : V)
-    if (t[2] != N) V[w++] = {orig[t[0]], orig[t[1]], orig[t[2]]};
+  for (int k = 0; k < threads; ++k) {
+    std::move(V.begin() + long(pieceLo[k]), V.begin() + long(pieceLo[k] + pieceLen[k]),
+              V.begin() + long(w));
+    w += pieceLen[k];
+  }
   V.resize(w);
   res.tri = std::move(V);
   res.duplicates.reserve(dups.size());

@@ -16,15 +16,15 @@ set key top left
 set title "Fast kernel, one thread: cost per point (sorting included)"
 if (haveLarge) {
   plot_cmd = "plot small using 1:2 with linespoints lw 2 pt 7 lc rgb '#4a7ab5' title 'CPU time, total', " . \
-    "small using 1:4 with linespoints lw 1.5 pt 5 lc rgb '#d08a2c' title 'sort (BRIO, Hilbert)', " . \
-    "small using 1:5 with linespoints lw 1.5 pt 9 lc rgb '#3c9b5c' title 'insertions', " . \
+    "small using 1:4 with linespoints lw 1.5 pt 5 lc rgb '#d08a2c' title 'of which the sort (BRIO, Hilbert)', " . \
+    "small using 1:5 with linespoints lw 1.5 pt 9 lc rgb '#3c9b5c' title 'the rest (insertions, output)', " . \
     "large using 1:2 with points pt 7 ps 1.6 lc rgb '#4a7ab5' title 'total, --max-n run', " . \
     "large using 1:4 with points pt 5 ps 1.4 lc rgb '#d08a2c' notitle, " . \
     "large using 1:5 with points pt 9 ps 1.4 lc rgb '#3c9b5c' notitle"
 } else {
   plot_cmd = "plot small using 1:2 with linespoints lw 2 pt 7 lc rgb '#4a7ab5' title 'CPU time, total', " . \
-    "small using 1:4 with linespoints lw 1.5 pt 5 lc rgb '#d08a2c' title 'sort (BRIO, Hilbert)', " . \
-    "small using 1:5 with linespoints lw 1.5 pt 9 lc rgb '#3c9b5c' title 'insertions'"
+    "small using 1:4 with linespoints lw 1.5 pt 5 lc rgb '#d08a2c' title 'of which the sort (BRIO, Hilbert)', " . \
+    "small using 1:5 with linespoints lw 1.5 pt 9 lc rgb '#3c9b5c' title 'the rest (insertions, output)'"
 }
 set terminal pngcairo size 900,520 font "DejaVu Sans,11"
 set output outdir.'/fig_time_per_point.png'
