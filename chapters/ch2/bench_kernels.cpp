@@ -4,10 +4,15 @@
 // covers everything from the coordinates to the triangulation (sorting included). Writes
 // table_bench.{md,csv,html}.
 //
+// The fast kernel runs once sequentially and once with all cores (code/fast_parallel.h); CPU
+// time sums the threads, so the parallel gain shows in the wall time. The fast kernels' results
+// are validated exactly (dt::checkDelaunay) after the timing; the peak is taken before the check.
+//
 //   bench_kernels [--out DIR] [--quick] [--max-n N] [--reps R]
 //     --quick     10^4 and 10^5 points, one repetition
-//     --max-n N   largest size (default 10^6; 10^7 adds the 10^7 row, several minutes)
-//     --reps R    repetitions per run, the fastest is kept (default 3; 1 at 10^7)
+//     --max-n N   largest size (default 10^6; 10^7 adds the 10^7 row, several minutes;
+//                 10^8 adds uniform points at 10^8 for the fast kernels only, about 10 GB)
+//     --reps R    repetitions per run, the fastest is kept (default 3; 1 from 10^7)
 #include <malloc.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
@@ -23,8 +28,10 @@
 #include <string>
 #include <vector>
 
+#include "check.h"
 #include "common.h"
 #include "fast_delaunay.h"
+#include "fast_parallel.h"
 #include "hilbert.h"
 #include "triangulate.h"
 
@@ -53,11 +60,38 @@ const char* familyName(Family f) {
   }
 }
 
-enum class Method { Listings, Fast, Cgal };
-const char* methodName(Method m) {
+double wallSeconds() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+// Peak resident memory so far (VmHWM of /proc/self/status), in kB.
+long peakKBNow() {
+  FILE* f = std::fopen("/proc/self/status", "r");
+  if (!f) return 0;
+  char line[256];
+  long kb = 0;
+  while (std::fgets(line, sizeof line, f))
+    if (std::strncmp(line, "VmHWM:", 6) == 0) kb = std::atol(line + 6);
+  std::fclose(f);
+  return kb;
+}
+
+std::string loadAverage() {
+  double a[3] = {0, 0, 0};
+  if (FILE* f = std::fopen("/proc/loadavg", "r")) {
+    if (std::fscanf(f, "%lf %lf %lf", &a[0], &a[1], &a[2]) != 3) a[0] = a[1] = a[2] = 0;
+    std::fclose(f);
+  }
+  return ch::fmt("%.2f %.2f %.2f", a[0], a[1], a[2]);
+}
+
+enum class Method { Listings, Fast, FastParallel, Cgal };
+std::string methodName(Method m) {
   switch (m) {
     case Method::Listings: return "listings + Hilbert";
     case Method::Fast: return "fast kernel";
+    case Method::FastParallel:
+      return "fast kernel, " + std::to_string(dt::defaultThreadCount()) + " threads";
     default: return "CGAL 2D";
   }
 }
@@ -105,9 +139,13 @@ std::vector<double> makePoints(Family f, std::size_t n) {
   return xy;
 }
 
-// One triangulation; returns the number of finite triangles.
-long triangulate(Method m, const std::vector<double>& xy) {
-  if (m == Method::Fast) return long(dt::fastDelaunay(xy).tri.size());
+// One triangulation; returns the number of finite triangles. The fast kernels' triangles go to
+// `tri`, for the exact check after the timing.
+long triangulate(Method m, const std::vector<double>& xy, std::vector<std::array<int, 3>>& tri) {
+  if (m == Method::Fast || m == Method::FastParallel) {
+    tri = dt::fastDelaunayParallel(xy, m == Method::Fast ? 1 : dt::defaultThreadCount()).tri;
+    return long(tri.size());
+  }
   if (m == Method::Listings) {
     const std::vector<std::size_t> order = dt::hilbertOrder(xy);
     dt::Triangulation T;
@@ -133,6 +171,7 @@ long triangulate(Method m, const std::vector<double>& xy) {
 struct Measure {
   bool ok = false;
   double seconds = 0;
+  double wall = 0;
   long triangles = 0;
   long peakKB = 0;
   std::size_t points = 0;
@@ -152,14 +191,21 @@ Measure runChild(Method m, Family f, std::size_t n) {
     // A fixed mmap threshold: glibc otherwise raises it after each large free, and the next
     // arrays then land in a heap it does not return, which inflates the peak for every method.
     mallopt(M_MMAP_THRESHOLD, 128 * 1024);
-    double out[3] = {0, -1, 0};
+    double out[5] = {0, -1, 0, 0, 0};
     try {
       const std::vector<double> xy = makePoints(f, n);
-      const double t0 = cpuSeconds();
-      const long tri = triangulate(m, xy);
+      std::vector<std::array<int, 3>> tri;
+      const double t0 = cpuSeconds(), w0 = wallSeconds();
+      const long count = triangulate(m, xy, tri);
       out[0] = cpuSeconds() - t0;
-      out[1] = double(tri);
+      out[3] = wallSeconds() - w0;
+      out[4] = double(peakKBNow());
       out[2] = double(xy.size() / 2);
+      if (m == Method::Fast || m == Method::FastParallel) {
+        const dt::CheckReport c = dt::checkDelaunay(xy, tri);
+        if (!c.ok) throw std::runtime_error("exact check failed: " + c.error);
+      }
+      out[1] = double(count);
     } catch (const std::exception& e) {
       std::cerr << methodName(m) << " on " << familyName(f) << ": " << e.what() << "\n";
     }
@@ -167,7 +213,7 @@ Measure runChild(Method m, Family f, std::size_t n) {
     _exit(w == ssize_t(sizeof out) ? 0 : 1);
   }
   close(fd[1]);
-  double in[3] = {0, -1, 0};
+  double in[5] = {0, -1, 0, 0, 0};
   const ssize_t got = read(fd[0], in, sizeof in);
   close(fd[0]);
   int status = 0;
@@ -178,7 +224,8 @@ Measure runChild(Method m, Family f, std::size_t n) {
   r.seconds = in[0];
   r.triangles = long(in[1]);
   r.points = std::size_t(in[2]);
-  r.peakKB = ru.ru_maxrss;
+  r.wall = in[3];
+  r.peakKB = in[4] > 0 ? long(in[4]) : ru.ru_maxrss;  // before the check when it was read
   return r;
 }
 
@@ -199,7 +246,8 @@ int main(int argc, char** argv) {
                                            : std::vector<std::size_t>{100000, 1000000};
   const std::size_t maxN = o.maxN > 0 ? std::size_t(o.maxN) : (o.quick ? 100000 : 1000000);
   if (maxN >= 10000000) sizes.push_back(10000000);
-  std::vector<Method> methods = {Method::Listings, Method::Fast};
+  if (maxN >= 100000000) sizes.push_back(100000000);
+  std::vector<Method> methods = {Method::Listings, Method::Fast, Method::FastParallel};
 #ifdef DT_HAVE_CGAL
   methods.push_back(Method::Cgal);
   const bool haveCgal = true;
@@ -215,18 +263,27 @@ int main(int argc, char** argv) {
               " (CPU time, user + system, from the coordinates to the triangles, sorting "
               "included; "
               "peak: the whole process, points included; ratios to " +
-              (haveCgal ? "CGAL" : "the listings") + ")";
-  t.header = {"points", "n", "kernel", "CPU time (s)", "time ratio", "peak (MB)", "peak ratio",
-              "triangles", "same count"};
+              (haveCgal ? "CGAL" : "the listings") +
+              "; wall: elapsed time of the same run, load average " + loadAverage() +
+              " at the start; the fast kernels' triangles are validated exactly)";
+  t.header = {"points", "n", "kernel", "CPU time (s)", "time ratio", "wall (s)", "wall ratio",
+              "peak (MB)", "peak ratio", "triangles", "same count"};
   const Family families[] = {Family::Uniform, Family::Clustered, Family::Grid, Family::Circle};
-  ch::Progress progress("bench_kernels", sizes.size() * 4 * methods.size());
+  std::uint64_t runs = 0;
+  for (std::size_t n : sizes) runs += n >= 100000000 ? 2 : 4 * methods.size();
+  ch::Progress progress("bench_kernels", runs);
   std::uint64_t done = 0;
   for (std::size_t n : sizes) {
     for (Family f : families) {
+      // 10^8: the fast kernels on uniform points only (CGAL and the listings would take long).
+      if (n >= 100000000 && f != Family::Uniform) continue;
       std::vector<Measure> res;
+      std::vector<Method> ran;
       for (Method m : methods) {
+        if (n >= 100000000 && m != Method::Fast && m != Method::FastParallel) continue;
         // The listings at 10^7 take minutes: once is enough.
         const int r = (n >= 10000000 || (m == Method::Listings && n >= 1000000)) ? 1 : reps;
+        if (n >= 100000000) std::cout << "running " << methodName(m) << " at 10^8..." << std::endl;
         Measure best;
         for (int k = 0; k < r; ++k) {
           const Measure x = runChild(m, f, n);
@@ -234,29 +291,42 @@ int main(int argc, char** argv) {
             best = x;
             break;
           }
-          if (!best.ok || x.seconds < best.seconds) {
+          if (!best.ok || x.seconds < best.seconds) {  // the least CPU time, and the least wall
             const long peak = std::max(best.peakKB, x.peakKB);
+            const double wall = best.ok ? std::min(best.wall, x.wall) : x.wall;
             best = x;
             best.peakKB = peak;
+            best.wall = wall;
+          } else {
+            best.wall = std::min(best.wall, x.wall);
           }
         }
         res.push_back(best);
+        ran.push_back(m);
         progress.update(++done);
       }
-      const Measure& ref = res.back();  // CGAL if present, else the fast kernel's row below
-      const Measure& base = haveCgal ? ref : res[0];
-      for (std::size_t k = 0; k < methods.size(); ++k) {
+      // The reference: CGAL if present, else the listings; none at 10^8 (neither runs there).
+      const Measure* base = nullptr;
+      for (std::size_t k = 0; k < ran.size(); ++k)
+        if (ran[k] == (haveCgal ? Method::Cgal : Method::Listings)) base = &res[k];
+      const bool ratios = base && base->ok;
+      for (std::size_t k = 0; k < ran.size(); ++k) {
         const Measure& x = res[k];
         bool same = x.ok;
         for (const Measure& y : res) same = same && y.ok && y.triangles == x.triangles;
-        t.add({familyName(f), std::to_string(x.points), methodName(methods[k]),
+        t.add({familyName(f), std::to_string(x.points), methodName(ran[k]),
                x.ok ? ch::fmt("%.3f", x.seconds) : "failed",
-               x.ok && base.ok ? ch::fmt("%.2f", x.seconds / base.seconds) : "-",
+               x.ok && ratios ? ch::fmt("%.2f", x.seconds / base->seconds) : "-",
+               x.ok ? ch::fmt("%.3f", x.wall) : "-",
+               x.ok && ratios ? ch::fmt("%.2f", x.wall / base->wall) : "-",
                ch::fmt("%.0f", double(x.peakKB) / 1024),
-               base.peakKB > 0 ? ch::fmt("%.2f", double(x.peakKB) / double(base.peakKB)) : "-",
+               ratios && base->peakKB > 0 ? ch::fmt("%.2f", double(x.peakKB) / double(base->peakKB))
+                                          : "-",
                std::to_string(x.triangles), same ? "yes" : "NO"});
-        std::cout << familyName(f) << " n=" << x.points << " " << methodName(methods[k]) << ": "
-                  << ch::fmt("%.3f s, %.0f MB", x.seconds, double(x.peakKB) / 1024) << "\n";
+        std::cout << familyName(f) << " n=" << x.points << " " << methodName(ran[k]) << ": "
+                  << ch::fmt("%.3f s CPU, %.3f s wall, %.0f MB", x.seconds, x.wall,
+                             double(x.peakKB) / 1024)
+                  << "\n";
       }
     }
   }
