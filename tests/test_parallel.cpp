@@ -88,3 +88,24 @@ TEST_CASE("parallel rejects what the sequential kernel rejects") {
   CHECK_THROWS_AS(dt::fastDelaunayParallel(dttest::uniformPoints(100, 1), 2, o),
                   std::invalid_argument);
 }
+
+TEST_CASE("parallel the command line gives the same triangles with one and two threads") {
+  const dttest::XY p = dttest::uniformPoints(30000, 99);
+  const std::string in = dttest::tmpPath("parallel_in.node");
+  dttest::writeText(in, dttest::nodeText(p));
+  Tris got[2];
+  for (int k = 0; k < 2; ++k) {
+    const std::string out = dttest::tmpPath("parallel_out_" + std::to_string(k + 1));
+    const dttest::CliResult r =
+        dttest::runCli("'" + in + "' -o '" + out + "' --threads " + std::to_string(k + 1));
+    INFO(r.err);
+    REQUIRE(r.status == 0);
+    got[k] = canonical(dttest::readEle(out + ".ele", 1));
+  }
+  CHECK(!got[0].empty());
+  CHECK(got[0] == got[1]);
+  CHECK(got[0] == canonical(dt::fastDelaunay(p).tri));
+  const dttest::CliResult bad = dttest::runCli("'" + in + "' -o x --threads 0");
+  CHECK(bad.status == 2);
+  CHECK(bad.err.find("--threads") != std::string::npos);
+}
