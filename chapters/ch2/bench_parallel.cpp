@@ -324,6 +324,14 @@ int main(int argc, char** argv) {
     v << "<p>Measured in this run: the CPU time per point stays within 25&nbsp;% of its smallest "
          "value up to n&nbsp;=&nbsp;" << flatUpTo << "; at n&nbsp;=&nbsp;" << last.first
       << " it is " << ch::fmt("%.2f", last.second / lo) << " times the smallest value.";
+    std::size_t steep = 1;  // the largest rise between neighbouring sizes
+    for (std::size_t i = 2; i < curve.size(); ++i)
+      if (curve[i].second / curve[i - 1].second > curve[steep].second / curve[steep - 1].second)
+        steep = i;
+    if (curve.size() > 1)
+      v << " The largest rise between neighbouring sizes is a factor "
+        << ch::fmt("%.2f", curve[steep].second / curve[steep - 1].second) << ", from n&nbsp;=&nbsp;"
+        << curve[steep - 1].first << " to n&nbsp;=&nbsp;" << curve[steep].first << ".";
     // Where the kernel's memory outgrows each cache, from the bytes per point at the largest n.
     const double bytesPerPoint = lastPeakMB * 1048576.0 / double(last.first);
     for (int level : {2, 3}) {

@@ -12,7 +12,9 @@ set xlabel "points n (uniform random)"
 set ylabel "nanoseconds per point"
 set yrange [0:*]
 set grid
-set key top left
+set key center right
+set xrange [500:*]
+set offsets 0, graph 0.06, graph 0.05, 0
 set title "Fast kernel, one thread: cost per point (sorting included)"
 if (haveLarge) {
   plot_cmd = "plot small using 1:2 with linespoints lw 2 pt 7 lc rgb '#4a7ab5' title 'CPU time, total', " . \
