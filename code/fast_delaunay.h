@@ -6,11 +6,15 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <utility>
 #include <vector>
 
 namespace dt {
+
+struct FastStats;
 
 /// Insertion order of fastDelaunay.
 enum class FastOrder {
@@ -31,6 +35,11 @@ struct FastOptions {
   bool ladderCallPredicates = false; ///< out-of-line, counted dt::orient2d / dt::incircle
   bool ladderCentroidWalk = false; ///< walk of Listing 2.6: incircle at every step, centroid ray
   bool ladderMapAdjacency = false; ///< link new triangles through a std::map (Listing 2.4)
+  /// Called after every `progressEvery` insertions with the points handled so far, their number
+  /// and the counters so far (the command line's progress report and its warning about long
+  /// walks); not called if empty.
+  std::function<void(std::size_t done, std::size_t total, const FastStats& st)> progress;
+  std::size_t progressEvery = 4096;
 };
 
 /// Counters and timings of one run.
