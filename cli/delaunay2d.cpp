@@ -296,19 +296,28 @@ long extremeLine(const dt::PointSet& ps) {
   return ps.line(best);
 }
 
-// A mesh without the merged duplicates: the vertices used, renumbered (for the .msh).
-dt::PlainMesh withoutUnused(const std::vector<double>& xy,
-                            const std::vector<std::array<int, 3>>& tri, const std::vector<char>& used) {
+// The fast kernel's mesh with its vertices in input order and without the merged duplicates
+// (the .msh numbers its nodes as the input, as the listings' mesh does).
+dt::PlainMesh inputOrder(const std::vector<double>& xy, const std::vector<std::array<int, 3>>& tri,
+                         const std::vector<int>& inserted, const std::vector<char>& used) {
+  const std::size_t n = inserted.size();
+  std::vector<int> node(n, -1);  // by input index: its node number, or -1 if merged
+  for (std::size_t i = 0; i < n; ++i)
+    if (used[i]) node[std::size_t(inserted[i])] = 0;
+  int k = 0;
+  for (int& v : node)
+    if (v == 0) v = k++;
   dt::PlainMesh m;
-  std::vector<int> to(used.size(), -1);
-  for (std::size_t i = 0; i < used.size(); ++i)
+  m.xy.resize(2 * std::size_t(k));
+  for (std::size_t i = 0; i < n; ++i)
     if (used[i]) {
-      to[i] = int(m.xy.size() / 2);
-      m.xy.insert(m.xy.end(), {xy[2 * i], xy[2 * i + 1]});
+      const std::size_t j = std::size_t(node[std::size_t(inserted[i])]);
+      m.xy[2 * j] = xy[2 * i];
+      m.xy[2 * j + 1] = xy[2 * i + 1];
     }
   m.tri = tri;
   for (auto& t : m.tri)
-    for (int& v : t) v = to[std::size_t(v)];
+    for (int& v : t) v = node[std::size_t(inserted[std::size_t(v)])];
   return m;
 }
 
@@ -322,7 +331,7 @@ int main(int argc, char** argv) {
   std::string notes;
   int status = 0;
   try {
-    const dt::PointSet ps = dt::readPoints(opt.input);
+    dt::PointSet ps = dt::readPoints(opt.input);
     const std::size_t n = ps.size();
     auto note = [&](std::size_t dup, std::size_t kept) {
       notes += "delaunay2d: " + ps.path + ":" + std::to_string(ps.line(dup)) + ": point " +
@@ -339,7 +348,9 @@ int main(int argc, char** argv) {
     dt::FlipStats fs;
     std::size_t nDup = 0, nDistinct = 0;
     std::vector<std::array<int, 3>> tri;
-    std::vector<char> used;            // fast kernel: the input points that are vertices
+    std::vector<double> fastPoints;    // fast kernel: the points in insertion order
+    std::vector<int> inserted;         // fast kernel: the input index of each of them
+    std::vector<char> used;            // fast kernel: the points that are vertices
     std::vector<long> numbers;         // listings: the input number of each mesh vertex
     dt::PlainMesh listingsMesh;
     double seconds = 0;
@@ -351,25 +362,33 @@ int main(int argc, char** argv) {
         progress.update(done);
         watch.update(done, total, s.walkSteps, s.cavityFaces, progress.insertionSeconds());
       };
+      // The triangles come numbered in insertion order, with the points in that order: the
+      // check and the SVG then read memory in the kernel's spatially coherent order.
+      fo.insertionNumbering = true;
       progress.setTotal(n);
       progress.phase("triangulating " + std::to_string(n) + " points (fast kernel)");
       progress.startInsertion();
       const auto t0 = std::chrono::steady_clock::now();
       dt::FastResult fr = dt::fastDelaunay(ps.xy, fo);
       seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      std::vector<double>().swap(ps.xy);  // fr.points holds them, in insertion order
       tri = std::move(fr.tri);
+      fastPoints = std::move(fr.points);
+      inserted = std::move(fr.inserted);
       st.insertions = fr.stats.insertions;
       st.searchSteps = fr.stats.walkSteps;
       st.cavityFaces = fr.stats.cavityFaces;
       nDup = fr.duplicates.size();
       nDistinct = n - nDup;
-      used.assign(n, 1);
+      std::vector<char> isDup(n, 0);
       for (std::size_t j = 0; j < fr.duplicates.size(); ++j) {
         const auto [d, k] = fr.duplicates[j];
-        used[std::size_t(d)] = 0;
+        isDup[std::size_t(d)] = 1;
         // The first few are named; a file of 10^6 copies must not print 10^6 lines.
         if (j < kNamedDuplicates) note(std::size_t(d), std::size_t(k));
       }
+      used.resize(n);
+      for (std::size_t i = 0; i < n; ++i) used[i] = !isDup[std::size_t(inserted[i])];
     } else {
       // Duplicates: sort by (x, y); keep the first occurrence (smallest number).
       std::vector<std::size_t> order(n);
@@ -465,8 +484,8 @@ int main(int argc, char** argv) {
     if (nDup > kNamedDuplicates)
       notes += "delaunay2d: " + ps.path + ": " + std::to_string(nDup - kNamedDuplicates) +
                " more duplicate points merged (" + std::to_string(nDup) + " in all)\n";
-    // The mesh's points: the input itself (fast kernel) or the listings' distinct vertices.
-    const std::vector<double>& xy = useFast ? ps.xy : listingsMesh.xy;
+    // The mesh's points: the fast kernel's (in insertion order), or the listings' vertices.
+    const std::vector<double>& xy = useFast ? fastPoints : listingsMesh.xy;
     if (opt.check) {
       progress.phase("checking the result with exact predicates");
       const std::vector<char> all(useFast ? 0 : xy.size() / 2, 1);
@@ -483,12 +502,15 @@ int main(int argc, char** argv) {
     dt::OutputFiles files;
     std::vector<dt::Writer*> w;
     for (const auto& o : outputs) w.push_back(&files.open(o.second));
-    dt::writeEle(*w[0], tri, useFast ? nullptr : &numbers, ps.firstIndex);
+    if (useFast)
+      dt::writeEle(*w[0], tri, inserted, ps.firstIndex);
+    else
+      dt::writeEle(*w[0], tri, &numbers, ps.firstIndex);
     std::size_t next = 1;
     if (!opt.svg.empty()) dt::writeSvg(*w[next++], xy, tri);
     if (!opt.msh.empty()) {
-      if (useFast && nDup > 0) {
-        const dt::PlainMesh m = withoutUnused(xy, tri, used);
+      if (useFast) {
+        const dt::PlainMesh m = inputOrder(xy, tri, inserted, used);
         dt::writeMsh(*w[next++], m.xy, m.tri);
       } else {
         dt::writeMsh(*w[next++], xy, tri);

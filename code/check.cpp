@@ -75,38 +75,60 @@ CheckReport checkDelaunay(const std::vector<double>& xy,
   // Interior edges: locally Delaunay. Boundary edges: successor map.
   std::vector<int> next(std::size_t(np), -1);  // boundary: a -> b for boundary edge a->b
   std::size_t nBoundary = 0, nInterior2 = 0;
-  auto byOther = [&](std::uint32_t p, std::uint32_t q) {
-    return hi(p) < hi(q) || (hi(p) == hi(q) && p < q);
-  };
-  for (int v = 0; v < np; ++v) {
-    const auto gb = he.begin() + start[std::size_t(v)], ge = he.begin() + start[std::size_t(v) + 1];
-    std::sort(gb, ge, byOther);
+  // The groups in the order of the triangles that use their vertex: consecutive groups then
+  // touch nearby triangles and points (the kernel stores triangles in insertion order), where
+  // the order of the vertex numbers would jump across memory at every group.
+  std::string failure;
+  std::vector<std::uint64_t> keys;  // one group: (other vertex, half-edge), sorted
+  auto group = [&](int v) {
+    keys.clear();
+    for (std::uint32_t e = start[std::size_t(v)]; e < start[std::size_t(v) + 1]; ++e)
+      keys.push_back((std::uint64_t(std::uint32_t(hi(he[e]))) << 32) | he[e]);
+    std::sort(keys.begin(), keys.end());
+    const auto gb = keys.begin(), ge = keys.end();
     for (auto i = gb; i != ge;) {
       auto j = i + 1;
-      while (j != ge && hi(*j) == hi(*i)) ++j;
-      const auto& T = tri[*i / 3];
-      const int a = T[*i % 3], b = T[(*i % 3 + 1) % 3];
+      while (j != ge && (*j >> 32) == (*i >> 32)) ++j;
+      const std::uint32_t h0 = std::uint32_t(*i), h1 = std::uint32_t(*(i + 1 == ge ? i : i + 1));
+      const auto& T = tri[h0 / 3];
+      const int a = T[h0 % 3], b = T[(h0 % 3 + 1) % 3];
       if (j - i == 1) {
-        if (next[std::size_t(a)] >= 0)
-          return fail(r, "boundary is not a simple polygon at " + pt(xy, a));
+        if (next[std::size_t(a)] >= 0) {
+          failure = "boundary is not a simple polygon at " + pt(xy, a);
+          return false;
+        }
         next[std::size_t(a)] = b;
         ++nBoundary;
       } else {
-        const auto& U = tri[*(i + 1) / 3];
-        const int ku = int(*(i + 1) % 3);
-        if (j - i > 2 || U[ku] == a)
-          return fail(r, "edge " + pt(xy, a) + " -> " + pt(xy, b) +
-                             " belongs to two triangles with the same orientation");
+        const auto& U = tri[h1 / 3];
+        const int ku = int(h1 % 3);
+        if (j - i > 2 || U[ku] == a) {
+          failure = "edge " + pt(xy, a) + " -> " + pt(xy, b) +
+                    " belongs to two triangles with the same orientation";
+          return false;
+        }
         nInterior2 += 2;
         const int d = U[(ku + 2) % 3];  // vertex of U opposite edge b->a
         int stage = pred::kFilter;
         if (pred::incircle(X(T[0]), Y(T[0]), X(T[1]), Y(T[1]), X(T[2]), Y(T[2]), X(d), Y(d),
-                           stage) > 0)
-          return fail(r, "edge " + pt(xy, a) + " - " + pt(xy, b) + " is not locally Delaunay: " +
-                             pt(xy, d) + " is inside the circle of its neighbour");
+                           stage) > 0) {
+          failure = "edge " + pt(xy, a) + " - " + pt(xy, b) + " is not locally Delaunay: " +
+                    pt(xy, d) + " is inside the circle of its neighbour";
+          return false;
+        }
       }
       i = j;
     }
+    return true;
+  };
+  {
+    std::vector<char> done(std::size_t(np), 0);
+    for (const auto& T : tri)
+      for (int v : T)
+        if (!done[std::size_t(v)]) {
+          done[std::size_t(v)] = 1;
+          if (!group(v)) return fail(r, failure);
+        }
   }
   // The boundary: one closed cycle, turning left or going straight at every vertex, and going
   // round once (the x-direction of its edges changes sign exactly twice).

@@ -384,16 +384,25 @@ void run(std::vector<double>& P, std::vector<int>& orig, FastResult& res, Pred p
   // The output is the array of vertices itself: the adjacencies, the marks and the sorted
   // points are freed, the finite triangles renumbered as the input and packed at the front.
   K.releaseAllButVertices();
-  std::vector<double>().swap(P);
   std::vector<std::array<int, 3>>& V = K.vertices();
   std::size_t w = 0;
-  for (const auto& t : V)
-    if (t[2] != K.infinite()) V[w++] = {orig[t[0]], orig[t[1]], orig[t[2]]};
+  if (opt.insertionNumbering) {
+    for (const auto& t : V)
+      if (t[2] != K.infinite()) V[w++] = t;
+  } else {
+    std::vector<double>().swap(P);
+    for (const auto& t : V)
+      if (t[2] != K.infinite()) V[w++] = {orig[t[0]], orig[t[1]], orig[t[2]]};
+  }
   V.resize(w);
   res.tri = std::move(V);
   res.duplicates.reserve(dups.size());
   for (const auto& [d, v] : dups) res.duplicates.emplace_back(d, orig[v]);
   std::sort(res.duplicates.begin(), res.duplicates.end());
+  if (opt.insertionNumbering) {
+    res.points = std::move(P);
+    res.inserted = std::move(orig);
+  }
 }
 
 }  // namespace

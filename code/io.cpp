@@ -480,15 +480,29 @@ void writeFileAtomic(const std::string& path, const std::string& content) {
   out.commit();
 }
 
-void writeEle(Writer& w, const std::vector<std::array<int, 3>>& tri, const std::vector<long>* number,
-              long firstIndex) {
+namespace {
+template <class Number>
+void writeEleWith(Writer& w, const std::vector<std::array<int, 3>>& tri, long firstIndex,
+                  Number number) {
   w.put(long(tri.size())).put(" 3 0\n");
   for (std::size_t t = 0; t < tri.size(); ++t) {
     w.put(long(t) + firstIndex);
-    for (int k = 0; k < 3; ++k)
-      w.put(' ').put(number ? (*number)[std::size_t(tri[t][k])] : tri[t][k] + firstIndex);
+    for (int k = 0; k < 3; ++k) w.put(' ').put(number(tri[t][k]));
     w.put('\n');
   }
+}
+}  // namespace
+
+void writeEle(Writer& w, const std::vector<std::array<int, 3>>& tri, const std::vector<long>* number,
+              long firstIndex) {
+  writeEleWith(w, tri, firstIndex, [&](int v) {
+    return number ? (*number)[std::size_t(v)] : long(v) + firstIndex;
+  });
+}
+
+void writeEle(Writer& w, const std::vector<std::array<int, 3>>& tri, const std::vector<int>& index,
+              long firstIndex) {
+  writeEleWith(w, tri, firstIndex, [&](int v) { return long(index[std::size_t(v)]) + firstIndex; });
 }
 
 std::string eleText(const std::vector<std::array<int, 3>>& tri, const std::vector<long>& number,

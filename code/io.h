@@ -85,6 +85,9 @@ class Writer {
 /// or, without `number`, as v + firstIndex.
 void writeEle(Writer& w, const std::vector<std::array<int, 3>>& tri, const std::vector<long>* number,
               long firstIndex);
+/// The same with vertex v written as index[v] + firstIndex.
+void writeEle(Writer& w, const std::vector<std::array<int, 3>>& tri, const std::vector<int>& index,
+              long firstIndex);
 std::string eleText(const std::vector<std::array<int, 3>>& tri, const std::vector<long>& number,
                     long firstIndex);
 /// Gmsh ASCII 2.2 .msh (nodes and 3-node triangles), openable in Gmsh.
