@@ -131,6 +131,7 @@ class Progress {
     lastShown_ = 0;
   }
   double insertionSeconds() const { return since(insertStart_); }
+  void setQuadratic() { quadratic_ = true; }
   void update(std::size_t done) {
     if (!on_) return;
     const double t = since(insertStart_);
@@ -139,10 +140,13 @@ class Progress {
     const double rate = lastShown_ > 0 ? double(done - lastDone_) / (t - lastShown_) : done / t;
     lastShown_ = t;
     lastDone_ = done;
+    // When each insertion costs O(done) (quadratic: WalkWatch), the time grows like done^2.
+    const double r = done > 0 ? double(total_) / double(done) : 1.0;
+    const double left = quadratic_ ? t * (r * r - 1) : rate > 0 ? double(total_ - done) / rate : 0.0;
     char buf[200];
     std::snprintf(buf, sizeof buf, "%zu of %zu points inserted (%.0f%%), %.0f points/s, about "
                   "%.0f s left", done, total_, total_ ? 100.0 * double(done) / double(total_) : 100.0,
-                  rate, rate > 0 ? double(total_ - done) / rate : 0.0);
+                  rate, left);
     show(buf);
   }
   // The last line (it ends the rewritten line on a terminal).
@@ -166,7 +170,7 @@ class Progress {
   }
   bool tty_ = ::isatty(STDERR_FILENO) == 1;
   bool on_, forced_;
-  bool shown_ = false;
+  bool shown_ = false, quadratic_ = false;
   std::size_t total_ = 0, lastDone_ = 0;
   double lastShown_ = 0;
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now(),
@@ -184,7 +188,8 @@ struct UnsupportedInput : std::runtime_error {
 // inserted makes the run quadratic. Watched between chunks of insertions; one warning.
 class WalkWatch {
  public:
-  WalkWatch(bool on, std::string order) : on_(on), order_(std::move(order)) {}
+  WalkWatch(bool on, std::string order, Progress& progress)
+      : on_(on), order_(std::move(order)), progress_(progress) {}
   // `done` of `total` points inserted, with the running sums of walk steps and cavity faces.
   void update(std::size_t done, std::size_t total, std::uint64_t walk, std::uint64_t cavity,
               double seconds) {
@@ -194,9 +199,10 @@ class WalkWatch {
     lastDone_ = done, lastWalk_ = walk, lastCavity_ = cavity;
     // In a good order both stay O(1); in file order on spread-out points the walks grow like
     // sqrt(n) (about sqrt(done) steps at most): a cost per point far above that is linear.
-    const double limit = 8 * std::sqrt(double(done)) + 64;
+    const double limit = 4 * std::sqrt(double(done)) + 64;
     if (done < 2048 || (w < limit && c < limit)) return;
     warned_ = true;
+    progress_.setQuadratic();
     // A cost per point growing linearly: the remaining time grows like total^2 - done^2.
     const double r = double(total) / double(done);
     std::fprintf(stderr,
@@ -210,6 +216,7 @@ class WalkWatch {
  private:
   bool on_, warned_ = false;
   std::string order_;
+  Progress& progress_;
   std::size_t lastDone_ = 0;
   std::uint64_t lastWalk_ = 0, lastCavity_ = 0;
 };
@@ -218,7 +225,7 @@ class WalkWatch {
 // progress between chunks.
 void insertInChunks(dt::Triangulation& T, const std::vector<dt::Vertex*>& S, std::size_t from,
                     dt::InsertionStats& st, Progress& progress, WalkWatch& watch) {
-  const std::size_t chunk = 4096;
+  const std::size_t chunk = 1024;
   for (std::size_t a = from; a < S.size(); a += chunk) {
     const std::vector<dt::Vertex*> part(S.begin() + long(a),
                                         S.begin() + long(std::min(S.size(), a + chunk)));
@@ -343,7 +350,7 @@ int main(int argc, char** argv) {
     // duplicates as it meets them, and returns triangles numbered as the input.
     const bool useFast = opt.fastKernel && !opt.superMethod;
     const bool watchWalks = opt.order != "brio";
-    WalkWatch watch(watchWalks, opt.order);
+    WalkWatch watch(watchWalks, opt.order, progress);
     dt::InsertionStats st;
     dt::FlipStats fs;
     std::size_t nDup = 0, nDistinct = 0;
@@ -365,6 +372,7 @@ int main(int argc, char** argv) {
       // The triangles come numbered in insertion order, with the points in that order: the
       // check and the SVG then read memory in the kernel's spatially coherent order.
       fo.insertionNumbering = true;
+      fo.progressEvery = 1024;
       progress.setTotal(n);
       progress.phase("triangulating " + std::to_string(n) + " points (fast kernel)");
       progress.startInsertion();
@@ -542,6 +550,7 @@ int main(int argc, char** argv) {
   } catch (const dt::DegenerateInput& e) {
     std::cerr << "delaunay2d: " << opt.input << ": " << e.what()
               << ": no triangulation exists\n";
+    notes.clear();  // the duplicates do not matter: nothing is triangulated
     status = 2;
   } catch (const UnsupportedInput& e) {
     std::cerr << "delaunay2d: " << opt.input << ":" << e.what() << "\n";

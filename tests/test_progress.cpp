@@ -1,6 +1,7 @@
 /// \file test_progress.cpp delaunay2d reports progress on stderr (points inserted, rate, time left) when stderr is a terminal, and is silent otherwise.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cstdlib>
 
 #include "support.h"
@@ -64,4 +65,33 @@ TEST_CASE("delaunay2d: progress on a terminal, rewritten in place") {
   CHECK(t.find(" of 60000 points inserted (") != std::string::npos);
   CHECK(t.find(" s left\033[K") != std::string::npos);  // rewritten, not a new line
   CHECK(t.find("\r\033[Kdelaunay2d: 60000 points triangulated in ") != std::string::npos);
+}
+
+TEST_CASE("delaunay2d: --order input on points sorted along a curve warns once that it is quadratic") {
+  // A parabola in x order: from its vertex on, every new point's cavity (and the walk to it)
+  // holds all the points of the right half inserted before it.
+  dttest::XY p;
+  const int n = 4000;
+  for (int i = 0; i < n; ++i) {
+    const double x = -1 + 2.0 * i / n;
+    p.insert(p.end(), {x, x * x});
+  }
+  const std::string in = dttest::tmpPath("sorted_parabola.node"), out = dttest::tmpPath("sorted_parabola");
+  dttest::writeText(in, dttest::nodeText(p));
+  for (const char* kernel : {"fast", "listings"}) {
+    CAPTURE(kernel);
+    dttest::CliResult r =
+        dttest::runCli("'" + in + "' -o '" + out + "' --order input --kernel " + std::string(kernel));
+    REQUIRE(r.status == 0);
+    const std::string w = "delaunay2d: warning: ";
+    CHECK_MESSAGE(r.err.rfind(w, 0) == 0, r.err);
+    CHECK(r.err.find(w, 1) == std::string::npos);  // once
+    CHECK(r.err.find("--order input on this input (sorted, along a curve, or cocircular) takes "
+                     "quadratic time") != std::string::npos);
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    // The default order on the same file: no warning.
+    r = dttest::runCli("'" + in + "' -o '" + out + "' --kernel " + std::string(kernel));
+    REQUIRE(r.status == 0);
+    CHECK(r.err.empty());
+  }
 }
