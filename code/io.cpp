@@ -209,7 +209,8 @@ bool isInteger(std::string_view f) {
 
 long toInteger(const std::string& path, long line, std::string_view f, const char* what) {
   long v = 0;
-  if (!readInteger(f, v)) bad(path, line, std::string(what) + " " + shown(f) + " is not an integer");
+  if (!readInteger(f, v))
+    bad(path, line, std::string(what) + " " + shown(f) + " is not an integer");
   return v;
 }
 
@@ -308,8 +309,9 @@ PointSet parseXYLines(LineSource& src, const std::string& path, std::size_t size
   PointSet ps;
   ps.path = path;
   ps.firstIndex = 1;
-  // A line "x y" has at least 4 bytes.
-  ps.xy.reserve(2 * (sizeHint ? sizeHint / 4 + 1 : std::size_t(1) << 16));
+  // A guess (lines of 16 bytes): the vector grows if the lines are shorter; a bound (4 bytes a
+  // line) could reserve far more than the points need.
+  ps.xy.reserve(2 * (sizeHint ? sizeHint / 16 + 1 : std::size_t(1) << 16));
   std::vector<std::string_view> f;
   f.reserve(16);
   std::string_view text;
@@ -592,7 +594,8 @@ namespace {
 
 std::string canonicalNew(const std::string& path) {
   const std::size_t slash = path.rfind('/');
-  const std::string dir = slash == std::string::npos ? "." : (slash == 0 ? "/" : path.substr(0, slash));
+  const std::string dir =
+      slash == std::string::npos ? "." : (slash == 0 ? "/" : path.substr(0, slash));
   const std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
   char buf[PATH_MAX];
   if (::realpath(dir.c_str(), buf) == nullptr) return path;

@@ -3,7 +3,9 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <vector>
 
+#include "fast_delaunay.h"
 #include "support.h"
 
 namespace {
@@ -94,4 +96,38 @@ TEST_CASE("delaunay2d: --order input on points sorted along a curve warns once t
     REQUIRE(r.status == 0);
     CHECK(r.err.empty());
   }
+}
+
+TEST_CASE("fastDelaunay: the progress hook sees every k-th point and the numbering options agree") {
+  const dttest::XY p = dttest::uniformPoints(10000, 91);
+  dt::FastOptions o;
+  o.progressEvery = 1000;
+  std::vector<std::size_t> seen;
+  std::uint64_t lastInsertions = 0;
+  o.progress = [&](std::size_t done, std::size_t total, const dt::FastStats& st) {
+    seen.push_back(done);
+    CHECK(total == 10000);
+    CHECK(st.insertions >= lastInsertions);
+    CHECK(st.insertions <= done + 2);
+    lastInsertions = st.insertions;
+  };
+  const dt::FastResult a = dt::fastDelaunay(p, o);
+  CHECK(seen == std::vector<std::size_t>{1000, 2000, 3000, 4000, 5000, 6000, 7000, 8000, 9000});
+  // Insertion numbering: the same triangles, indexing the points in insertion order.
+  o.progress = nullptr;
+  o.insertionNumbering = true;
+  const dt::FastResult b = dt::fastDelaunay(p, o);
+  REQUIRE(b.tri.size() == a.tri.size());
+  REQUIRE(b.points.size() == p.size());
+  REQUIRE(b.inserted.size() == p.size() / 2);
+  CHECK(dt::checkDelaunay(b.points, b.tri).ok);
+  bool same = true;
+  for (std::size_t t = 0; t < a.tri.size(); ++t)
+    for (int k = 0; k < 3; ++k) same = same && a.tri[t][k] == b.inserted[std::size_t(b.tri[t][k])];
+  CHECK(same);
+  bool pointsMatch = true;
+  for (std::size_t i = 0; i < b.inserted.size(); ++i)
+    pointsMatch = pointsMatch && b.points[2 * i] == p[2 * std::size_t(b.inserted[i])] &&
+                  b.points[2 * i + 1] == p[2 * std::size_t(b.inserted[i]) + 1];
+  CHECK(pointsMatch);
 }

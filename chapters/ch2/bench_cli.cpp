@@ -142,7 +142,9 @@ int main(int argc, char** argv) {
     std::vector<Program> progs = {
         {"delaunay2d (exact check, .ele written)", {cli, input, "-o", out, "--no-progress"}, {}},
         {"delaunay2d --no-check", {cli, input, "-o", out, "--no-progress", "--no-check"}, {}}};
-    if (haveCgal) progs.push_back({"CGAL: iostreams + Delaunay_triangulation_2", {selfDir() + "/bench_cli", "--cgal-read", input}, {}});
+    if (haveCgal)
+      progs.push_back({"CGAL: iostreams + Delaunay_triangulation_2",
+                       {selfDir() + "/bench_cli", "--cgal-read", input}, {}});
     std::cout << "bench_cli: " << n << " uniform points, " << reps << " alternating runs of "
               << progs.size() << " programs\n";
     for (int r = 0; r < reps; ++r)
