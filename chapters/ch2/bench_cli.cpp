@@ -164,7 +164,7 @@ int main(int argc, char** argv) {
     t.caption = "The command line end to end, " + std::to_string(n) +
                 " uniform points (.node file, medians of " + std::to_string(reps) +
                 " alternating runs" + (haveCgal ? "; ratios to CGAL)" : "; CGAL not found)");
-    t.header = {"program", "wall s", "CPU s", "peak RSS MB", "wall / CGAL", "CPU / CGAL",
+    t.header = {"Program", "Wall s", "CPU s", "Peak RSS MB", "Wall / CGAL", "CPU / CGAL",
                 "RSS / CGAL"};
     const Program* ref = haveCgal ? &progs.back() : nullptr;
     for (const Program& p : progs) {
