@@ -551,9 +551,10 @@ void writeSvg(Writer& w, const std::vector<double>& xy, const std::vector<std::a
   const bool halve = std::max({std::fabs(x0), std::fabs(x1), std::fabs(y0), std::fabs(y1)}) >= big;
   const double h = halve ? 0.5 : 1.0;
   const double span = std::max(x1 * h - x0 * h, y1 * h - y0 * h);  // finite, >= 0
-  // 2^e span lies in [1, 2): the pixel offsets 2^e (x - x0) h are in [0, 2).
+  // 2^e span lies in [1, 2): the offsets 2^e (x - x0) h are in [0, 2), and k <= size - 20
+  // maps the largest to size - 20 exactly.
   const int e = span > 0 ? -std::ilogb(span) : 0;
-  const double k = (size - 20) / 2.0;
+  const double k = (size - 20) / (span > 0 ? std::ldexp(span, e) : 2.0);
   auto px = [&](int i) { return 10 + std::ldexp(xy[2 * i] * h - x0 * h, e) * k; };
   auto py = [&](int i) { return size - 10 - std::ldexp(xy[2 * i + 1] * h - y0 * h, e) * k; };
   w.put("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"").put(long(size))
