@@ -348,7 +348,8 @@ int main(int argc, char** argv) {
                "); merged\n";
     };
     // --kernel fast: the points as read go to fastDelaunay, which orders them, finds the
-    // duplicates as it meets them, and returns triangles numbered as the input.
+    // duplicates as it meets them (no sort beforehand), and returns the triangles numbered in
+    // its insertion order with the map back to the input numbers.
     const bool useFast = opt.fastKernel && !opt.superMethod;
     const bool watchWalks = opt.order != "brio";
     WalkWatch watch(watchWalks, opt.order, progress);
