@@ -466,7 +466,7 @@ Writer& Writer::put(long v) {
 }
 
 Writer& Writer::put(double v, int precision) {
-  reserve(40);
+  reserve(precision < 0 ? 330 : 40);  // fixed notation of 1e308 has 309 digits
   char* b = buf_.data() + used_;
   char* e = buf_.data() + buf_.size();
   // %.2f for pixels (precision < 0 means fixed with -precision digits), %.{p}g otherwise.
