@@ -274,9 +274,17 @@ struct Worker {
 };
 
 // Inserts points [from, to) of the insertion order (skipping i1, i2) with one inserter; a Busy
-// point goes to the deferred list, or is an error when the inserter must be alone.
-void insertRange(Inserter& in, Worker& w, int from, int to, int i1, int i2, bool alone) {
+// point goes to the deferred list, or is an error when the inserter must be alone. tick(i), if
+// given, is called before point i when i - from is a multiple of `every` (the progress report).
+template <class Tick>
+void insertRange(Inserter& in, Worker& w, int from, int to, int i1, int i2, bool alone,
+                 std::size_t every, Tick tick) {
+  std::size_t next = every;
   for (int i = from; i < to; ++i) {
+    if (__builtin_expect(std::size_t(i - from) == next, 0)) {
+      tick(i);
+      next += every;
+    }
     if (i == i1 || i == i2) continue;
     int d = -1;
     const Inserter::Outcome o = in.insert(i, d);
@@ -401,7 +409,20 @@ FastResult fastDelaunayParallel(const std::vector<double>& xy, int threads, cons
                          roundStart[r0 + 1] - roundStart[r0] < std::max(1, minPiece) * threads))
     ++r0;
   seqEnd = std::max(seqEnd, roundStart[r0]);
-  insertRange(*ins[0], W[0], 1, seqEnd, i1, i2, true);
+  // Progress (FastOptions::progress) is reported by the calling thread only, so the callback
+  // needs no locking: during a concurrent round, from its own piece (the pieces advance at about
+  // the same rate), with its own counters scaled by the number of threads.
+  const std::size_t every =
+      opt.progress ? std::max<std::size_t>(1, opt.progressEvery) : std::size_t(-1);
+  auto report = [&](std::size_t done, int scale) {
+    FastStats s = W[0].stats;
+    s.walkSteps *= std::uint64_t(scale);
+    s.cavityFaces *= std::uint64_t(scale);
+    s.insertions = std::min<std::uint64_t>(done, s.insertions * std::uint64_t(scale));
+    opt.progress(std::min(done, n), n, s);
+  };
+  insertRange(*ins[0], W[0], 1, seqEnd, i1, i2, true, every,
+              [&](int i) { report(std::size_t(i), 1); });
   const auto tp = std::chrono::steady_clock::now();
   for (int r = r0; r < rounds; ++r) {
     const int from = std::max(seqEnd, roundStart[r]), to = roundStart[r + 1];
@@ -410,7 +431,11 @@ FastResult fastDelaunayParallel(const std::vector<double>& xy, int threads, cons
     ps.parallelPoints += std::uint64_t(to - from);
     parallelFor(threads, std::size_t(to - from), [&](int k, std::size_t lo, std::size_t hi) {
       try {  // (the walk starts where this thread's previous piece ended)
-        insertRange(*ins[k], W[k], from + int(lo), from + int(hi), i1, i2, false);
+        insertRange(*ins[k], W[k], from + int(lo), from + int(hi), i1, i2, false,
+                    k == 0 ? every / std::size_t(threads) + 1 : std::size_t(-1), [&](int i) {
+                      report(std::size_t(from) + std::size_t(i - from) * std::size_t(threads),
+                             threads);
+                    });
       } catch (...) {
         W[k].error = std::current_exception();
       }
@@ -425,7 +450,8 @@ FastResult fastDelaunayParallel(const std::vector<double>& xy, int threads, cons
     }
     std::sort(later.begin(), later.end());
     ps.deferred += later.size();
-    for (int i : later) insertRange(*ins[0], W[0], i, i + 1, i1, i2, true);
+    for (int i : later)
+      insertRange(*ins[0], W[0], i, i + 1, i1, i2, true, std::size_t(-1), [](int) {});
   }
   ps.parallelSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - tp).count();
 
@@ -447,15 +473,21 @@ FastResult fastDelaunayParallel(const std::vector<double>& xy, int threads, cons
   ins.clear();
   S.owner.reset();
   std::vector<int>().swap(S.A);
-  std::vector<double>().swap(P);
-  // Renumbered by pieces, each compacted in place, then the pieces moved together.
+  if (opt.insertionNumbering)
+    P.resize(2 * n);  // the dummy point of INF goes
+  else
+    std::vector<double>().swap(P);
+  // Renumbered (unless insertionNumbering) by pieces, each compacted in place, then the pieces
+  // moved together.
+  const bool renumber = !opt.insertionNumbering;
   std::vector<std::array<int, 3>>& V = S.V;
   V.resize(std::size_t(S.count.load()));
   std::vector<std::size_t> pieceLo(static_cast<std::size_t>(threads)), pieceLen(pieceLo);
   parallelFor(threads, V.size(), [&](int k, std::size_t lo, std::size_t hi) {
     std::size_t w = lo;
     for (std::size_t t = lo; t < hi; ++t)
-      if (V[t][2] != N) V[w++] = {orig[V[t][0]], orig[V[t][1]], orig[V[t][2]]};
+      if (V[t][2] != N)
+        V[w++] = renumber ? std::array<int, 3>{orig[V[t][0]], orig[V[t][1]], orig[V[t][2]]} : V[t];
     pieceLo[std::size_t(k)] = lo;
     pieceLen[std::size_t(k)] = w - lo;
   });
@@ -470,6 +502,10 @@ FastResult fastDelaunayParallel(const std::vector<double>& xy, int threads, cons
   res.duplicates.reserve(dups.size());
   for (const auto& [d, v] : dups) res.duplicates.emplace_back(d, orig[v]);
   std::sort(res.duplicates.begin(), res.duplicates.end());
+  if (opt.insertionNumbering) {
+    res.points = std::move(P);
+    res.inserted = std::move(orig);
+  }
   res.stats.insertSeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() -
       res.stats.sortSeconds;

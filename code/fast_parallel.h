@@ -31,8 +31,11 @@ int defaultThreadCount();
 /// meet another thread's triangles are redone by one thread after the round. The result is the
 /// exact DT(S) whenever it is unique (points in general position: then equal to fastDelaunay's),
 /// otherwise a Delaunay triangulation of S (checkDelaunay validates it); duplicates are merged
-/// into the smallest-numbered equal point, as fastDelaunay does. Same exceptions as fastDelaunay,
-/// and std::invalid_argument for a ladder switch or another order when threads > 1. A round is
+/// into the smallest-numbered equal point, as fastDelaunay does; opt.insertionNumbering is
+/// honoured, and opt.progress is called by the calling thread only (during a concurrent round
+/// with estimated counts: its own piece's, times the number of threads). Same exceptions as
+/// fastDelaunay, and std::invalid_argument for a ladder switch or another order when threads >
+/// 1. A round is
 /// inserted concurrently when each thread gets at least minPiece points of it (the tests make it
 /// small, to make threads meet on small inputs).
 FastResult fastDelaunayParallel(const std::vector<double>& xy, int threads,

@@ -109,3 +109,34 @@ TEST_CASE("parallel the command line gives the same triangles with one and two t
   CHECK(bad.status == 2);
   CHECK(bad.err.find("--threads") != std::string::npos);
 }
+
+TEST_CASE("parallel numbers the output in insertion order and reports progress on request") {
+  dttest::XY p = dttest::uniformPoints(60000, 5);
+  p.insert(p.end(), {p[10], p[11], p[20], p[21]});  // two duplicates
+  const dt::FastResult plain = dt::fastDelaunayParallel(p, 2, {}, nullptr, 64);
+  dt::FastOptions o;
+  o.insertionNumbering = true;
+  o.progressEvery = 1000;
+  std::size_t calls = 0, last = 0;
+  bool increasing = true;
+  o.progress = [&](std::size_t done, std::size_t total, const dt::FastStats&) {
+    increasing = increasing && done >= last && done <= total && total == p.size() / 2;
+    last = done;
+    ++calls;
+  };
+  const dt::FastResult r = dt::fastDelaunayParallel(p, 2, o, nullptr, 64);
+  REQUIRE(r.inserted.size() == p.size() / 2);
+  REQUIRE(r.points.size() == p.size());
+  for (std::size_t i = 0; i < r.inserted.size(); ++i) {
+    CHECK(r.points[2 * i] == p[2 * std::size_t(r.inserted[i])]);
+    CHECK(r.points[2 * i + 1] == p[2 * std::size_t(r.inserted[i]) + 1]);
+  }
+  Tris mapped = r.tri;
+  for (auto& t : mapped)
+    for (int& v : t) v = r.inserted[std::size_t(v)];
+  CHECK(canonical(mapped) == canonical(plain.tri));
+  CHECK(r.duplicates == plain.duplicates);
+  CHECK(r.duplicates.size() == 2);
+  CHECK(calls > 10);
+  CHECK(increasing);
+}
