@@ -340,17 +340,42 @@ XY hilbertSorted(const XY& p) {
   return q;
 }
 
-void tableMethods(const ch::Options& o) {
+// A list of names as prose: "a", "a and b", "a, b and c" ("none" if empty).
+std::string listing(const std::vector<std::string>& v) {
+  if (v.empty()) return "none";
+  std::string s;
+  for (std::size_t i = 0; i < v.size(); ++i)
+    s += (i == 0 ? "" : (i + 1 == v.size() ? " and " : ", ")) + v[i];
+  return s;
+}
+
+// How many of `sizes` sizes something held for, as prose.
+std::string howMany(int k, int sizes) {
+  if (k == sizes) return "for every size tried";
+  if (k == 0) return "for no size tried";
+  return ch::fmt("for %d of the %d sizes tried", k, sizes);
+}
+
+void tableMethods(const ch::Options& o, ch::Values& v) {
   const std::size_t maxN = o.maxN ? std::size_t(o.maxN) : (o.quick ? 20000 : 200000);
   const std::vector<std::string> fams = {"uniform square", "grid", "circle", "bent line",
                                          "huge circle arc"};
   ch::Table t;
+  // Two tables of the same runs (one would be wider than the book's page): times, then flips
+  // and correctness.
   t.caption = "Two ways to DT(S) on the same points (Hilbert order, walk from the last cavity): "
-              "time ratios to the hull method measured in the same run, and flips";
-  t.header = {"family", "n", "n_h", "hull method (s)", "super + recovery / hull",
-              "of which recovery", "recovery flips", "flips / n_h", "2.2.1-kind flips",
+              "times as ratios to the hull method measured in the same run";
+  t.header = {"family", "n", "hull method (s)", "super-triangles + recovery / hull",
+              "of which recovery / hull", "Lawson from the sweep / hull"};
+  ch::Table f;
+  f.caption = "The same runs: flips, and which method gives DT(S) (super-triangles 10 times the "
+              "box; n_h: hull vertices)";
+  f.header = {"family", "n", "n_h", "recovery flips", "flips / n_h", "2.2.1-kind flips",
               "naive removal is DT(S)", "2.2.1's flips alone give DT(S)", "both exact",
-              "Lawson from sweep / hull", "Lawson flips / n"};
+              "Lawson flips / n"};
+  std::vector<std::string> naiveFail, naiveOk, notesFail;
+  bool allExact = true;
+  double maxFlipsPerHull = 0;
   std::vector<std::size_t> sizes;
   for (std::size_t n = 1000; n <= maxN; n *= 10) sizes.push_back(n);
   ch::Progress prog("2.3.6 methods", fams.size() * sizes.size());
@@ -402,25 +427,46 @@ void tableMethods(const ch::Options& o) {
       const bool naive = meshIsDT(N, np);
       dt::recoverDelaunay(N, dt::RecoveryRule::NotesOnly);
       const bool notes = meshIsDT(N, np);
-      t.add({fam, std::to_string(np), std::to_string(nh), ch::fmt("%.4f", h),
-             ch::fmt("%.2f", s / h), ch::fmt("%.3f", rc / h), std::to_string(fs.flips),
+      t.add({fam, std::to_string(np), ch::fmt("%.4f", h), ch::fmt("%.2f", s / h),
+             ch::fmt("%.3f", rc / h), ch::fmt("%.2f", l / h)});
+      f.add({fam, std::to_string(np), std::to_string(nh), std::to_string(fs.flips),
              ch::fmt("%.2f", double(fs.flips) / double(nh)), std::to_string(fs.notesFlips),
              naive ? "yes" : "no", notes ? "yes" : "no", exact ? "yes" : "NO",
-             ch::fmt("%.2f", l / h), ch::fmt("%.2f", double(ls.flips) / double(np))});
+             ch::fmt("%.2f", double(ls.flips) / double(np))});
+      auto note = [&](std::vector<std::string>& list) {
+        if (std::find(list.begin(), list.end(), fam) == list.end()) list.push_back(fam);
+      };
+      note(naive ? naiveOk : naiveFail);
+      if (!notes) note(notesFail);
+      allExact = allExact && exact;
+      if (fam != "bent line") maxFlipsPerHull = std::max(maxFlipsPerHull, double(fs.flips) / double(nh));
       prog.update(++done);
     }
   t.emit(o, "table_recovery_methods");
+  f.emit(o, "table_recovery_flips");
+  // A family is listed as working only if no size failed.
+  std::vector<std::string> ok;
+  for (const std::string& fam : naiveOk)
+    if (std::find(naiveFail.begin(), naiveFail.end(), fam) == naiveFail.end()) ok.push_back(fam);
+  v.set("s236.methods_naive_fail", listing(naiveFail));
+  v.set("s236.methods_naive_ok", listing(ok));
+  v.set("s236.methods_notes_fail", listing(notesFail));
+  v.verdict("s236.methods_full_exact", allExact, "exact on every input", "NOT exact on some input");
+  v.num("s236.methods_flips_per_hull_max", maxFlipsPerHull, "%.1f");
 }
 
-void tableSizes(const ch::Options& o) {
+void tableSizes(const ch::Options& o, ch::Values& v) {
   ch::Table t;
   t.caption = "Super-triangle size (factor x the bounding box) vs. what recovers DT(S); "
               "n = 2000 points per family";
   t.header = {"family", "factor", "naive removal is DT(S)", "2.2.1's flips alone",
               "full rule: flips", "of 2.2.1's kind", "super opposite", "super-super",
               "S-S", "full rule exact"};
-  for (const std::string fam : {"uniform square", "bent line", "huge circle arc", "circle"})
-    for (double factor : {1.001, 1.1, 2.0, 10.0, 1e3, 1e6}) {
+  const std::vector<double> factors = {1.001, 1.1, 2.0, 10.0, 1e3, 1e6};
+  int allExact = 0, rows = 0;
+  for (const std::string fam : {"uniform square", "bent line", "huge circle arc", "circle"}) {
+    int naiveFails = 0, notesFails = 0;
+    for (double factor : factors) {
       const XY p = hilbertSorted(family(fam, 2000, 37));
       const std::size_t np = p.size() / 2;
       dt::Triangulation N;
@@ -436,7 +482,19 @@ void tableSizes(const ch::Options& o) {
              std::to_string(fs.flips), std::to_string(fs.notesFlips),
              std::to_string(fs.superOpposite), std::to_string(fs.superSuper),
              std::to_string(fs.realReal), c.ok && c.nVertices == np ? "yes" : "NO"});
+      naiveFails += !naive;
+      notesFails += !notes;
+      allExact += c.ok && c.nVertices == np;
+      ++rows;
     }
+    std::string key = fam;
+    for (char& ch : key) ch = ch == ' ' ? '_' : ch;
+    v.set("s236.sizes_naive_fails_" + key, howMany(naiveFails, int(factors.size())));
+    v.set("s236.sizes_notes_fails_" + key, howMany(notesFails, int(factors.size())));
+  }
+  v.set("s236.sizes_factors", ch::fmt("%g", factors.front()) + " to " + ch::fmt("%g", factors.back()));
+  v.verdict("s236.sizes_full_exact", allExact == rows, "exact for every size and family tried",
+            "NOT exact on some rows (see the table)");
   t.emit(o, "table_recovery_sizes");
 }
 
@@ -447,7 +505,9 @@ int main(int argc, char** argv) {
     figureFlip(o);
     tableDegrees(o);
     figureRecovery(o);
-    tableSizes(o);
-    tableMethods(o);
+    ch::Values v(o, "sec2_3_6_flips");
+    tableSizes(o, v);
+    tableMethods(o, v);
+    v.write();
   });
 }
