@@ -40,7 +40,7 @@ void checkHull(const dt::Triangulation& T, const std::vector<dt::Vertex*>& S) {
 
 }  // namespace
 
-TEST_CASE("2.2.2: visible hull edges form one chain, seen strictly, none from inside") {
+TEST_CASE("2.2.2 visible hull edges form one chain seen strictly and none is seen from inside") {
   dt::Triangulation T;
   const auto S = dt::addVertices(T, dt::uniformPoints(400, 222));
   dt::delaunayTrglHull(T, S, dt::StartRule::LastCavity);
@@ -67,7 +67,7 @@ TEST_CASE("2.2.2: visible hull edges form one chain, seen strictly, none from in
     for (const auto& v : dt::visibleHullEdges(T, &q)) CHECK_FALSE(v.a == e.a);
 }
 
-TEST_CASE("2.2.2: every point outside the hull (lexicographic order) is inserted exactly") {
+TEST_CASE("2.2.2 every point outside the hull (lexicographic order) is inserted exactly") {
   XY p = dt::uniformPoints(3000, 17);
   std::vector<std::pair<double, double>> v;
   for (std::size_t i = 0; i < p.size() / 2; ++i) v.emplace_back(p[2 * i], p[2 * i + 1]);
@@ -97,7 +97,7 @@ TEST_CASE("2.2.2: every point outside the hull (lexicographic order) is inserted
   CHECK(visibleTotal >= 2997);
 }
 
-TEST_CASE("2.2.2: collinear starting points and points on hull supporting lines") {
+TEST_CASE("2.2.2 collinear starting points and points on hull supporting lines") {
   // 60 collinear points first (in shuffled order), then points on the same line beyond the
   // ends, then points on the supporting lines of the first triangle's edges, then the rest.
   XY line;
@@ -138,7 +138,7 @@ TEST_CASE("2.2.2: collinear starting points and points on hull supporting lines"
   CHECK(dt::convexHull(T).size() >= 6);
 }
 
-TEST_CASE("2.2.2: the sweep triangulation (plain outside-hull insertions) is a valid triangulation") {
+TEST_CASE("2.2.2 the sweep triangulation (plain outside-hull insertions) is a valid triangulation") {
   XY col;  // a collinear start of 40 points, duplicates, then random points
   for (int i = 0; i < 40; ++i) col.push_back(0), col.push_back(i);
   col.insert(col.end(), {0, 3, 0, 3, 5, 5});
@@ -179,7 +179,7 @@ TEST_CASE("2.2.2: the sweep triangulation (plain outside-hull insertions) is a v
   CHECK_THROWS_AS(dt::insertOutsideHull(U, &inside, dt::anyGhost(U)), std::invalid_argument);
 }
 
-TEST_CASE("delaunay2d --method super and --method hull give the same exact DT(S)") {
+TEST_CASE("2.2.2 delaunay2d --method super and --method hull give the same exact DT(S)") {
   struct Case {
     std::string name;
     XY p;

@@ -159,7 +159,7 @@ TEST_CASE("2.3.1 robust incircle equals the exact oracle on 1 million near-cocir
   CHECK(exact > N / 10);
 }
 
-TEST_CASE("2.3.1 the exact oracle agrees with an independent rational evaluation, 1e-300 to 1e300") {
+TEST_CASE("2.3.1 the exact oracle agrees with an independent rational evaluation from 1e-300 to 1e300") {
   std::mt19937_64 g(2303);
   std::uniform_int_distribution<int> e(-1000, 1000);
   long wrong = 0;
@@ -187,7 +187,7 @@ TEST_CASE("2.3.1 Figure 2.7: the grid holds 256 consecutive doubles 1/2 + i 2^-5
   }
 }
 
-TEST_CASE("2.3.1 Figure 2.7: the naive maps are wrong near the diagonal, 'even at 20 ulps' from it") {
+TEST_CASE("2.3.1 Figure 2.7: the naive maps are wrong near the diagonal 'even at 20 ulps' from it") {
   const SignMap exABC = orientMap(orient2dExact, OrientOrder::ABC);
   const SignMap exCBA = orientMap(orient2dExact, OrientOrder::CBA);
   const MapErrors l = compareMaps(orientMap(orient2dNaive, OrientOrder::ABC), exABC);
@@ -205,7 +205,7 @@ TEST_CASE("2.3.1 Figure 2.7: the naive maps are wrong near the diagonal, 'even a
   CHECK(r.spurious == 0);
 }
 
-TEST_CASE("2.3.1 O(c,b,a) = -O(a,b,c) exactly (the notes say 'the same'); naive breaks it, O(b,c,a) does not") {
+TEST_CASE("2.3.1 O(c b a) = -O(a b c) exactly (the notes say 'the same') and naive breaks it while O(b c a) does not") {
   const SignMap eABC = orientMap(orient2dExact, OrientOrder::ABC);
   const SignMap eCBA = orientMap(orient2dExact, OrientOrder::CBA);
   const SignMap eBCA = orientMap(orient2dExact, OrientOrder::BCA);
@@ -234,7 +234,7 @@ TEST_CASE("2.3.1 Figure 2.8: the robust maps are exact; 0 exactly on the diagona
   }
 }
 
-TEST_CASE("2.3.1 incircle maps: naive wrong, robust exact, only the corner cell on the circle") {
+TEST_CASE("2.3.1 incircle maps: naive wrong and robust exact with only the corner cell on the circle") {
   const SignMap e1 = incircleMap(incircleExact, IncircleOrder::ABCD);
   const SignMap e2 = incircleMap(incircleExact, IncircleOrder::DCBA);
   CHECK(agreeingCells(e1, e2, 1) == 65536);  // an even permutation: the same exact map
@@ -272,7 +272,7 @@ TEST_CASE("2.3.1 the notes' orientation filter (1e-15) lets wrong signs through:
   CHECK(lastPredicateStage() == 1);  // the safe bound sends it to the exact stage
 }
 
-TEST_CASE("2.3.1 the notes' incircle filter (1e-11) lets wrong signs through: signed max, underflow") {
+TEST_CASE("2.3.1 the notes' incircle filter (1e-11) lets wrong signs through: signed max and underflow") {
   using C = IncircleConfig;
   const double eps = C::eps;
   // Turned by -90 degrees, (x, y) -> (y, -x): every coordinate but one is <= 0, signed max 1/2.
@@ -293,7 +293,7 @@ TEST_CASE("2.3.1 the notes' incircle filter (1e-11) lets wrong signs through: si
   }
 }
 
-TEST_CASE("2.3.1 200-bit MPFR is not exact: pinned counterexamples, and enough bits fix them") {
+TEST_CASE("2.3.1 200-bit MPFR is not exact: pinned counterexamples and enough bits fix them") {
   // orient2d, wrong zero: 1 - 2^-600 rounds to 1.
   CHECK(orient2dExact(1, 1, 2, 2, 0x1p-600, 0) == -1);
   CHECK(orient2dMPFR200(1, 1, 2, 2, 0x1p-600, 0) == 0);
@@ -322,7 +322,7 @@ TEST_CASE("2.3.1 200-bit MPFR is not exact: pinned counterexamples, and enough b
   CHECK(incircle(w[0], w[1], w[2], w[3], w[4], w[5], w[6], w[7]) == 1);
 }
 
-TEST_CASE("2.3.1 exercise 2: exactBits* bits make MPFR exact, on wide random inputs") {
+TEST_CASE("2.3.1 exercise 2: exactBits bits make MPFR exact on wide random inputs") {
   std::mt19937_64 g(2304);
   std::uniform_int_distribution<int> e(-300, 300);
   long wrong = 0;
@@ -341,7 +341,7 @@ TEST_CASE("2.3.1 exercise 2: exactBits* bits make MPFR exact, on wide random inp
   CHECK(exactBitsIncircle(1.5, 1.25, 1.75, 1.125, 1.0, 1.875, 1.5, 1.5) == 220);  // > 200
 }
 
-TEST_CASE("2.3.1 exercise 1: sorting the points makes the naive test consistent, not correct") {
+TEST_CASE("2.3.1 exercise 1: sorting the points makes the naive test consistent but not correct") {
   const SignMap ex = orientMap(orient2dExact, OrientOrder::ABC);
   const SignMap abc = orientMap(orient2dNaiveCanonical, OrientOrder::ABC);
   const SignMap cba = orientMap(orient2dNaiveCanonical, OrientOrder::CBA);
@@ -351,7 +351,7 @@ TEST_CASE("2.3.1 exercise 1: sorting the points makes the naive test consistent,
   CHECK(compareMaps(abc, ex).wrong > 0);
 }
 
-TEST_CASE("2.3.1 exercise 3: segment intersection, proper crossings (the notes) and touching cases") {
+TEST_CASE("2.3.1 exercise 3: segment intersection with proper crossings (the notes) and touching cases") {
   // proper crossing: both agree
   CHECK(segmentsCrossNotes(0, 0, 2, 2, 0, 2, 2, 0));
   CHECK(segmentsIntersect(0, 0, 2, 2, 0, 2, 2, 0));

@@ -1,8 +1,12 @@
-/// \file test_2_3_4_algorithms.cpp Claims of section 2.3.4: Table 2.1 (N_search like sqrt(n), N_cavity tends to 4), the ball of |C| + 2 triangles, and the parabola worst case.
+/// \file test_2_3_4_algorithms.cpp Claims of section 2.3.4: computeAdjacencies (Listing 2.4), Table 2.1 (N_search like sqrt(n), N_cavity tends to 4), the ball of |C| + 2 triangles, and the parabola worst case.
 #include <doctest/doctest.h>
 
+#include <array>
 #include <cmath>
+#include <map>
+#include <stdexcept>
 
+#include "adjacency.h"
 #include "cavity.h"
 #include "search.h"
 #include "stats.h"
@@ -105,7 +109,7 @@ TEST_CASE("2.3.4 a cavity of size |C| gives |C| + 2 new triangles (4 -> 6)") {
   REQUIRE(dt::checkTriangulation(T).ok);
 }
 
-TEST_CASE("Exercise 2.3.4.2: the last point's cavity has deg(p) - 2 faces; their mean is 4 + (6 - D)/n") {
+TEST_CASE("2.3.4 exercise 2: the last point's cavity has deg(p) - 2 faces; their mean is 4 + (6 - D)/n") {
   const dt::XY p = dt::uniformPoints(150, 8);
   const std::size_t n = p.size() / 2;
   double meanLast = 0;
@@ -135,7 +139,7 @@ TEST_CASE("Exercise 2.3.4.2: the last point's cavity has deg(p) - 2 faces; their
   CHECK(backward[0] == doctest::Approx(4 + (6 - backward[1]) / double(n)).epsilon(1e-12));
 }
 
-TEST_CASE("2.3.4 N_search counts the faces lineSearch visits, the face it returns included") {
+TEST_CASE("2.3.4 N_search counts the faces lineSearch visits including the face it returns") {
   dt::Triangulation T;
   dt::initSuperTriangles(T, 0, 0, 1, 1);
   dt::Vertex* v = T.addVertex(0.5, 0.5, 0);
@@ -149,7 +153,7 @@ TEST_CASE("2.3.4 N_search counts the faces lineSearch visits, the face it return
   CHECK(st.searchSteps >= 2);  // at least one face per insertion
 }
 
-TEST_CASE("2.3.4 worst case: points on a parabola towards its apex, cavities of O(i) faces") {
+TEST_CASE("2.3.4 worst case: points on a parabola towards its apex give cavities of O(i) faces") {
   // x = -n..-1 in increasing x: each point is inside every circle through three earlier ones (a
   // circle cuts the parabola at 4 points with x summing to 0), so in DT(S) the cavity of the i-th
   // point is all i - 3 triangles plus the ghosts it sees: sum ~ n^2 / 2.
@@ -187,7 +191,7 @@ TEST_CASE("2.3.4 Listing 2.5 without recursion: a cavity of 10^5 faces") {
   CHECK(r.nHull == std::size_t(n + 1));
 }
 
-TEST_CASE("Exercise 2.3.4.1: computeAdjacenciesSorted inside the kernel gives the same mesh") {
+TEST_CASE("2.3.4 exercise 1: computeAdjacenciesSorted inside the kernel gives the same mesh") {
   // Rebuild each ball's links with the sorting method and compare with the map's.
   const dt::XY p = dt::uniformPoints(3000, 12);
   dt::Triangulation T;
@@ -206,4 +210,60 @@ TEST_CASE("Exercise 2.3.4.1: computeAdjacenciesSorted inside the kernel gives th
     same += all[i]->F[0] == links[i][0] && all[i]->F[1] == links[i][1] && all[i]->F[2] == links[i][2];
   CHECK(same == all.size());
   CHECK(dt::checkTriangulation(T).ok);
+}
+
+TEST_CASE("2.3.4 Listing 2.4: computeAdjacencies pairs every interior edge exactly once") {
+  for (unsigned seed : {1u, 2u, 3u}) {
+    dt::Triangulation T;
+    std::vector<dt::Vertex*> S;
+    dt::XY p = seed == 3 ? dt::gridPoints(12, 9) : dt::uniformPoints(500, seed);
+    for (std::size_t i = 0; i < p.size() / 2; ++i) S.push_back(T.addVertex(p[2 * i], p[2 * i + 1], long(i)));
+    dt::initSuperTriangles(T, 0, 0, 12, 12);
+    dt::delaunayTrgl(T, S, dt::StartRule::LastCavity);
+    REQUIRE(dt::checkTriangulation(T).ok);
+    // Remember the links, forget them, rebuild them from scratch with each method.
+    std::vector<dt::Face*> all;
+    std::map<dt::Face*, std::array<dt::Face*, 3>> before;
+    for (dt::Face& f : T.faces()) {
+      all.push_back(&f);
+      before[&f] = {f.F[0], f.F[1], f.F[2]};
+    }
+    for (int method = 0; method < 2; ++method) {
+      CAPTURE(method);
+      for (dt::Face* f : all) f->F[0] = f->F[1] = f->F[2] = nullptr;
+      if (method == 0)
+        dt::computeAdjacencies(all);
+      else
+        dt::computeAdjacenciesSorted(all);
+      std::size_t links = 0, boundary = 0;
+      for (dt::Face* f : all)
+        for (int k = 0; k < 3; ++k) {
+          CHECK(f->F[k] == before[f][std::size_t(k)]);
+          if (f->F[k] == nullptr) {
+            ++boundary;
+            continue;
+          }
+          ++links;
+          const int j = dt::neighbourIndex(f->F[k], f);
+          REQUIRE(j >= 0);
+          CHECK(f->F[k]->V[j] == f->V[(k + 1) % 3]);  // across the same edge, opposite way
+        }
+      // The super-square: 4 boundary edges; every other edge linked from both sides.
+      const dt::MeshCounts c = dt::meshCounts(T.vertices().size(), dt::extractMesh(T, false).tri);
+      CHECK(boundary == 4);
+      CHECK(links == 2 * std::size_t(c.ne - 4));
+    }
+  }
+}
+
+TEST_CASE("2.3.4 Listing 2.4 rejects an edge used twice with the same orientation") {
+  dt::Triangulation T;
+  dt::Vertex* a = T.addVertex(0, 0, 0);
+  dt::Vertex* b = T.addVertex(1, 0, 1);
+  dt::Vertex* c = T.addVertex(0, 1, 2);
+  dt::Vertex* d = T.addVertex(0, -1, 3);
+  std::vector<dt::Face*> faces = {T.addFace(a, b, c), T.addFace(a, b, d)};
+  std::vector<dt::Face*> copy = faces;
+  CHECK_THROWS_AS(dt::computeAdjacencies(faces), std::logic_error);
+  CHECK_THROWS_AS(dt::computeAdjacenciesSorted(copy), std::logic_error);
 }

@@ -135,7 +135,7 @@ const std::string& codeText() {
 
 }  // namespace
 
-TEST_CASE("book: the pages exist, each starts with \\page or \\mainpage, and page ids are unique") {
+TEST_CASE("book the pages exist and each starts with \\page or \\mainpage and page ids are unique") {
   const auto ps = pages();
   REQUIRE(ps.size() >= 3);  // at least index, errata, references
   std::map<std::string, std::string> seen;
@@ -165,7 +165,7 @@ TEST_CASE("book: the pages exist, each starts with \\page or \\mainpage, and pag
   CHECK(seen.count("references") == 1);
 }
 
-TEST_CASE("book: every \\image is in the repository or written by a chapter program") {
+TEST_CASE("book every \\image is in the repository or written by a chapter program") {
   for (const auto& [line, m] : findAll(std::regex(R"(\\image\s+(\w+)\s+"?([^\s"]+))"))) {
     const std::string name = m[2];
     CHECK_MESSAGE(m[1] == "html", line.where() << ": only \\image html is built (got " << m[1] << ")");
@@ -175,7 +175,7 @@ TEST_CASE("book: every \\image is in the repository or written by a chapter prog
   }
 }
 
-TEST_CASE("book: every \\htmlinclude and \\include is in the repository or written by a chapter program") {
+TEST_CASE("book every \\htmlinclude and \\include is in the repository or written by a chapter program") {
   for (const auto& [line, m] : findAll(std::regex(R"(\\(?:htmlinclude|include|verbinclude)\s+(?:\[[^\]]*\]\s*)?"?([^\s"]+))"))) {
     const std::string name = m[1];
     const bool found = fs::exists(kRoot / name) || producedByAProgram(name);
@@ -184,7 +184,7 @@ TEST_CASE("book: every \\htmlinclude and \\include is in the repository or writt
   }
 }
 
-TEST_CASE("book: every \\snippet names an existing file and a marker that opens and closes in it") {
+TEST_CASE("book every \\snippet names an existing file and a marker that opens and closes in it") {
   for (const auto& [line, m] : findAll(std::regex(R"(\\snippet(?:\{[^}]*\})?\s+(\S+)\s+(\S+))"))) {
 
     const std::string file = m[1], marker = m[2];
@@ -204,7 +204,7 @@ TEST_CASE("book: every \\snippet names an existing file and a marker that opens 
   }
 }
 
-TEST_CASE("book: every \\ref resolves to a page, an anchor, a file or a symbol of code/") {
+TEST_CASE("book every \\ref resolves to a page or an anchor or a file or a symbol of code/") {
   const std::set<std::string> labels = bookLabels();
 
   for (const auto& [line, m] : findAll(std::regex(R"(\\ref\s+([A-Za-z0-9_:.#~]+[A-Za-z0-9_]))"))) {
@@ -227,7 +227,7 @@ TEST_CASE("book: every \\ref resolves to a page, an anchor, a file or a symbol o
   }
 }
 
-TEST_CASE("book: every formula is closed, and none is where Doxygen would print it raw") {
+TEST_CASE("book every formula is closed and none is where Doxygen would print it raw") {
   // Doxygen reads a paragraph as a whole (a blank line ends it; a table row is its own unit):
   // an inline formula may span lines, and so may a "quoted" string, inside which commands are
   // NOT processed, so a \f$ there is printed as source text (checked on a Doxygen 1.9 build).
@@ -298,7 +298,7 @@ TEST_CASE("book: every formula is closed, and none is where Doxygen would print 
   }
 }
 
-TEST_CASE("book: every test file documents itself with \\file, so that \\ref test_x.cpp has a page") {
+TEST_CASE("book every test file documents itself with \\file so that \\ref test_x.cpp has a page") {
   // "\file" takes the file's name as its argument: "/// \file Claims of ..." would document a
   // file named "Claims", which Doxygen reports as an error and the book build stops.
   const std::regex fileCmd(R"(^\s*///?\s*[\\@]file(?:\s+(\S+))?)");

@@ -14,7 +14,7 @@ std::string replayTriangulate(const std::vector<std::uint8_t>& bytes) {
 
 }  // namespace
 
-TEST_CASE("fuzz regression 1: triangles near 1e308 made the walk's centroid overflow") {
+TEST_CASE("regressions fuzz 1: triangles near 1e308 made the walk's centroid overflow") {
   // fuzz_triangulate, mode 2 (small integers times 2^1022): the centroid of Listing 2.6's walk
   // summed three coordinates of about 2^1023 to infinity, and the exact orientation test then
   // received a non-finite point (GMP aborts on it). Fixed in Face::centroid (mesh.cpp).
@@ -35,7 +35,7 @@ TEST_CASE("fuzz regression 1: triangles near 1e308 made the walk's centroid over
   CHECK(dt::orientationTest(&c, &a, &g) > 0);
 }
 
-TEST_CASE("fuzz regression 2: a subnormal difference vanished in the small-multiple exact stage") {
+TEST_CASE("regressions fuzz 2: a subnormal difference vanished in the small-multiple exact stage") {
   // fuzz_triangulate, mode 0 (raw doubles): (0, 0), (0, 8.0869e-320) and (1.3568e-312,
   // 1.0385e34). The orientation's differences 8e-320 and 1e34 were taken as multiples of
   // h = 2^89 because 8e-320 / 2^89 underflows to 0, so orient2d returned 0 instead of -1 and

@@ -49,7 +49,7 @@ std::set<std::array<long, 3>> triangleSet(const Triangulation& T, bool dropSuper
 
 }  // namespace
 
-TEST_CASE("predicates: signs on simple configurations, and exact zeros on degenerate ones") {
+TEST_CASE("spine predicates give signs on simple configurations and exact zeros on degenerate ones") {
   CHECK(orient2d(0, 0, 1, 0, 0, 1) == 1);
   CHECK(orient2d(0, 0, 0, 1, 1, 0) == -1);
   CHECK(orient2d(0, 0, 1, 1, 2, 2) == 0);
@@ -70,7 +70,7 @@ TEST_CASE("predicates: signs on simple configurations, and exact zeros on degene
   CHECK(incircle(3 / s, 4 / s, -5 / s, 0, 0, 5 / s, 4 / s, -3 / s) == 0);
 }
 
-TEST_CASE("predicates: the robust versions agree with the exact oracle near degeneracy") {
+TEST_CASE("spine robust predicates agree with the exact oracle near degeneracy") {
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> u(-1, 1);
   std::uniform_int_distribution<int> k(-40, 40);
@@ -91,7 +91,7 @@ TEST_CASE("predicates: the robust versions agree with the exact oracle near dege
   CHECK(exactStage > 0);  // the test did reach the exact stage
 }
 
-TEST_CASE("Listing 2.2: edges compare as unordered pairs but keep their orientation") {
+TEST_CASE("spine Listing 2.2: edges compare as unordered pairs but keep their orientation") {
   Vertex a(0, 0), b(1, 0);
   Edge e(&a, &b), f(&b, &a);
   CHECK(e == f);
@@ -101,7 +101,7 @@ TEST_CASE("Listing 2.2: edges compare as unordered pairs but keep their orientat
   CHECK(f.V[0] == &b);
 }
 
-TEST_CASE("Listing 2.4: computeAdjacencies pairs every interior edge exactly once") {
+TEST_CASE("spine Listing 2.4: computeAdjacencies pairs every interior edge exactly once") {
   // A fan of 6 triangles around a centre: 6 interior edges, 6 boundary edges.
   Triangulation T;
   Vertex* c = T.addVertex(0, 0, 0);
@@ -130,7 +130,7 @@ TEST_CASE("Listing 2.4: computeAdjacencies pairs every interior edge exactly onc
   CHECK_THROWS_AS(computeAdjacencies(bad), std::logic_error);
 }
 
-TEST_CASE("Listing 2.5: the cavity search needs no recursion, even for a cavity of 20000 faces") {
+TEST_CASE("spine Listing 2.5: the cavity search needs no recursion even for a cavity of 20000 faces") {
   // 20000 points on a circle then its centre: the centre is inside every circumcircle.
   XY p = dt::circlePoints(20000, 1.0);
   p.push_back(0);
@@ -141,7 +141,7 @@ TEST_CASE("Listing 2.5: the cavity search needs no recursion, even for a cavity 
   CHECK_MESSAGE(r.ok, r.error);
 }
 
-TEST_CASE("2.1.2 Property 2.1.1: |bnd| = |C| + 2 at every insertion, on random, grid and circle points") {
+TEST_CASE("spine Property 2.1.1: |bnd| = |C| + 2 at every insertion on random and grid and circle points") {
   // insertVertex throws std::logic_error when the boundary count is wrong.
   for (const XY& p : {dt::uniformPoints(3000, 11), dt::gridPoints(40, 40),
                       dt::circlePoints(500)}) {
@@ -151,7 +151,7 @@ TEST_CASE("2.1.2 Property 2.1.1: |bnd| = |C| + 2 at every insertion, on random, 
   }
 }
 
-TEST_CASE("Listing 2.6: the walk stops on duplicates, passes through vertices, and sees the outside") {
+TEST_CASE("spine Listing 2.6: the walk stops on duplicates and passes through vertices and sees the outside") {
   // On a grid, the line from a centroid to a far target runs through vertices.
   XY g = dt::gridPoints(20, 20);
   SuperRun run(g, StartRule::FirstFace);
@@ -174,7 +174,7 @@ TEST_CASE("Listing 2.6: the walk stops on duplicates, passes through vertices, a
                   std::out_of_range);
 }
 
-TEST_CASE("Listing 2.7: super-triangles give DT(S u S0), and removing them gives DT(S) on this input") {
+TEST_CASE("spine Listing 2.7: super-triangles give DT(S u S0) and removing them gives DT(S) on this input") {
   XY p = dt::uniformPoints(2000, 5);
   SuperRun run(p, StartRule::FirstFace, 1000);
   const CheckReport r = checkTriangulation(run.T);
@@ -191,7 +191,7 @@ TEST_CASE("Listing 2.7: super-triangles give DT(S u S0), and removing them gives
   CHECK(a.size() + 20 >= b.size());  // with corners 1000x away, only a few hull faces can miss
 }
 
-TEST_CASE("2.3.4 Table 2.1: the Delaunay cavity has about 4 triangles on random points") {
+TEST_CASE("spine Table 2.1: the Delaunay cavity has about 4 triangles on random points") {
   // Each insertion creates a ball of |C| + 2 faces, and the mean degree of a vertex tends to 6,
   // so the mean cavity size tends to 4. At n = 20000 the notes print 3.97 (10^4) - 3.99 (10^5);
   // the tolerance covers the seed-to-seed spread measured here (about 0.01).
@@ -201,7 +201,7 @@ TEST_CASE("2.3.4 Table 2.1: the Delaunay cavity has about 4 triangles on random 
   CHECK(run.st.meanCavity() < 4.05);
 }
 
-TEST_CASE("2.3.2 Euler counts: n_f = 2(n-1) - n_h and n_e = 3(n-1) - n_h on DT(S)") {
+TEST_CASE("spine Euler counts: n_f = 2(n-1) - n_h and n_e = 3(n-1) - n_h on DT(S)") {
   struct Case {
     XY p;
     std::size_t nh;  // expected hull vertices (collinear ones included)
@@ -225,7 +225,7 @@ TEST_CASE("2.3.2 Euler counts: n_f = 2(n-1) - n_h and n_e = 3(n-1) - n_h on DT(S
   }
 }
 
-TEST_CASE("the validator rejects what is not a Delaunay triangulation") {
+TEST_CASE("spine the validator rejects what is not a Delaunay triangulation") {
   // Square with a point near the centre... start from a valid DT of 4 points (not cocircular).
   const std::vector<double> xy = {0, 0, 2, 0, 2, 1.5, 0, 2};
   const std::vector<std::array<int, 3>> good = {{0, 1, 2}, {0, 2, 3}};
@@ -247,7 +247,7 @@ TEST_CASE("the validator rejects what is not a Delaunay triangulation") {
   CHECK_FALSE(checkDelaunay(xy, {{0, 1, 2}, {0, 1, 2}}).ok);
 }
 
-TEST_CASE("DT(S) by the hull method on degenerate families, validated exactly") {
+TEST_CASE("spine DT(S) by the hull method on degenerate families is validated exactly") {
   std::vector<XY> families;
   families.push_back(dt::gridPoints(25, 25));
   families.push_back(dt::circlePoints(300));
@@ -276,7 +276,7 @@ TEST_CASE("DT(S) by the hull method on degenerate families, validated exactly") 
   }
 }
 
-TEST_CASE("DT(S) refuses input without a triangulation") {
+TEST_CASE("spine DT(S) refuses input without a triangulation") {
   Triangulation T;
   std::vector<Vertex*> S = {T.addVertex(0, 0, 0), T.addVertex(1, 1, 1), T.addVertex(2, 2, 2),
                             T.addVertex(0, 0, 3)};
