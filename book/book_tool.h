@@ -147,23 +147,27 @@ inline std::string htmlEscape(const std::string& s) {
   return out;
 }
 
-/// Characters that Doxygen's Markdown would read as markup in a page's running text.
-inline std::string markdownEscape(const std::string& s) {
+/// HTML text for a \htmlonly block inside a Markdown table: also the characters that the
+/// table splitter (|) or Markdown emphasis (*, _) would otherwise see.
+inline std::string htmlText(const std::string& s) {
   std::string out;
   for (char c : s) {
-    if (c == '*' || c == '_' || c == '\\' || c == '|' || c == '<' || c == '>' || c == '`' ||
-        c == '@' || c == '#' || c == '[' || c == ']' || c == '$' || c == '%' || c == '&' || c == '"')
-      out += "&#" + std::to_string(static_cast<int>(static_cast<unsigned char>(c))) + ";";
-    else
-      out += c;
+    if (c == '|') out += "&#124;";
+    else if (c == '*') out += "&#42;";
+    else if (c == '_') out += "&#95;";
+    else if (c == '\\') out += "&#92;";
+    else if (c == '@') out += "&#64;";
+    else out += htmlEscape(std::string(1, c));
   }
   return out;
 }
 
 /// The link a page puts where it cites a test: the test's name, pointing at its source line.
+/// Raw HTML (\htmlonly), so that no character of the name is read as markup.
 inline std::string testLink(const TestCase& t) {
-  return "<a href=\"" + sourcePage(t.file) + "#" + lineAnchor(t.line) + "\" class=\"testlink\">" +
-         markdownEscape(t.name) + "</a>";
+  return "\\htmlonly<a href=\"" + sourcePage(t.file) + "#" + lineAnchor(t.line) +
+         "\" class=\"testlink\"><span class=\"testname\">" + htmlText(t.name) +
+         "</span></a>\\endhtmlonly";
 }
 
 // ---- pages --------------------------------------------------------------------------------
@@ -214,7 +218,15 @@ inline std::string substitute(const std::string& text, const std::string& file,
       continue;
     }
     const std::size_t open = i + (val ? 2 : 6);
-    const std::size_t close = text.find('}', open);
+    // The closing brace at depth 0: a test name may hold braces (DT_{n+1}).
+    std::size_t close = std::string::npos;
+    for (std::size_t k = open, depth = 0; k < text.size() && text[k] != '\n'; ++k) {
+      if (text[k] == '{') ++depth;
+      else if (text[k] == '}' && depth-- == 0) {
+        close = k;
+        break;
+      }
+    }
     const std::size_t eol = text.find('\n', open);
     if (close == std::string::npos || (eol != std::string::npos && close > eol)) {
       errors.push_back(file + ":" + std::to_string(line) + ": " + (val ? "@{" : "@test{") +
@@ -245,7 +257,7 @@ inline std::string substitute(const std::string& text, const std::string& file,
   return out;
 }
 
-/// The claims index page (Markdown for Doxygen): one entry per test, grouped by section.
+/// The claims index page (Markdown for Doxygen): one table per section, as raw HTML.
 inline std::string claimsPage(const std::vector<TestCase>& tests, const std::string& id,
                               const std::string& title) {
   std::map<std::string, std::vector<const TestCase*>> bySection;
@@ -256,7 +268,7 @@ inline std::string claimsPage(const std::vector<TestCase>& tests, const std::str
   std::ostringstream o;
   o << "\\page " << id << " " << title << "\n\n"
     << "Every test of the repository, generated from the `TEST_CASE` lines of the files in `tests/` when\n"
-    << "the book is built. A test's name is its section and the claim it checks. The name links to\n"
+    << "the book is built. A test's name is its section and the claim it checks. The link goes to\n"
     << "the test's source line; the command runs that test alone, from the repository's root after\n"
     << "the build (`bash scripts/main.sh`, or `cmake --build build`). `build/dt_tests -sf='*file*'`\n"
     << "runs a whole test file; `ctest --test-dir build` runs them all.\n\n"
@@ -266,20 +278,20 @@ inline std::string claimsPage(const std::vector<TestCase>& tests, const std::str
     const std::string heading = numbered ? "Section " + section : "Tests of " + section.substr(1);
     std::string anchor = "claims_";
     for (char c : heading) anchor += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
-    o << "# " << markdownEscape(heading) << " {#" << anchor << "}\n\n";
-    o << "<table class=\"claims\">\n<tr><th>Claim</th><th>Test, at its source line</th>"
+    o << "# " << heading << " {#" << anchor << "}\n\n";
+    o << "\\htmlonly[block]\n<table class=\"claims\">\n<tr><th>Claim</th><th>Test, at its source line</th>"
          "<th>Run it</th></tr>\n";
     for (const TestCase* t : list) {
       std::string claim = t->name.substr(numbered ? section.size() : 0);
       claim.erase(0, claim.find_first_not_of(" :"));
       const std::string base = t->file.substr(t->file.rfind('/') + 1);
-      o << "<tr><td>\\anchor " << claimAnchor(t->name) << " " << markdownEscape(claim)
-        << "</td><td><a href=\"" << sourcePage(t->file) << "#" << lineAnchor(t->line)
-        << "\" class=\"testlink\">" << markdownEscape(base) << ":" << t->line
-        << "</a></td><td><code>build/dt_tests -tc=&quot;" << markdownEscape(t->name)
+      o << "<tr><td><a id=\"" << claimAnchor(t->name) << "\"></a><span class=\"testname\">"
+        << htmlText(claim) << "</span></td><td><a href=\"" << sourcePage(t->file) << "#" << lineAnchor(t->line)
+        << "\" class=\"testlink\">" << htmlText(base) << ":" << t->line
+        << "</a></td><td><code>build/dt_tests -tc=&quot;" << htmlText(t->name)
         << "&quot;</code></td></tr>\n";
     }
-    o << "</table>\n\n";
+    o << "</table>\n\\endhtmlonly\n\n";
   }
   return o.str();
 }
@@ -584,6 +596,8 @@ inline std::vector<Defect> renderedDefects(const std::string& html) {
   for (const char* el : {"script", "style", "pre", "code"})
     region = dropElements(region, std::string("<") + el, el);
   region = dropElements(region, "<div class=\"fragment\"", "div");
+  // Test names are quoted verbatim (DT_{n+1}, \\snippet): names, not text.
+  region = dropElements(region, "<span class=\"testname\"", "span");
   std::string text = replaceMath(decodeEntities(stripTags(region)), " ");
   std::string flat;
   for (char c : text) flat += (c == '\n' || c == '\t' || c == '\r') ? ' ' : c;
@@ -601,7 +615,9 @@ inline std::vector<Defect> renderedDefects(const std::string& html) {
       {"\\htmlinclude", "raw \\htmlinclude"},
       {"\\ref ", "raw \\ref"},
       {"@{", "unsubstituted @{key}"},
-      {"@test{", "unsubstituted @test{name}"}};
+      {"@test{", "unsubstituted @test{name}"},
+      {"&#", "an HTML character reference shown as typed"},
+      {"&amp;", "an escaped &amp; shown as typed"}};
   std::vector<bool> taken(flat.size(), false);
   for (const auto& [mark, what] : marks) {
     if (!book && mark[0] != '\\' && mark[0] != '@') continue;

@@ -351,7 +351,8 @@ TEST_CASE("book the rendered check finds every kind of raw markup a reader saw")
       {"subscript in a caption (Fig. 2.1)", "<div class=\"caption\">the cavity C(DT_n, p_{n+1})</div>"},
       {"unrendered formula", "<p>the point \\f$p\\f$ here</p>"},
       {"unprocessed snippet", "<p>\\snippet code/mesh.cpp inCircle</p>"},
-      {"unsubstituted value", "<p>N_search is @{s234.nsearch_ours}.</p>"}};
+      {"unsubstituted value", "<p>N_search is @{s234.nsearch_ours}.</p>"},
+      {"entity escaped twice (first claims index)", "<td>eq. (2.1): DT&amp;#95;n</td>"}};
   for (const auto& [what, body] : broken) {
     INFO(what);
     CHECK_FALSE(defectsOf(body).empty());
@@ -393,13 +394,16 @@ TEST_CASE("book an unknown value key or test name stops the page build naming pa
   const std::map<std::string, std::pair<std::string, std::string>> values = {
       {"s234.n", {"1000", "values_x.txt"}}};
   const std::map<std::string, booktool::TestCase> tests = {
-      {"2.1 a claim", {"2.1 a claim", "tests/test_2_1_kernel.cpp", 17}}};
+      {"2.1 a claim", {"2.1 a claim", "tests/test_2_1_kernel.cpp", 17}},
+      {"2.1.3 DT_{n+1} is Delaunay", {"2.1.3 DT_{n+1} is Delaunay", "tests/test_2_1_kernel.cpp", 40}}};
   std::vector<std::string> errors;
   const std::string ok = booktool::substitute("n = @{s234.n}; see @test{2.1 a claim}.", "book/x.md",
                                               values, tests, errors);
   CHECK(errors.empty());
   CHECK(ok.find("n = 1000;") != std::string::npos);
   CHECK(ok.find("test__2__1__kernel_8cpp_source.html#l00017") != std::string::npos);
+  CHECK(booktool::substitute("@test{2.1.3 DT_{n+1} is Delaunay}", "book/x.md", values, tests, errors)
+            .find("#l00040") != std::string::npos);
   booktool::substitute("line one\nn = @{s234.m}\n@test{stale marks}\n@{unclosed\n", "book/x.md",
                        values, tests, errors);
   REQUIRE(errors.size() == 3);
