@@ -15,6 +15,8 @@
 #include <string>
 #include <vector>
 
+#include "../book/book_tool.h"
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -107,9 +109,24 @@ bool producedByAProgram(const std::string& name) {
   return false;
 }
 
-// Page ids and anchors defined by the pages: \page, \section, \subsection, \anchor, {#id}.
+// Every TEST_CASE of tests/*.cpp, as the book build reads them.
+std::vector<booktool::TestCase> allTests() {
+  std::vector<booktool::TestCase> out;
+  for (const fs::path& p : filesIn(kRoot / "tests", ".cpp"))
+    for (const auto& t : booktool::testCases(readAll(p), "tests/" + p.filename().string()))
+      out.push_back(t);
+  return out;
+}
+
+// Page ids and anchors defined by the pages: \page, \section, \subsection, \anchor, {#id};
+// also those of the claims index that the book build generates from the tests.
 std::set<std::string> bookLabels() {
-  std::set<std::string> ids;
+  std::set<std::string> ids = {"claims"};
+  const std::string claims = booktool::claimsPage(allTests(), "claims", "Claims");
+  const std::regex section(R"(\{#([A-Za-z0-9_]+)\})");
+  for (auto it = std::sregex_iterator(claims.begin(), claims.end(), section);
+       it != std::sregex_iterator(); ++it)
+    ids.insert((*it)[1]);
   const std::regex def(R"(\\(?:page|section|subsection|subsubsection|anchor)\s+([A-Za-z0-9_]+))");
   const std::regex brace(R"(\{#([A-Za-z0-9_]+)\})");
   for (const fs::path& p : pages()) {
@@ -320,8 +337,6 @@ TEST_CASE("book every test file documents itself with \\file so that \\ref test_
 
 // ---- the book build's own tools (book/book_tool.h), on deliberately broken input -----------
 
-#include "../book/book_tool.h"
-
 namespace {
 
 // A page as Doxygen 1.9 writes it: header, contents, footer; `body` goes into the contents.
@@ -442,4 +457,23 @@ TEST_CASE("book the link check finds a missing page and a missing anchor") {
   REQUIRE(d.size() == 2);
   CHECK(d[0].context == "a.html#l00099");
   CHECK(d[1].context == "gone.html");
+}
+
+TEST_CASE("book every test a page cites by @test{name} exists") {
+  std::set<std::string> names;
+  for (const auto& t : allTests()) names.insert(t.name);
+  std::map<std::string, std::pair<std::string, std::string>> noValues;
+  std::map<std::string, booktool::TestCase> byName;
+  for (const auto& t : allTests()) byName[t.name] = t;
+  int cited = 0;
+  for (const fs::path& p : pages()) {
+    std::vector<std::string> errors;
+    const std::string text = readAll(p);
+    booktool::substitute(text, "book/" + p.filename().string(), noValues, byName, errors);
+    for (const std::string& e : errors)
+      if (e.find("unknown value key") == std::string::npos) CHECK_MESSAGE(false, e);
+    for (std::size_t at = text.find("@test{"); at != std::string::npos; at = text.find("@test{", at + 1))
+      ++cited;
+  }
+  CHECK(cited > 50);  // the claims tables and the errata cite tests
 }
