@@ -3,6 +3,8 @@
 //     copies BOOK_DIR/*.md into OUT_DIR in the reading order of BOOK_DIR/order.txt, with
 //     @{key} and @test{name} replaced and previous/next links added, and writes the claims
 //     index; fails, naming page and line, on an unknown key or test name.
+//   book_tool prune HTML_DIR
+//     removes the empty "File Reference" pages Doxygen writes for the page files themselves.
 //   book_tool check HTML_DIR
 //     fails on literal markup in the rendered text, too-wide tables and broken local links.
 #include <dirent.h>
@@ -93,17 +95,39 @@ int prepare(const std::string& bookDir, const std::string& valuesDir, const std:
     return 1;
   }
   mkdir(outDir.c_str(), 0755);
+  // Pages of an earlier build whose name or place changed must not be read again.
+  std::set<std::string> current;
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    const std::string base = order[k].file.substr(order[k].file.rfind('/') + 1);
+    char num[24];
+    std::snprintf(num, sizeof num, "%02zu_", k);
+    current.insert(num + base.substr(0, base.rfind('.')) + ".dox");
+  }
   for (const std::string& f : listDir(outDir, ".dox"))
-    if (f != "claims.dox" &&
-        std::find(files.begin(), files.end(), f.substr(0, f.size() - 4) + ".md") == files.end())
-      std::remove((outDir + "/" + f).c_str());
+    if (!current.count(f)) std::remove((outDir + "/" + f).c_str());
+  // Doxygen lists the pages in the order it reads their files, that is by file name: a
+  // number in front of each name gives the side bar the reading order.
   for (std::size_t k = 0; k < order.size(); ++k) {
     std::string name = order[k].file.substr(order[k].file.rfind('/') + 1);
-    name = name.substr(0, name.rfind('.')) + ".dox";
+    char num[24];
+    std::snprintf(num, sizeof num, "%02zu_", k);
+    name = num + name.substr(0, name.rfind('.')) + ".dox";
     writeFile(outDir + "/" + name, booktool::asDoxComment(booktool::withNavigation(order, k), order[k].file));
   }
   std::cout << "book: " << order.size() << " pages, " << values.size() << " values, "
             << tests.size() << " tests\n";
+  return 0;
+}
+
+// Doxygen writes a "File Reference" page for every input file, the book's .dox pages too; no
+// page links to these (they hold nothing), so they are removed from the output.
+int prune(const std::string& htmlDir) {
+  int removed = 0;
+  for (const std::string& f : listDir(htmlDir, "_8dox.html"))
+    if (f.size() > 3 && std::isdigit(static_cast<unsigned char>(f[0])) &&
+        std::isdigit(static_cast<unsigned char>(f[1])) && f[2] == '_')
+      removed += std::remove((htmlDir + "/" + f).c_str()) == 0;
+  std::cout << "book: removed " << removed << " empty file pages of the book's own pages\n";
   return 0;
 }
 
@@ -141,8 +165,10 @@ int main(int argc, char** argv) {
   try {
     const std::string cmd = argc > 1 ? argv[1] : "";
     if (cmd == "prepare" && argc == 6) return prepare(argv[2], argv[3], argv[4], argv[5]);
+    if (cmd == "prune" && argc == 3) return prune(argv[2]);
     if (cmd == "check" && argc == 3) return check(argv[2]);
     std::cerr << "usage: book_tool prepare BOOK_DIR VALUES_DIR TESTS_DIR OUT_DIR\n"
+                 "       book_tool prune HTML_DIR\n"
                  "       book_tool check HTML_DIR\n";
     return 2;
   } catch (const std::exception& e) {

@@ -306,7 +306,7 @@ inline std::string navLine(const std::vector<Page>& order, std::size_t k) {
 }
 
 /// Inserts the navigation after a page's first line and at its end; the main page also gets
-/// the \subpage list that puts the pages in reading order in Doxygen's page tree.
+/// the list of all pages in reading order.
 inline std::string withNavigation(const std::vector<Page>& order, std::size_t k) {
   const std::string& t = order[k].text;
   const auto eol = t.find('\n');
@@ -315,7 +315,7 @@ inline std::string withNavigation(const std::vector<Page>& order, std::size_t k)
   if (k == 0) {
     out += "\n# Contents\n\n";
     for (std::size_t j = 1; j < order.size(); ++j)
-      out += "- \\subpage " + order[j].id + " \"" + order[j].title + "\"\n";
+      out += "- \\ref " + order[j].id + " \"" + order[j].title + "\"\n";
   }
   return out + "\n\n" + navLine(order, k);
 }
@@ -551,8 +551,8 @@ inline double tableMinWidth(const std::string& table) {
 }
 
 /// The width of the content column the check assumes: a 1200-pixel window (the screenshots')
-/// minus Doxygen's side bar and the page margins.
-constexpr double kContentWidth = 900.0;
+/// minus the side bar (TREEVIEW_WIDTH = 420 in the Doxyfile) and the page margins.
+constexpr double kContentWidth = 740.0;
 
 /// True for a page of the book (book_tool gives each one its navigation bar); the API
 /// reference's pages quote C++ signatures and comments, where * and _{ are code.
