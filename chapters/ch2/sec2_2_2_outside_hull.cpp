@@ -137,7 +137,8 @@ void figure(const ch::Options& o) {
   ch::runGnuplot(o, "fig_outside_hull.gp");
 }
 
-void table(const ch::Options& o) {
+void table(const ch::Options& o, ch::Values& v) {
+  double visibleMax = 0;
   const std::size_t n = o.maxN ? std::size_t(o.maxN) : (o.quick ? 5000 : 50000);
   ch::Table t;
   t.caption = "Insertions outside the current hull (2.2.2), n = " + std::to_string(n) +
@@ -175,19 +176,29 @@ void table(const ch::Options& o) {
         if (!vis.empty()) ++outside, visible += vis.size(), cavOut += st.cavityFaces - before;
       }
       const dt::CheckReport r = dt::checkTriangulation(T);
+      const double share = 100.0 * double(outside) / double(inserted);
+      if (outside) visibleMax = std::max(visibleMax, double(visible) / double(outside));
+      if (fam != "circle") {
+        std::string key = fam + "_" + order;
+        for (char& c : key) c = c == ' ' ? '_' : c;
+        v.num("s222.outside_" + key, share, "%.1f%%");
+      }
       t.add({fam, order, ch::fmt("%.2f%%", 100.0 * double(outside) / double(inserted)),
              ch::fmt("%.2f", outside ? double(visible) / double(outside) : 0.0),
              ch::fmt("%.2f", outside ? double(cavOut) / double(outside) : 0.0),
              ch::fmt("%.2f", st.meanCavity()), r.ok && r.nVertices == m ? "yes" : "NO"});
     }
   t.emit(o, "table_outside_hull");
+  v.num("s222.visible_max", visibleMax, "%.2f");
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
   return ch::runMain(argc, argv, "sec2_2_2_outside_hull", [](const ch::Options& o) {
+    ch::Values v(o, "sec2_2_2_outside_hull");
     figure(o);
-    table(o);
+    table(o, v);
+    v.write();
   });
 }

@@ -130,10 +130,21 @@ void figure211(const ch::Options& o) {
 
 // ---- Figure 2.12 ---------------------------------------------------------------------------
 
-void figure212(const ch::Options& o) {
+void figure212(const ch::Options& o, ch::Values& v) {
   for (std::size_t n : {std::size_t(1000), std::size_t(10000)}) {
     const XY p = dt::uniformPoints(n, 2012 + n);
     const std::vector<std::size_t> idx = dt::hilbertOrder(p);
+    // Tour lengths, sorted and in input order, for the page's sentence on Figure 2.12.
+    double sorted = 0, input = 0;
+    for (std::size_t r = 1; r < n; ++r) {
+      sorted += std::hypot(p[2 * idx[r]] - p[2 * idx[r - 1]], p[2 * idx[r] + 1] - p[2 * idx[r - 1] + 1]);
+      input += std::hypot(p[2 * r] - p[2 * r - 2], p[2 * r + 1] - p[2 * r - 1]);
+    }
+    if (n == 10000) {
+      v.num("s235.tour_sqrt", sorted / std::sqrt(double(n)), "%.2f");
+      v.num("s235.tour_input", input / double(n), "%.2f");
+      v.set("s235.tour_n", sci(n));
+    }
     std::ostringstream s;
     s << "# x y rank: " << n << " random points in Hilbert order (depth "
       << dt::hilbertAutoDepth(n) << ")\n";
@@ -147,7 +158,9 @@ void figure212(const ch::Options& o) {
 // ---- Table 2.2 -----------------------------------------------------------------------------
 
 void table22(const ch::Options& o, const std::vector<std::size_t>& sizes,
-             std::size_t checkLimit) {
+             std::size_t checkLimit, ch::Values& v) {
+  double nsLo = 1e300, nsHi = 0;
+  std::vector<std::pair<std::size_t, double>> cav;
   struct NotesRow { double ns, nc, t; };
   const NotesRow notes[] = {{2.34, 4.06, 0.0097}, {2.46, 4.13, 0.090}, {2.50, 4.16, 0.92},
                             {2.50, 4.17, 9.2}};
@@ -181,7 +194,22 @@ void table22(const ch::Options& o, const std::vector<std::size_t>& sizes,
     tab.add(row);
     dat << n << " " << r.nSearch << " " << r.nCavity << " " << r.tTotal << " " << r.tSort << " "
         << 1e6 * r.tTotal / double(n) << "\n";
+    nsLo = std::min(nsLo, r.nSearch);
+    nsHi = std::max(nsHi, r.nSearch);
+    cav.push_back({n, r.nCavity});
     prog.update(++done);
+  }
+  if (!cav.empty()) {
+    v.num("s235.t22_ns_lo", nsLo, "%.2f");
+    v.num("s235.t22_ns_hi", nsHi, "%.2f");
+    v.verdict("s235.t22_ns_verdict", nsHi < 1.5 * nsLo, "stays about constant", "grows");
+    v.set("s235.t22_n_first", sci(cav.front().first));
+    v.set("s235.t22_n_last", sci(cav.back().first));
+    v.num("s235.t22_cav_first", cav.front().second, "%.2f");
+    v.num("s235.t22_cav_last", cav.back().second, "%.2f");
+    const double decades = std::log10(double(cav.back().first) / double(cav.front().first));
+    v.num("s235.t22_cav_per_decade", decades > 0 ? (cav.back().second - cav.front().second) / decades : 0.0, "%.2f");
+    v.verdict("s235.t22_cav_verdict", cav.front().second > 4.3, "does not stay", "stays");
   }
   tab.emit(o, "table2_2");
   ch::writeOut(o, "table2_2.dat", dat.str());
@@ -307,7 +335,13 @@ void brioFigure(const ch::Options& o) {
 }
 
 void brioComparison(const ch::Options& o, const std::vector<std::size_t>& sizes,
-                    std::size_t randomMax, std::size_t checkLimit) {
+                    std::size_t randomMax, std::size_t checkLimit, ch::Values& v) {
+  // For the page: cavities and walks of Hilbert-only and BRIO on the spread-out inputs (all
+  // sizes), and the parabola's Hilbert-only cavities.
+  double hilCavLo = 1e300, hilCavHi = 0, brioCavLo = 1e300, brioCavHi = 0, brioParabola = 0;
+  double walkDiffSum = 0, cavDiffSum = 0;
+  int pairs = 0;
+  std::string parabolaHilbert;
   struct Input { const char* name; XY (*make)(std::size_t, std::uint64_t); };
   const Input inputs[] = {
       {"uniform", [](std::size_t n, std::uint64_t s) { return dt::uniformPoints(n, s); }},
@@ -329,6 +363,7 @@ void brioComparison(const ch::Options& o, const std::vector<std::size_t>& sizes,
     // there (quadratic total), and the next size would take about 100 times longer.
     bool quadratic[3] = {false, false, false};
     for (std::size_t n : sizes) {
+      Run hilbertRun;  // the Hilbert-only run of the same points, for the BRIO comparison
       const XY p = inputs[in].make(n, 1000 + 10 * n + std::size_t(in));
       for (Order ord : {Order::Random, Order::Hilbert, Order::Brio}) {
         if (ord == Order::Random && n > randomMax) continue;
@@ -340,6 +375,23 @@ void brioComparison(const ch::Options& o, const std::vector<std::size_t>& sizes,
         }
         const Run r = triangulate(p, ord, 0, n <= checkLimit);
         quadratic[k] = r.nSearch + r.nCavity > 200;
+        const bool spread = in != 2;
+        if (ord == Order::Hilbert) {
+          if (spread) hilCavLo = std::min(hilCavLo, r.nCavity), hilCavHi = std::max(hilCavHi, r.nCavity);
+          else parabolaHilbert += (parabolaHilbert.empty() ? "" : ", ") + ch::fmt("%.0f at ", r.nCavity) + sci(n);
+          hilbertRun = r;
+        } else if (ord == Order::Brio) {
+          if (spread) {
+            brioCavLo = std::min(brioCavLo, r.nCavity), brioCavHi = std::max(brioCavHi, r.nCavity);
+            if (hilbertRun.nCavity > 0) {  // the Hilbert-only run was not skipped
+              walkDiffSum += r.nSearch - hilbertRun.nSearch;
+              cavDiffSum += hilbertRun.nCavity - r.nCavity;
+              ++pairs;
+            }
+          } else {
+            brioParabola = std::max(brioParabola, r.nCavity);
+          }
+        }
         tab.add({inputs[in].name, sci(n), orderName(ord), ch::fmt("%.2f", r.nSearch),
                  ch::fmt("%.2f", r.nCavity), ch::fmt("%.3g", r.tTotal),
                  ch::fmt("%.2f", 1e6 * r.tTotal / double(n)), r.checked ? "exact" : "no"});
@@ -350,6 +402,14 @@ void brioComparison(const ch::Options& o, const std::vector<std::size_t>& sizes,
     }
   }
   tab.emit(o, "table_brio");
+  v.num("s235.brio_cav_lo", brioCavLo, "%.1f");
+  v.num("s235.brio_cav_hi", brioCavHi, "%.1f");
+  v.num("s235.hil_cav_lo", hilCavLo, "%.1f");
+  v.num("s235.hil_cav_hi", hilCavHi, "%.1f");
+  v.num("s235.brio_walk_extra", pairs ? walkDiffSum / pairs : 0.0, "%.1f");
+  v.num("s235.brio_cav_less", pairs ? cavDiffSum / pairs : 0.0, "%.1f");
+  v.set("s235.parabola_hilbert", parabolaHilbert.empty() ? "not measured" : parabolaHilbert);
+  v.num("s235.parabola_brio", brioParabola, "%.1f");
   std::string all = "# input(0 uniform,1 clustered,2 parabola,3 jittered grid) n "
                     "order(0 random,1 Hilbert,2 BRIO) nsearch ncavity t us_per_point\n";
   for (auto& byInput : dat)
@@ -382,13 +442,13 @@ int main(int argc, char** argv) {
     };
     ch::Values values(o, "sec2_3_5_hilbert");
     figure211(o);
-    figure212(o);
+    figure212(o, values);
     // Every triangulation is checked exactly, outside the timings (about 2 s at 10^6).
-    table22(o, upTo({1000, 10000, 100000, 1000000, 10000000}), 10000000);
+    table22(o, upTo({1000, 10000, 100000, 1000000, 10000000}), 10000000, values);
     depthTable(o, std::min<std::size_t>(maxN, o.quick ? 10000 : 100000));
     keysVersusSort(o, std::min<std::size_t>(maxN, o.quick ? 100000 : 1000000), values);
     brioFigure(o);
-    brioComparison(o, upTo({1000, 10000, 100000, 1000000}), o.quick ? 10000 : 30000, 1000000);
+    brioComparison(o, upTo({1000, 10000, 100000, 1000000}), o.quick ? 10000 : 30000, 1000000, values);
     values.write();
     return 0;
   });
