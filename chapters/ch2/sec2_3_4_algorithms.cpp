@@ -290,7 +290,7 @@ void nsearchVariants(const ch::Options& o, ch::Values& v) {
            notes.count(n) ? ch::fmt("%+.0f%%", 100 * (ns - notes.at(n)) / notes.at(n)) : "-"});
   };
   const Run base = table21Run(n, false);
-  row("as Table 2.1: super-square 10 x the box, returned face counted", base.nSearch);
+  row("Table 2.1's setting: super-square 10 x the box, returned face counted", base.nSearch);
   row("returned face not counted", base.nSearch - 1.0);
   double lo = base.nSearch, hi = base.nSearch;
   for (double f : {1.5, 3.0, 100.0, 1000.0}) {
