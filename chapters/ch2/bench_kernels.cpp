@@ -279,7 +279,7 @@ int main(int argc, char** argv) {
   }
   t.emit(o, "table_bench");
   ch::Values v(o, "bench_kernels");
-  v.set("kernel.n", ch::fmt("%.0e", double(sizes.back())));
+  v.set("kernel.n", std::to_string(sizes.back()));
   if (haveCgal && uniformSpeedup > 0) {
     v.num("kernel.uniform_speedup", uniformSpeedup, "%.2f");
     v.verdict("kernel.speed_target", uniformSpeedup >= 2.0, "met", "missed");
