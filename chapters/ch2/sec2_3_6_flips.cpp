@@ -9,6 +9,7 @@
 //   table_recovery_sizes.*          super-triangle size vs. naive removal, 2.2.1's flips, full rule
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <map>
 #include <random>
 #include <set>
@@ -492,7 +493,9 @@ void tableSizes(const ch::Options& o, ch::Values& v) {
     v.set("s236.sizes_naive_fails_" + key, howMany(naiveFails, int(factors.size())));
     v.set("s236.sizes_notes_fails_" + key, howMany(notesFails, int(factors.size())));
   }
-  v.set("s236.sizes_factors", ch::fmt("%g", factors.front()) + " to " + ch::fmt("%g", factors.back()));
+  const double big = factors.back();
+  v.set("s236.sizes_factors", ch::fmt("%g", factors.front()) + " to " +
+                                  (big >= 1000 ? ch::fmt("10^%.0f", std::log10(big)) : ch::fmt("%g", big)));
   v.verdict("s236.sizes_full_exact", allExact == rows, "exact for every size and family tried",
             "NOT exact on some rows (see the table)");
   t.emit(o, "table_recovery_sizes");
