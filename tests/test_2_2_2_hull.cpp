@@ -60,11 +60,22 @@ TEST_CASE("2.2.2 visible hull edges form one chain seen strictly and none is see
   }
   CHECK(outside > 100);
   for (const dt::Vertex* v : S) CHECK(dt::visibleHullEdges(T, v).empty());
-  // On the supporting line of a hull edge, beyond it: that edge is not seen.
-  const auto& e = H[0];
-  dt::Vertex q(e.b->x + (e.b->x - e.a->x), e.b->y + (e.b->y - e.a->y));
-  if (dt::orientationTest(e.a, e.b, &q) == 0)
-    for (const auto& v : dt::visibleHullEdges(T, &q)) CHECK_FALSE(v.a == e.a);
+  // On the supporting line of a hull edge, beyond it: that edge is not seen. Integer points, so
+  // that q = (8, 0) lies exactly on the line of the hull edge (0,0) -> (4,0).
+  dt::Triangulation Q;
+  const auto SQ = dt::addVertices(Q, {0, 0, 4, 0, 4, 4, 0, 4, 2, 1, 1, 3});
+  dt::delaunayTrglHull(Q, SQ, dt::StartRule::LastCavity);
+  REQUIRE(dt::checkTriangulation(Q).ok);
+  for (const XY& qxy : {XY{8, 0}, XY{-3, 0}}) {
+    CAPTURE(qxy[0]);
+    dt::Vertex q(qxy[0], qxy[1]);
+    REQUIRE(dt::orientationTest(SQ[0], SQ[1], &q) == 0);
+    const auto V = dt::visibleHullEdges(Q, &q);
+    REQUIRE(V.size() == 1);  // only the side x = 4 (from the right) or x = 0 (from the left)
+    CHECK_FALSE(V[0].a == SQ[0]);
+    CHECK(V[0].a->x == V[0].b->x);
+    CHECK(V[0].a->x == (qxy[0] > 0 ? 4 : 0));
+  }
 }
 
 TEST_CASE("2.2.2 every point outside the hull (lexicographic order) is inserted exactly") {
@@ -134,8 +145,13 @@ TEST_CASE("2.2.2 collinear starting points and points on hull supporting lines")
     std::vector<dt::Vertex*> sofar(S.begin(), S.begin() + long(i) + 1);
     checkHull(T, sofar);
   }
-  // (-1,0), (0,0), (0.5,0), (1,0), (2,0), (3,0) all lie on the lower hull line: all hull vertices.
-  CHECK(dt::convexHull(T).size() >= 6);
+  // The hull of the 14 points, by brute force beside the test: (1,-3) pulls the bottom below
+  // y = 0, so of the points on that line only (-1,0) and (3,0) remain on the hull.
+  std::set<std::pair<double, double>> hull;
+  for (const dt::Vertex* v : dt::convexHull(T)) hull.insert({v->x, v->y});
+  const std::set<std::pair<double, double>> expected = {{-1, 0}, {-1, 1}, {0, 5}, {1, -3},
+                                                        {3, 0},  {3, 1},  {3, 3}};
+  CHECK(hull == expected);
 }
 
 TEST_CASE("2.2.2 the sweep triangulation (plain outside-hull insertions) is a valid triangulation") {

@@ -1,9 +1,11 @@
 /// \file test_2_3_4_algorithms.cpp Claims of section 2.3.4: computeAdjacencies (Listing 2.4), Table 2.1 (N_search like sqrt(n), N_cavity tends to 4), the ball of |C| + 2 triangles, and the parabola worst case.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <map>
+#include <set>
 #include <stdexcept>
 
 #include "adjacency.h"
@@ -114,6 +116,8 @@ TEST_CASE("2.3.4 exercise 2: the last point's cavity has deg(p) - 2 faces; their
   const std::size_t n = p.size() / 2;
   double meanLast = 0;
   std::array<double, 2> backward{};
+  double D = 0;
+  std::set<const dt::Vertex*> superSeen;
   for (std::size_t last = 0; last < n; last += 1) {
     // Insert every point but `last`, then `last`: its cavity is its star minus 2.
     dt::Triangulation T;
@@ -132,25 +136,60 @@ TEST_CASE("2.3.4 exercise 2: the last point's cavity has deg(p) - 2 faces; their
     if (last == 0) {
       REQUIRE(dt::checkTriangulation(T).ok);
       backward = dt::backwardCavityMean(T);  // DT(S0 u S) is the same whatever the order
+      // D, the degree of the four super vertices, counted from their stars.
+      for (dt::Face& f : T.faces())
+        for (const dt::Vertex* s : f.V)
+          if (s->id < 0 && !superSeen.count(s)) {
+            superSeen.insert(s);
+            D += double(dt::vertexStar(&f, s).size());
+          }
     }
   }
-  // Random points: no four cocircular, so every order gives the same triangulation.
+  // Random points: no four cocircular, so every order gives the same triangulation, and the
+  // mean of the measured last-point cavities is 4 + (6 - D)/n.
+  REQUIRE(superSeen.size() == 4);
+  CHECK(D == backward[1]);
   CHECK(meanLast == doctest::Approx(backward[0]).epsilon(1e-12));
-  CHECK(backward[0] == doctest::Approx(4 + (6 - backward[1]) / double(n)).epsilon(1e-12));
+  CHECK(meanLast == doctest::Approx(4 + (6 - D) / double(n)).epsilon(1e-12));
 }
 
 TEST_CASE("2.3.4 N_search counts the faces lineSearch visits including the face it returns") {
+  // One insertion whose first face already has v in its circle: N_search = 1, not 0.
   dt::Triangulation T;
   dt::initSuperTriangles(T, 0, 0, 1, 1);
   dt::Vertex* v = T.addVertex(0.5, 0.5, 0);
-  dt::SearchInfo info;
-  dt::Face* f = dt::lineSearch(&T.faces().front(), v, &info);
-  REQUIRE(f != nullptr);
-  CHECK(info.steps == 1);  // the first face already contains v in its circle
-  dt::Vertex* w = T.addVertex(0.9, 0.1, 1);
   dt::InsertionStats st;
-  dt::delaunayTrgl(T, {v, w}, dt::StartRule::FirstFace, &st);
-  CHECK(st.searchSteps >= 2);  // at least one face per insertion
+  dt::delaunayTrgl(T, {v}, dt::StartRule::FirstFace, &st);
+  CHECK(st.insertions == 1);
+  CHECK(st.searchSteps == 1);
+  // A strip of 2K triangles between y = 0 and y = 1 (top row shifted by 1/2: one Delaunay
+  // triangulation). A walk from the leftmost triangle towards a point near the right end
+  // crosses the triangles in the order of their centroids, so it visits exactly the first
+  // triangle (in that order) whose circle contains the point, and every one before it:
+  // counted here by brute force, without the walk.
+  const int K = 40;
+  dt::XY p;
+  for (int i = 0; i <= K; ++i) p.insert(p.end(), {double(i), 0.0});
+  for (int i = 0; i < K; ++i) p.insert(p.end(), {i + 0.5, 1.0});
+  dt::Triangulation S;
+  dt::delaunayTrglHull(S, dt::addVertices(S, p), dt::StartRule::LastCavity);
+  REQUIRE(dt::checkTriangulation(S).ok);
+  std::vector<dt::Face*> strip;
+  for (dt::Face& f : S.faces())
+    if (!f.isGhost()) strip.push_back(&f);
+  REQUIRE(strip.size() == std::size_t(2 * K - 1));
+  auto cx = [](const dt::Face* f) { return f->V[0]->x + f->V[1]->x + f->V[2]->x; };
+  std::sort(strip.begin(), strip.end(), [&](const dt::Face* a, const dt::Face* b) { return cx(a) < cx(b); });
+  for (double tx : {K - 0.3, K / 2.0 + 0.1, 3.2}) {
+    CAPTURE(tx);
+    dt::Vertex target(tx, 0.4);
+    std::size_t first = 0;
+    while (first < strip.size() && !strip[first]->inCircle(&target)) ++first;
+    REQUIRE(first < strip.size());
+    dt::SearchInfo info;
+    CHECK(dt::lineSearch(strip[0], &target, &info) == strip[first]);
+    CHECK(info.steps == first + 1);
+  }
 }
 
 TEST_CASE("2.3.4 worst case: points on a parabola towards its apex give cavities of O(i) faces") {

@@ -105,7 +105,6 @@ TEST_CASE("errata Listing 2.7: every face of every Delaunay ball is counter-cloc
       const Edge& e = scratch.bnd[i];
       ++built;
       if (orientationTest(e.V[0], e.V[1], s) <= 0) ++clockwise;
-      // What the printed (vmin, vmax) order would have produced, for comparison.
     }
   }
   CHECK(built == st.cavityFaces + 2 * st.insertions);  // |ball| = |C| + 2 at every insertion

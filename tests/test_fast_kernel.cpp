@@ -181,9 +181,9 @@ TEST_CASE("fast kernel filters send exactly the degenerate tests to the exact st
   CHECK(d.tri.size() == 2 * 39 * 39);
   const dt::FastResult c = fastChecked(dttest::circlePoints(2000));
   CHECK(c.stats.exactIncircle > 0);
-  // The mean cavity of random points is about 4 triangles (2.3.4, Table 2.2: 4.06 to 4.17);
-  // ghost triangles and BRIO rounds keep it within a few percent of that.
-  CHECK(double(u.stats.cavityFaces) / double(u.stats.insertions) == doctest::Approx(4.1).epsilon(0.05));
+  // The mean cavity of 5000 random points (ghost triangles and BRIO rounds included), measured
+  // over seeds 10-19: 4.015 to 4.080. The bounds are that spread doubled around its middle.
+  CHECK(double(u.stats.cavityFaces) / double(u.stats.insertions) == doctest::Approx(4.05).epsilon(0.02));
 }
 
 TEST_CASE("fast kernel delaunay2d --kernel fast (the default) and --kernel listings write the same DT(S)") {

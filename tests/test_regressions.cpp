@@ -55,3 +55,21 @@ TEST_CASE("regressions fuzz 2: a subnormal difference vanished in the small-mult
   CHECK(dt::orient2d(0, tiny, x, y, 0, 0) == -1);
   CHECK(dt::orient2d(x, y, 0, tiny, 0, 0) == 1);
 }
+
+TEST_CASE("regressions oracle 1: a lattice rectangle near 2^255 overflowed incircle's semi-static filter") {
+  // Found by the independent oracle (tests/oracle.h, 2.3.1 exactness tests): the four corners
+  // of a rectangle, exactly cocircular. M (the largest difference) is about 2^256, M^4 is still
+  // finite, but a lift times a minor overflowed to -infinity, and -det > 134u M^4 held: the
+  // filter answered -1. Fixed by requiring M < 2^254 in that filter (predicates_inline.h).
+  const double v[8] = {0x1.8p+249, -0x1.2b8p+255, 0x1.a8p+255, -0x1.2b8p+255,
+                       0x1.8p+249, 0x1.69p+254,   0x1.a8p+255, 0x1.69p+254};
+  CHECK(dt::incircle(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]) == 0);
+  CHECK(dt::incircleExact(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]) == 0);
+  // The same rectangle at every scale up to overflow: never a wrong sign.
+  for (int e = 200; e <= 766; ++e) {
+    CAPTURE(e);
+    double w[8];
+    for (int i = 0; i < 8; ++i) w[i] = std::ldexp(v[i], e - 255);
+    CHECK(dt::incircle(w[0], w[1], w[2], w[3], w[4], w[5], w[6], w[7]) == 0);
+  }
+}
