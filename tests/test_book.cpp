@@ -1,4 +1,4 @@
-/// \file test_book.cpp Static checks of the book's pages (book/*.md): every image, table, snippet and reference resolves, and no formula is left unrendered.
+/// \file test_book.cpp Checks of the book: its pages (book/*.md) resolve every image, table, snippet, reference and cited test, and the book build's own tools (book/book_tool.h) catch raw markup, too-wide tables, broken links and unknown values on deliberately broken pages.
 //
 // The checks read the sources only, so the suite does not need the book (or the chapter
 // programs' outputs) to be built. An embedded figure or table must be either in the
