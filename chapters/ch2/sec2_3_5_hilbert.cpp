@@ -378,7 +378,7 @@ void brioComparison(const ch::Options& o, const std::vector<std::size_t>& sizes,
         const bool spread = in != 2;
         if (ord == Order::Hilbert) {
           if (spread) hilCavLo = std::min(hilCavLo, r.nCavity), hilCavHi = std::max(hilCavHi, r.nCavity);
-          else parabolaHilbert += (parabolaHilbert.empty() ? "" : ", ") + ch::fmt("%.0f at ", r.nCavity) + sci(n);
+          else parabolaHilbert += (parabolaHilbert.empty() ? "" : ", ") + ch::fmt("%.0f at \\f$n = ", r.nCavity) + sci(n) + "\\f$";
           hilbertRun = r;
         } else if (ord == Order::Brio) {
           if (spread) {
