@@ -477,3 +477,27 @@ TEST_CASE("book every test a page cites by @test{name} exists") {
   }
   CHECK(cited > 50);  // the claims tables and the errata cite tests
 }
+
+TEST_CASE("book every value a page cites by @{key} is written by a chapter program") {
+  // The book build stops on a key that no values file holds; this catches a misspelt key
+  // without running the programs. A key is found if a chapter program names it, or names the
+  // prefix it is built from (e.g. "s236.sizes_naive_fails_" + family).
+  std::string sources;
+  for (const fs::path& p : filesIn(kRoot / "chapters" / "ch2", ".cpp")) sources += readAll(p);
+  const std::regex key(R"(@\{([A-Za-z0-9_.]+)\})");
+  int keys = 0;
+  for (const fs::path& p : pages()) {
+    const std::string text = readAll(p);
+    for (auto it = std::sregex_iterator(text.begin(), text.end(), key); it != std::sregex_iterator(); ++it) {
+      const std::string k = (*it)[1];
+      ++keys;
+      bool found = sources.find("\"" + k + "\"") != std::string::npos;
+      for (std::size_t cut = k.find_last_of("_."); !found && cut != std::string::npos;
+           cut = cut == 0 ? std::string::npos : k.find_last_of("_.", cut - 1))
+        found = sources.find("\"" + k.substr(0, cut + 1) + "\"") != std::string::npos;
+      CHECK_MESSAGE(found, "book/" << p.filename().string() << ": @{" << k
+                                   << "} is named by no chapter program");
+    }
+  }
+  CHECK(keys > 30);
+}
