@@ -26,7 +26,7 @@ inline double segDistance(const Seg& s, double x, double y) {
   return std::hypot(x - s.x0 - t * dx, y - s.y0 - t * dy);
 }
 
-/// The centre of the label of the point (x, y): among 24 directions, about `r` away, the one
+/// The centre of the label of the point (x, y): among 24 directions, about `r` (or 2.2 r) away, the one
 /// whose text box (half width `hw`, half height `hh`, in data units) stays farthest from every
 /// segment of `segs` and every point of `avoid` (x, y pairs). Ties go to the upper right.
 inline std::pair<double, double> labelSpot(double x, double y, double r, double hw, double hh,
@@ -34,21 +34,23 @@ inline std::pair<double, double> labelSpot(double x, double y, double r, double 
                                            const std::vector<double>& avoid = {}) {
   std::pair<double, double> best = {x + r, y + r};
   double bestScore = -1;
-  for (int k = 0; k < 24; ++k) {
-    const double a = M_PI / 4 + 2 * M_PI * k / 24;
-    // The box's centre on an ellipse, so that its near side is about r from the point: a
-    // wide label needs more room sideways than up or down.
-    const double cx = x + (r + hw) * std::cos(a), cy = y + (r + hh) * std::sin(a);
-    double score = 1e300;
-    for (double fx : {-1.0, 0.0, 1.0})
-      for (double fy : {-1.0, 0.0, 1.0}) {
-        const double px = cx + fx * hw, py = cy + fy * hh;
-        for (const Seg& s : segs) score = std::min(score, segDistance(s, px, py));
-        for (std::size_t i = 0; i + 1 < avoid.size(); i += 2)
-          score = std::min(score, std::hypot(px - avoid[i], py - avoid[i + 1]));
-      }
-    if (score > bestScore + 1e-12) bestScore = score, best = {cx, cy};
-  }
+  for (int ring = 0; ring < 2; ++ring)  // near the point first; farther if the near ring is crowded
+    for (int k = 0; k < 24; ++k) {
+      const double a = M_PI / 4 + 2 * M_PI * k / 24, rr = ring ? 2.2 * r : r;
+      // The box's centre on an ellipse, so that its near side is about rr from the point: a
+      // wide label needs more room sideways than up or down.
+      const double cx = x + (rr + hw) * std::cos(a), cy = y + (rr + hh) * std::sin(a);
+      double score = 1e300;
+      for (double fx : {-1.0, 0.0, 1.0})
+        for (double fy : {-1.0, 0.0, 1.0}) {
+          const double px = cx + fx * hw, py = cy + fy * hh;
+          for (const Seg& s : segs) score = std::min(score, segDistance(s, px, py));
+          for (std::size_t i = 0; i + 1 < avoid.size(); i += 2)
+            score = std::min(score, std::hypot(px - avoid[i], py - avoid[i + 1]));
+        }
+      if (ring) score = std::min(score, 0.5 * r);  // a far label only wins if no near one is clear
+      if (score > bestScore + 1e-12) bestScore = score, best = {cx, cy};
+    }
   return best;
 }
 
@@ -77,6 +79,19 @@ inline std::string gnuplotSegs(const std::vector<Seg>& segs) {
     out += buf;
   }
   return out;
+}
+
+/// A circle as a closed polyline (gnuplot data, one block): gnuplot's "with circles" drops a
+/// circle whose centre is outside the view, a polyline is clipped like any line.
+inline std::string circlePolyline(double cx, double cy, double r, int n = 240) {
+  std::string out;
+  char buf[96];
+  for (int i = 0; i <= n; ++i) {
+    const double t = 2 * M_PI * i / n;
+    std::snprintf(buf, sizeof buf, "%.10g %.10g\n", cx + r * std::cos(t), cy + r * std::sin(t));
+    out += buf;
+  }
+  return out + "\n";
 }
 
 /// gnuplotSegs(triangleSegs(xy, tri)): a triangulation with each edge once.

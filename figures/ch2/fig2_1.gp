@@ -9,6 +9,7 @@ set xrange [STATS_min_x - m:STATS_max_x + m]
 set yrange [STATS_min_y - m:STATS_max_y + m]
 do for [term in "png svg"] {
   eval fig_open(term, "fig2_1")
+  set output (term eq "png" ? outdir."/fig2_1.png" : outdir."/fig2_1.svg")
   eval layout(1, 2)
   eval panel(1, "DT_n")
   plot datadir."/fig2_1_dtn.dat" with lines lw 1.5 lc rgb C_TRI, \

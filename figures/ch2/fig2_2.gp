@@ -18,6 +18,7 @@ set arrow 1 from X0 + 0.45, Y0 + 0.45 to 0.5 * (kx + lx), 0.5 * (ky + ly) lw 1.5
 set label 1 "ker(Σ)" at X0 + 0.2, Y0 + 0.38 tc rgb C_CAVITY_EDGE front
 do for [term in "png svg"] {
   eval fig_open(term, "fig2_2")
+  set output (term eq "png" ? outdir."/fig2_2.png" : outdir."/fig2_2.svg")
   plot datadir."/fig2_2_polygon.dat" with filledcurves closed fc rgb C_HULL fs solid 1.0, \
        datadir."/fig2_2_lines.dat" with lines lw 1.2 dt 3 lc rgb C_CONSTRUCT, \
        datadir."/fig2_2_kernel.dat" with filledcurves closed fc rgb C_CAVITY fs solid 1.0, \

@@ -15,6 +15,7 @@ stats datadir."/fig2_3_chain.dat" nooutput
 nchain = STATS_blocks
 do for [term in "png svg"] {
   eval fig_open(term, "fig2_3")
+  set output (term eq "png" ? outdir."/fig2_3.png" : outdir."/fig2_3.svg")
   eval layout(1, 2)
   eval panel(1, "the segment p_3 p_{n+1}")
   set xrange [cx0:cx1]

@@ -11,6 +11,7 @@ set xrange [vx0:vx1]
 set yrange [vy0:vy1]
 do for [term in "png svg"] {
   eval fig_open(term, "fig2_4")
+  set output (term eq "png" ? outdir."/fig2_4.png" : outdir."/fig2_4.svg")
   plot datadir."/fig2_1_cavity.dat" with filledcurves closed fc rgb C_BALL fs solid 1.0, \
        datadir."/fig2_4_outside.dat" with filledcurves closed fc rgb C_NEIGH fs solid 1.0, \
        datadir."/fig2_4_newtri.dat" with filledcurves closed fc rgb C_BALL_EDGE fs transparent solid 0.25, \

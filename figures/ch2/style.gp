@@ -45,13 +45,15 @@ figh(n) = fig_word(n, 3)
 fig_font(t, w) = (t eq "svg" ? w / 50.0 : w / 66.6)
 
 # The command that opens figure `n` on terminal `t` ("png" or "svg"): white background, the
-# style's size and font, output outdir/n.t; it also sets FS (the font size) for scripts that
+# style's size and font. The script then sets the output with the file name written out,
+#   set output (term eq "png" ? outdir."/n.png" : outdir."/n.svg")
+# so that chapters/common.h (gnuplotOutputs) knows which files it promises. It sets FS (the font size) for scripts that
 # need a label font relative to the text, e.g. font sprintf(",%g", 1.2 * FS), and FW, FH (the
 # size in pixels).
 fig_open(t, n) = (fig_known(n) ? "" : "print 'style.gp: figure ".n." has no size in FIGSIZES'; exit status 1;") . \
   sprintf("set terminal %s size %d,%d enhanced font 'Sans,%.1f' background rgb 'white' linewidth %.2f; ", \
           (t eq "svg" ? "svg" : "pngcairo"), figw(n), figh(n), fig_font(t, figw(n)), figw(n) / 1000.0) . \
-  sprintf("set output '%s/%s.%s'; FS = %.1f; FW = %d; FH = %d", outdir, n, t, fig_font(t, figw(n)), figw(n), figh(n))
+  sprintf("FS = %.1f; FW = %d; FH = %d", fig_font(t, figw(n)), figw(n), figh(n))
 
 # ---- colours: one meaning each, in every figure -------------------------------------------
 C_TRI = "#3c3c3c"            # edges of the triangulation
