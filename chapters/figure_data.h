@@ -68,6 +68,21 @@ inline std::vector<Seg> triangleSegs(const std::vector<double>& xy,
   return s;
 }
 
+/// The edges of faces (anything with vertex pointers V[0..2] that have x and y, e.g. dt::Face),
+/// each edge once.
+template <class Faces>
+std::vector<Seg> faceSegs(const Faces& F) {
+  std::map<std::pair<const void*, const void*>, bool> seen;
+  std::vector<Seg> segs;
+  for (const auto* f : F)
+    for (int k = 0; k < 3; ++k) {
+      const auto *a = f->V[k], *b = f->V[(k + 1) % 3];
+      const void *pa = a, *pb = b;
+      if (seen.emplace(std::minmax(pa, pb), true).second) segs.push_back({a->x, a->y, b->x, b->y});
+    }
+  return segs;
+}
+
 /// Segments as gnuplot data, one block per segment. A triangulation drawn from this has every
 /// edge drawn once: with closed triangles an inner edge is drawn twice and, antialiased, looks
 /// darker than a hull edge.

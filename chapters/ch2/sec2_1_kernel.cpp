@@ -277,7 +277,7 @@ void figures21to24(const ch::Options& o) {
 
   // Figure 2.3, in the notes' names: the chain p2p3p4 -> p2p4p5 -> p2p5p1 -> p1p5p6 met by the
   // segment p3 p_{n+1}, and its first step: C_I (circle of p2p3p4) beyond p2p4 lies in C_J
-  // (circle of p2p4p5). If no candidate had that shape, the longest chain is drawn unnamed.
+  // (circle of p2p4p5).
   std::vector<dt::Face*> chain;
   const dt::Vertex* apex = nullptr;
   for (dt::Face* f : C)
@@ -288,6 +288,8 @@ void figures21to24(const ch::Options& o) {
     }
   if (chain.size() < 2) throw std::runtime_error("Figure 2.3: no chain of two cavity triangles");
   const std::vector<const dt::Vertex*> names = notesNames(chain);
+  if (names.size() != 7)  // the seeds are fixed: this only fails if the search above changes
+    throw std::runtime_error("Figure 2.3: no chain of the notes' shape p2p3p4 -> p2p4p5 -> p2p5p1 -> p1p5p6");
   std::string chainText, nameText;
   for (const dt::Face* f : chain) chainText += triangleBlock(f);
   if (chainText.size() >= 2) chainText.resize(chainText.size() - 2);  // no empty last index
@@ -326,7 +328,7 @@ void figures21to24(const ch::Options& o) {
     for (const dt::Face* f : {d1, d2})
       for (int e = 0; e < 3; ++e) drawnZ.push_back({f->V[e]->x, f->V[e]->y, f->V[(e + 1) % 3]->x, f->V[(e + 1) % 3]->y});
     std::vector<double> taken;  // vertex positions, and the labels placed so far
-    for (std::size_t i = 2; i < 6; ++i) taken.insert(taken.end(), {names[i]->x, names[i]->y});
+    for (std::size_t i = 2; i < 6; ++i) taken.push_back(names[i]->x), taken.push_back(names[i]->y);
     // A circle's label: just outside it, at the angle farthest from the other circle, the
     // segments and the vertices.
     auto circleLabel = [&](const Circle& c, const Circle& other, const char* name) {

@@ -93,16 +93,7 @@ void figure210(const ch::Options& o) {
   std::set<const dt::Face*> cavity, outer;
   std::string before, cav;
   // Each edge once (a closed triangle draws an inner edge twice, darker than a hull edge).
-  auto edgesOf = [](const auto& faces) {
-    std::set<std::pair<const dt::Vertex*, const dt::Vertex*>> seen;
-    std::vector<ch::Seg> segs;
-    for (const dt::Face* f : faces)
-      for (int k = 0; k < 3; ++k) {
-        const dt::Vertex *a = f->V[k], *b = f->V[(k + 1) % 3];
-        if (seen.insert(std::minmax(a, b)).second) segs.push_back({a->x, a->y, b->x, b->y});
-      }
-    return ch::gnuplotSegs(segs);
-  };
+  auto edgesOf = [](const auto& faces) { return ch::gnuplotSegs(ch::faceSegs(faces)); };
   std::vector<const dt::Face*> beforeFaces;
   for (const dt::Face* f : T.finiteFaces()) {
     beforeFaces.push_back(f);

@@ -49,15 +49,7 @@ bool meshIsDT(const dt::Triangulation& T, std::size_t n) {
 }
 
 // gnuplot helpers: triangles as closed polylines, filled polygons and labels as "set object".
-std::string triData(const std::vector<const dt::Face*>& F) {
-  std::ostringstream s;
-  s.precision(17);
-  for (const dt::Face* f : F) {
-    for (int k = 0; k <= 3; ++k) s << f->V[k % 3]->x << " " << f->V[k % 3]->y << "\n";
-    s << "\n";
-  }
-  return s.str();
-}
+std::string triData(const std::vector<const dt::Face*>& F) { return ch::gnuplotSegs(ch::faceSegs(F)); }
 std::string polygon(int& id, const std::vector<const dt::Vertex*>& P, const char* color) {
   std::ostringstream s;
   s.precision(17);
@@ -74,17 +66,6 @@ std::string segment(const dt::Vertex* a, const dt::Vertex* b, const char* color,
   s << "set arrow from " << a->x << "," << a->y << " to " << b->x << "," << b->y
     << " nohead lc rgb \"" << color << "\" lw " << lw << " dt " << dash << " front\n";
   return s.str();
-}
-// The edges of faces, each once, as segments for ch::labelSpot.
-std::vector<ch::Seg> faceSegs(const std::vector<const dt::Face*>& F) {
-  std::set<std::pair<const dt::Vertex*, const dt::Vertex*>> seen;
-  std::vector<ch::Seg> segs;
-  for (const dt::Face* f : F)
-    for (int k = 0; k < 3; ++k) {
-      const dt::Vertex *a = f->V[k], *b = f->V[(k + 1) % 3];
-      if (seen.insert(std::minmax(a, b)).second) segs.push_back({a->x, a->y, b->x, b->y});
-    }
-  return segs;
 }
 // A label beside v where no segment of `segs` crosses it (em: the text height in data units).
 // `taken`: points to keep clear (other vertices, labels placed before); this one is added.
@@ -152,7 +133,7 @@ void figureFlip(const ch::Options& o) {
       }
     }
     obj += segment(e0, e1, after ? "#2e7d32" : "#c51b7d", 3.5);
-    const std::vector<ch::Seg> segs = faceSegs(T.finiteFaces());
+    const std::vector<ch::Seg> segs = ch::faceSegs(T.finiteFaces());
     std::vector<double> taken;
     for (int i = 0; i < 4; ++i) {
       const dt::Vertex* v = S[std::size_t(i)];
@@ -289,7 +270,7 @@ void figureRecovery(const ch::Options& o) {
     // The super-vertices and the four vertices of the frame's flip (its title names them) are
     // labelled, off this frame's edges; the text em is about 6% of the view. (All nine points
     // would not fit: some lie closer together than a label is wide.)
-    std::vector<ch::Seg> segs = faceSegs(F);
+    std::vector<ch::Seg> segs = ch::faceSegs(F);
     if (e0) segs.push_back({e0->x, e0->y, e1->x, e1->y});
     std::vector<double> taken;
     for (const dt::Vertex& v : R.vertices()) taken.insert(taken.end(), {v.x, v.y});
