@@ -1,5 +1,6 @@
 # Figure 2.11: the curves H1 and H2, with the local frames of Listing 2.8: each quadrant's
-# centre x0 (black dot), red half-side r (red arrow) and blue half-side b (blue arrow).
+# centre x0 (black dot), red half-side r (red arrow) and blue half-side b (blue arrow); each
+# cell labelled with its Hilbert coordinates (in H_2 without parentheses, to fit).
 # Data (sec2_3_5_hilbert): fig2_11_h{1,2}.dat (cell centres in curve order, with their
 # Hilbert coordinates), fig2_11_frames{1,2}.dat (x0 y0 xRed yRed xBlue yBlue).
 load system("dirname '".ARG0."'")."/style.gp"
@@ -25,7 +26,7 @@ do for [term in "png svg"] {
          f using ($1+$3*0.6+$5*0.14):($2+$4*0.6+$6*0.14):("r") with labels tc rgb C_NEW, \
          f using ($1+$5*0.6+$3*0.14):($2+$6*0.6+$4*0.14):("b") with labels tc rgb C_NEIGH_EDGE, \
          f using ($1-0.035):($2-0.035):("x_0") with labels, \
-         c using ($1+(k == 1 ? 0.1 : 0.075)):($2-(k == 1 ? 0.08 : 0.068)):3 with labels tc rgb "#505050"
+         c using ($1+(k == 1 ? 0.1 : 0.07)):($2-(k == 1 ? 0.08 : 0.068)):(k == 1 ? strcol(3) : substr(strcol(3), 2, strlen(strcol(3)) - 1)) with labels tc rgb "#505050"
   }
   unset multiplot
 }
