@@ -32,13 +32,17 @@ do for [pass=0:1] {
   }
   set title system(sprintf("sed -n '%dp' '%s/fig2_5_anim_titles.dat'", f + 1, datadir))
   stem = datadir.sprintf("/fig2_5_anim_%02d", f)
-  fillc = (f % 2 == 1) ? C_CAVITY : C_BALL
-  edgec = (f % 2 == 1) ? C_CAVITY_EDGE : C_BALL_EDGE
+  # Cavity frames are odd, ball frames even (frame 0: DT_0). Each colour is its own plot
+  # element, filtered by the frame's parity: gnuplot's gif terminal keeps the first colour an
+  # element had through the whole animation.
+  cav = (f % 2 == 1); bal = (f > 0 && f % 2 == 0)
   npoints = (f + 1) / 2
-  plot (f == 0 ? datadir."/fig2_5_super.dat" : stem."_fill.dat") using 1:(f == 0 ? NaN : $2) with filledcurves closed fc rgb fillc fs solid 1.0 notitle, \
+  plot (f == 0 ? datadir."/fig2_5_super.dat" : stem."_fill.dat") using 1:(cav ? $2 : NaN) with filledcurves closed fc rgb C_CAVITY fs solid 1.0 notitle, \
+       (f == 0 ? datadir."/fig2_5_super.dat" : stem."_fill.dat") using 1:(bal ? $2 : NaN) with filledcurves closed fc rgb C_BALL fs solid 1.0 notitle, \
        stem."_circles.dat" using 1:2 with lines lw 1.5 dt 2 lc rgb C_CIRCLE notitle, \
        stem."_tri.dat" with lines lw 1.5 lc rgb C_TRI notitle, \
-       (f == 0 ? datadir."/fig2_5_super.dat" : stem."_fill.dat") using 1:(f == 0 ? NaN : $2) with lines lw 2.5 lc rgb edgec notitle, \
+       (f == 0 ? datadir."/fig2_5_super.dat" : stem."_fill.dat") using 1:(cav ? $2 : NaN) with lines lw 2.5 lc rgb C_CAVITY_EDGE notitle, \
+       (f == 0 ? datadir."/fig2_5_super.dat" : stem."_fill.dat") using 1:(bal ? $2 : NaN) with lines lw 2.5 lc rgb C_BALL_EDGE notitle, \
        datadir."/fig2_5_super.dat" using 1:2 with points pt 5 ps 1.2 lc rgb C_SUPER notitle, \
        datadir."/fig2_5_super.dat" using 16:17:3 with labels tc rgb C_SUPER notitle, \
        datadir."/fig2_5_points.dat" using 1:2 with points pt 6 ps 1.2 lc rgb "#808080" notitle, \
