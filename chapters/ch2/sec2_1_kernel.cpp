@@ -266,7 +266,7 @@ void figures21to24(const ch::Options& o) {
   // Label sizes in data units: the panels show about 1.25 units across 650 px, em 28 px.
   const double em = 0.05;
   {
-    const auto [lx, ly] = ch::labelSpot(p->x, p->y, 0.6 * em, 1.2 * em, 0.5 * em, dtnSegs);
+    const auto [lx, ly] = ch::labelSpot(p->x, p->y, 0.9 * em, 1.2 * em, 0.5 * em, dtnSegs);
     ch::writeOut(o, "fig2_1_p.dat", num(p->x) + " " + num(p->y) + " " + num(lx) + " " + num(ly) + "\n");
   }
   ch::writeOut(o, "fig2_1_dtn.dat", ch::gnuplotSegs(dtnSegs));
@@ -303,13 +303,13 @@ void figures21to24(const ch::Options& o) {
   std::vector<ch::Seg> drawn3 = dtnSegs;
   drawn3.push_back({apex->x, apex->y, p->x, p->y});
   for (std::size_t i = 1; i < names.size(); ++i) {
-    const auto [lx, ly] = ch::labelSpot(names[i]->x, names[i]->y, 0.45 * aem, 0.5 * aem, 0.4 * aem, drawn3);
+    const auto [lx, ly] = ch::labelSpot(names[i]->x, names[i]->y, 0.65 * aem, 0.5 * aem, 0.4 * aem, drawn3);
     nameText += num(lx) + " " + num(ly) + " p_" + std::to_string(i) + "\n";
   }
   std::cout << "Figure 2.3: the segment from a cavity vertex to p_{n+1} crosses " << chain.size()
             << " cavity triangles; in the notes' shape p2p3p4 -> p2p4p5 -> p2p5p1 -> p1p5p6: "
             << (names.empty() ? "no" : "yes") << "\n";
-  const auto [plx, ply] = ch::labelSpot(p->x, p->y, 0.5 * aem, 1.1 * aem, 0.4 * aem, drawn3);
+  const auto [plx, ply] = ch::labelSpot(p->x, p->y, 0.7 * aem, 1.1 * aem, 0.4 * aem, drawn3);
   const dt::Face *d1 = chain[0], *d2 = chain[1];
   const Circle c1 = circumcircle(d1->V[0], d1->V[1], d1->V[2]);
   const Circle c2 = circumcircle(d2->V[0], d2->V[1], d2->V[2]);
@@ -349,10 +349,10 @@ void figures21to24(const ch::Options& o) {
     stepLabels += circleLabel(c2, c1, "C_J");
     for (std::size_t i = 1; i < names.size(); ++i) {
       if (i == 1 || i == 6) continue;  // p1 and p6 are not in the first step
-      const auto [lx, ly] = ch::labelSpot(names[i]->x, names[i]->y, 0.45 * zem, 0.5 * zem, 0.4 * zem, drawnZ, {taken[taken.size() - 4], taken[taken.size() - 3], taken[taken.size() - 2], taken.back()});
+      const auto [lx, ly] = ch::labelSpot(names[i]->x, names[i]->y, 0.65 * zem, 0.5 * zem, 0.4 * zem, drawnZ, {taken[taken.size() - 4], taken[taken.size() - 3], taken[taken.size() - 2], taken.back()});
       stepLabels += num(lx) + " " + num(ly) + " p_" + std::to_string(i) + "\n";
     }
-    const auto [zx, zy] = ch::labelSpot(p->x, p->y, 0.5 * zem, 1.1 * zem, 0.4 * zem, drawnZ, {taken[taken.size() - 4], taken[taken.size() - 3], taken[taken.size() - 2], taken.back()});
+    const auto [zx, zy] = ch::labelSpot(p->x, p->y, 0.7 * zem, 1.1 * zem, 0.4 * zem, drawnZ, {taken[taken.size() - 4], taken[taken.size() - 3], taken[taken.size() - 2], taken.back()});
     stepLabels += num(zx) + " " + num(zy) + " p_{n+1}\n";
   }
   std::cout << "Figure 2.3: circle centres of the first step " << std::hypot(c1.x - c2.x, c1.y - c2.y) / std::max(c1.r, c2.r)
@@ -425,7 +425,7 @@ void figures21to24(const ch::Options& o) {
   std::string labels4, special;
   std::vector<double> taken;
   auto label = [&](const dt::Vertex* v, const std::string& name) {
-    const auto [lx, ly] = ch::labelSpot(v->x, v->y, 0.6 * em4, 0.3 * em4 * double(name.size() > 4 ? 4 : 2), 0.5 * em4, afterSegs, taken);
+    const auto [lx, ly] = ch::labelSpot(v->x, v->y, 0.8 * em4, 0.3 * em4 * double(name.size() > 4 ? 4 : 2), 0.5 * em4, afterSegs, taken);
     taken.insert(taken.end(), {lx, ly});
     labels4 += num(lx) + " " + num(ly) + " " + name + "\n";
   };

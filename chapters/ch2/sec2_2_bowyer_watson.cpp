@@ -139,11 +139,11 @@ void figure25(const ch::Options& o) {
     for (std::size_t i = 0; i < all.ids.size(); ++i) {
       std::string line = num(xy[2 * i]) + " " + num(xy[2 * i + 1]) + " " + pname(all.ids[i]);
       for (const std::vector<ch::Seg>& segs : shown) {
-        const auto [lx, ly] = ch::labelSpot(xy[2 * i], xy[2 * i + 1], 0.35 * em, 0.9 * em, 0.45 * em, segs);
+        const auto [lx, ly] = ch::labelSpot(xy[2 * i], xy[2 * i + 1], 0.6 * em, 0.9 * em, 0.45 * em, segs);
         line += " " + num(lx) + " " + num(ly);
       }
       // The animation's frames have a smaller text: one more label place, for its last frame.
-      const auto [ax, ay] = ch::labelSpot(xy[2 * i], xy[2 * i + 1], 0.35 * 0.5 * em, 0.9 * 0.5 * em, 0.45 * 0.5 * em, shown.back());
+      const auto [ax, ay] = ch::labelSpot(xy[2 * i], xy[2 * i + 1], 0.6 * 0.5 * em, 0.9 * 0.5 * em, 0.45 * 0.5 * em, shown.back());
       line += " " + num(ax) + " " + num(ay) + "\n";
       (all.ids[i] < 0 ? sup : pts) += line;
     }
@@ -254,13 +254,13 @@ void figure26(const ch::Options& o) {
   bSegs.push_back({p[2 * j], p[2 * j + 1], p[2 * l], p[2 * l + 1]});
   std::string labels;
   for (const auto& [idx, name] : std::vector<std::pair<int, std::string>>{{K, "p_k"}, {J, "p_j"}, {L, "p_l"}}) {
-    const auto [lx, ly] = ch::labelSpot(bw.xy[2 * idx], bw.xy[2 * idx + 1], 0.4 * bem, 0.5 * bem, 0.45 * bem, bSegs);
+    const auto [lx, ly] = ch::labelSpot(bw.xy[2 * idx], bw.xy[2 * idx + 1], 0.6 * bem, 0.5 * bem, 0.45 * bem, bSegs);
     labels += num(lx) + " " + num(ly) + " " + name + "\n";
   }
   // Super-vertex labels of (a); in (b), p_{-1} is named where its crossing edge leaves the view.
   std::string superLabel, exitLabel;
   for (int s = 0; s < 4; ++s) {
-    const auto [lx, ly] = ch::labelSpot(bw.xy[2 * s], bw.xy[2 * s + 1], 0.4 * aem, 0.9 * aem, 0.45 * aem, allSegs);
+    const auto [lx, ly] = ch::labelSpot(bw.xy[2 * s], bw.xy[2 * s + 1], 0.6 * aem, 0.9 * aem, 0.45 * aem, allSegs);
     superLabel += num(bw.xy[2 * s]) + " " + num(bw.xy[2 * s + 1]) + " " + pname(bw.ids[s]) + " " + num(lx) + " " + num(ly) + " " +
                   (std::count(mi.superInCircle.begin(), mi.superInCircle.end(), s) ? "1" : "0") + "\n";
   }

@@ -71,7 +71,7 @@ std::string segment(const dt::Vertex* a, const dt::Vertex* b, const char* color,
 // `taken`: points to keep clear (other vertices, labels placed before); this one is added.
 std::string label(const dt::Vertex* v, const std::string& text, const std::vector<ch::Seg>& segs,
                   double em, std::size_t chars, std::vector<double>& taken) {
-  const auto [x, y] = ch::labelSpot(v->x, v->y, 0.45 * em, 0.3 * em * double(chars), 0.45 * em, segs, taken);
+  const auto [x, y] = ch::labelSpot(v->x, v->y, 0.65 * em, 0.3 * em * double(chars), 0.45 * em, segs, taken);
   taken.insert(taken.end(), {x, y});
   std::ostringstream s;
   s.precision(17);

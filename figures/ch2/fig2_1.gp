@@ -13,16 +13,16 @@ do for [term in "png svg"] {
   eval layout(1, 2)
   eval panel(1, "DT_n")
   plot datadir."/fig2_1_dtn.dat" with lines lw 1.5 lc rgb C_TRI, \
-       datadir."/fig2_1_points.dat" with points pt 7 ps 1.0 lc rgb C_POINT, \
-       datadir."/fig2_1_p.dat" using 1:2 with points pt 7 ps 1.6 lc rgb C_NEW, \
+       datadir."/fig2_1_points.dat" with points pt 7 ps (1.0*PS) lc rgb C_POINT, \
+       datadir."/fig2_1_p.dat" using 1:2 with points pt 7 ps (1.6*PS) lc rgb C_NEW, \
        datadir."/fig2_1_p.dat" using 3:4:("p_{n+1}") with labels tc rgb C_NEW
   eval panel(2, "the cavity C(DT_n, p_{n+1})")
   plot datadir."/fig2_1_cavity.dat" with filledcurves closed fc rgb C_CAVITY fs solid 1.0, \
        datadir."/fig2_1_circles.dat" using 1:2:3 with circles lw 1.5 dt 2 lc rgb C_CIRCLE fs empty, \
        datadir."/fig2_1_dtn.dat" with lines lw 1.5 lc rgb C_TRI, \
        datadir."/fig2_1_cavity.dat" with lines lw 3 lc rgb C_CAVITY_EDGE, \
-       datadir."/fig2_1_points.dat" with points pt 7 ps 1.0 lc rgb C_POINT, \
-       datadir."/fig2_1_p.dat" using 1:2 with points pt 7 ps 1.6 lc rgb C_NEW, \
+       datadir."/fig2_1_points.dat" with points pt 7 ps (1.0*PS) lc rgb C_POINT, \
+       datadir."/fig2_1_p.dat" using 1:2 with points pt 7 ps (1.6*PS) lc rgb C_NEW, \
        datadir."/fig2_1_p.dat" using 3:4:("p_{n+1}") with labels tc rgb C_NEW
   unset multiplot
 }

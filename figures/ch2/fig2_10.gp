@@ -20,7 +20,7 @@ do for [term in "png svg"] {
   eval panel(1, "the cavity of p")
   plot datadir."/fig2_10_cavity.dat" with filledcurves closed fc rgb C_CAVITY fs solid 1.0 title "cavity", \
        datadir."/fig2_10_before.dat" with lines lw 1.2 lc rgb C_TRI notitle, \
-       datadir."/fig2_10_point.dat" with points pt 7 ps 1.6 lc rgb C_NEW notitle, \
+       datadir."/fig2_10_point.dat" with points pt 7 ps (1.6*PS) lc rgb C_NEW notitle, \
        datadir."/fig2_10_point.dat" using 1:2:("p") with labels offset 0.9,0.9 tc rgb C_NEW notitle
   eval panel(2, "the ball and its adjacencies")
   plot datadir."/fig2_10_outer.dat" with filledcurves closed fc rgb C_NEIGH fs solid 1.0 title "neighbours", \
@@ -28,7 +28,7 @@ do for [term in "png svg"] {
        datadir."/fig2_10_after.dat" with lines lw 1.2 lc rgb C_TRI notitle, \
        datadir."/fig2_10_links_new.dat" using 1:2:3:4 with vectors arrowstyle 1 title "new - new", \
        datadir."/fig2_10_links_outer.dat" using 1:2:3:4 with vectors arrowstyle 2 title "new - neighbour", \
-       datadir."/fig2_10_point.dat" with points pt 7 ps 1.6 lc rgb C_NEW notitle, \
+       datadir."/fig2_10_point.dat" with points pt 7 ps (1.6*PS) lc rgb C_NEW notitle, \
        datadir."/fig2_10_point.dat" using 1:2:("p") with labels offset 0.9,0.9 tc rgb C_NEW notitle
   unset multiplot
 }

@@ -20,7 +20,7 @@ do for [term in "png svg"] {
     if (k == 1) { set xtics 0, 0.5, 1; set ytics 0, 0.5, 1 } else { set xtics 0, 0.25, 1; set ytics 0, 0.25, 1 }
     f = datadir.sprintf("/fig2_11_frames%d.dat", k)
     c = datadir.sprintf("/fig2_11_h%d.dat", k)
-    plot c using 1:2 with linespoints lw 2.5 lc rgb "black" pt 7 ps 0.8, \
+    plot c using 1:2 with linespoints lw 2.5 lc rgb "black" pt 7 ps (0.8*PS), \
          f using 1:2:3:4 with vectors arrowstyle 1, \
          f using 1:2:5:6 with vectors arrowstyle 2, \
          f using ($1+$3*0.6+$5*0.14):($2+$4*0.6+$6*0.14):("r") with labels tc rgb C_NEW, \

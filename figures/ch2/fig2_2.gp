@@ -25,8 +25,8 @@ do for [term in "png svg"] {
        datadir."/fig2_2_kernel.dat" with lines lw 2 lc rgb C_CAVITY_EDGE, \
        datadir."/fig2_2_sight.dat" with lines lw 1.2 lc rgb C_BALL_EDGE, \
        datadir."/fig2_2_polygon.dat" with lines lw 2.5 lc rgb C_TRI, \
-       datadir."/fig2_2_polygon.dat" with points pt 7 ps 0.9 lc rgb C_POINT, \
+       datadir."/fig2_2_polygon.dat" with points pt 7 ps (0.9*PS) lc rgb C_POINT, \
        datadir."/fig2_2_labels.dat" using 1:2:3 with labels tc rgb C_TRI, \
-       datadir."/fig2_2_x.dat" with points pt 7 ps 1.5 lc rgb C_NEW, \
+       datadir."/fig2_2_x.dat" with points pt 7 ps (1.5*PS) lc rgb C_NEW, \
        datadir."/fig2_2_xlabel.dat" using 1:2:("x") with labels tc rgb C_NEW
 }

@@ -25,7 +25,7 @@ do for [term in "png svg"] {
        datadir."/fig2_1_dtn.dat" with lines lw 1.2 lc rgb C_TRI, \
        datadir."/fig2_1_cavity.dat" with lines lw 3 lc rgb C_CAVITY_EDGE, \
        datadir."/fig2_3_segment.dat" with lines lw 2.5 lc rgb C_NEW, \
-       datadir."/fig2_3_segment.dat" every ::1::1 with points pt 7 ps 1.5 lc rgb C_NEW, \
+       datadir."/fig2_3_segment.dat" every ::1::1 with points pt 7 ps (1.5*PS) lc rgb C_NEW, \
        datadir."/fig2_3_plabel.dat" using 1:2:("p_{n+1}") with labels tc rgb C_NEW, \
        datadir."/fig2_3_names.dat" using 1:2:3 with labels tc rgb C_TRI
   eval panel(2, "one step: C_I beyond p_2p_4 lies in C_J")
@@ -41,6 +41,6 @@ do for [term in "png svg"] {
        datadir."/fig2_3_steplabels.dat" every ::0::0 using 1:2:3 with labels tc rgb C_CIRCLE, \
        datadir."/fig2_3_steplabels.dat" every ::1::1 using 1:2:3 with labels tc rgb C_BALL_EDGE, \
        datadir."/fig2_3_steplabels.dat" every ::2 using 1:2:3 with labels tc rgb C_TRI, \
-       datadir."/fig2_3_segment.dat" every ::1::1 with points pt 7 ps 1.5 lc rgb C_NEW
+       datadir."/fig2_3_segment.dat" every ::1::1 with points pt 7 ps (1.5*PS) lc rgb C_NEW
   unset multiplot
 }

@@ -20,7 +20,7 @@ do for [term in "png svg"] {
        datadir."/fig2_4_outside.dat" with lines lw 3 lc rgb C_NEIGH_EDGE, \
        datadir."/fig2_4_circles.dat" every ::0::0 using 1:2:3 with circles lw 2 lc rgb C_NEIGH_EDGE fs empty, \
        datadir."/fig2_4_circles.dat" every ::1::1 using 1:2:3 with circles lw 2 dt 2 lc rgb C_BALL_EDGE fs empty, \
-       datadir."/fig2_1_p.dat" using 1:2 with points pt 7 ps 1.6 lc rgb C_NEW, \
+       datadir."/fig2_1_p.dat" using 1:2 with points pt 7 ps (1.6*PS) lc rgb C_NEW, \
        datadir."/fig2_4_labels.dat" every ::0::0 using 1:2:3 with labels tc rgb C_NEW, \
        datadir."/fig2_4_labels.dat" every ::1::2 using 1:2:3 with labels tc rgb C_BALL_EDGE, \
        datadir."/fig2_4_labels.dat" every ::3::3 using 1:2:3 with labels tc rgb C_NEIGH_EDGE

@@ -17,10 +17,10 @@ do for [term in "png svg"] {
     k = K[i]
     eval panel(i, k == 0 ? "DT_0" : sprintf("%d point%s inserted", k, k == 1 ? "" : "s"))
     plot datadir.sprintf("/fig2_5_%d.dat", k) with lines lw 1.5 lc rgb C_TRI, \
-         datadir."/fig2_5_super.dat" using 1:2 with points pt 5 ps 1.2 lc rgb C_SUPER, \
+         datadir."/fig2_5_super.dat" using 1:2 with points pt 5 ps (1.2*PS) lc rgb C_SUPER, \
          datadir."/fig2_5_super.dat" using (column(2 + 2 * i)):(column(3 + 2 * i)):3 with labels tc rgb C_SUPER, \
-         datadir."/fig2_5_points.dat" using 1:2 with points pt 6 ps 1.2 lc rgb "#808080", \
-         datadir."/fig2_5_points.dat" using 1:($0 < k ? $2 : NaN) with points pt 7 ps 1.2 lc rgb C_POINT, \
+         datadir."/fig2_5_points.dat" using 1:2 with points pt 6 ps (1.2*PS) lc rgb "#808080", \
+         datadir."/fig2_5_points.dat" using 1:($0 < k ? $2 : NaN) with points pt 7 ps (1.2*PS) lc rgb C_POINT, \
          datadir."/fig2_5_points.dat" using (column(2 + 2 * i)):(column(3 + 2 * i)):3 with labels tc rgb C_TRI
   }
   unset multiplot

@@ -43,16 +43,16 @@ do for [pass=0:1] {
        stem."_tri.dat" with lines lw 1.5 lc rgb C_TRI notitle, \
        (f == 0 ? datadir."/fig2_5_super.dat" : stem."_fill.dat") using 1:(cav ? $2 : NaN) with lines lw 2.5 lc rgb C_CAVITY_EDGE notitle, \
        (f == 0 ? datadir."/fig2_5_super.dat" : stem."_fill.dat") using 1:(bal ? $2 : NaN) with lines lw 2.5 lc rgb C_BALL_EDGE notitle, \
-       datadir."/fig2_5_super.dat" using 1:2 with points pt 5 ps 1.2 lc rgb C_SUPER notitle, \
+       datadir."/fig2_5_super.dat" using 1:2 with points pt 5 ps (1.2*PS) lc rgb C_SUPER notitle, \
        datadir."/fig2_5_super.dat" using 16:17:3 with labels tc rgb C_SUPER notitle, \
-       datadir."/fig2_5_points.dat" using 1:2 with points pt 6 ps 1.2 lc rgb "#808080" notitle, \
-       datadir."/fig2_5_points.dat" using 1:($0 < npoints ? $2 : NaN) with points pt 7 ps 1.2 lc rgb C_POINT notitle, \
+       datadir."/fig2_5_points.dat" using 1:2 with points pt 6 ps (1.2*PS) lc rgb "#808080" notitle, \
+       datadir."/fig2_5_points.dat" using 1:($0 < npoints ? $2 : NaN) with points pt 7 ps (1.2*PS) lc rgb C_POINT notitle, \
        datadir."/fig2_5_points.dat" using 16:($0 < npoints ? $17 : NaN):3 with labels tc rgb C_TRI notitle, \
-       (f == 0 ? datadir."/fig2_5_super.dat" : stem."_p.dat") using 1:(f == 0 ? NaN : $2) with points pt 7 ps 1.8 lc rgb C_NEW notitle, \
+       (f == 0 ? datadir."/fig2_5_super.dat" : stem."_p.dat") using 1:(f == 0 ? NaN : $2) with points pt 7 ps (1.8*PS) lc rgb C_NEW notitle, \
        NaN with boxes fs solid 1.0 fc rgb C_CAVITY title "cavity", \
        NaN with boxes fs solid 1.0 fc rgb C_BALL title "ball", \
        NaN with lines lw 1.5 dt 2 lc rgb C_CIRCLE title "circumcircles", \
-       NaN with points pt 7 ps 1.8 lc rgb C_NEW title "new point"
+       NaN with points pt 7 ps (1.8*PS) lc rgb C_NEW title "new point"
   }
   set output
 }

@@ -20,8 +20,8 @@ do for [term in "png svg"] {
        datadir."/fig2_6_all.dat" with lines lw 1.2 lc rgb C_TRI, \
        datadir."/fig2_6_crossing.dat" with lines lw 3 lc rgb C_CONFLICT, \
        datadir."/fig2_6_circle.dat" using 1:2:3 with circles lw 2 dt 2 lc rgb C_CIRCLE fs empty, \
-       datadir."/fig2_6_points.dat" with points pt 7 ps 0.8 lc rgb C_POINT, \
-       datadir."/fig2_6_super.dat" using 1:2 with points pt 5 ps 1.3 lc rgb C_SUPER, \
+       datadir."/fig2_6_points.dat" with points pt 7 ps (0.8*PS) lc rgb C_POINT, \
+       datadir."/fig2_6_super.dat" using 1:2 with points pt 5 ps (1.3*PS) lc rgb C_SUPER, \
        datadir."/fig2_6_super.dat" using 4:5:3 with labels tc rgb C_SUPER
   eval panel(2, "DT(S) ⊄ DT(S_0 ∪ S)")
   set xrange [bx0:bx1]
@@ -31,7 +31,7 @@ do for [term in "png svg"] {
        datadir."/fig2_6_kept_edges.dat" with lines lw 1.5 lc rgb C_TRI, \
        datadir."/fig2_6_crossing.dat" with lines lw 3 lc rgb C_CONFLICT, \
        datadir."/fig2_6_missing.dat" with lines lw 2.5 dt 2 lc rgb C_CIRCLE, \
-       datadir."/fig2_6_points.dat" with points pt 7 ps 1.0 lc rgb C_POINT, \
+       datadir."/fig2_6_points.dat" with points pt 7 ps (1.0*PS) lc rgb C_POINT, \
        datadir."/fig2_6_labels.dat" using 1:2:3 with labels tc rgb C_TRI, \
        datadir."/fig2_6_exit.dat" using 3:4:5 with labels tc rgb C_CONFLICT
   unset multiplot

@@ -14,6 +14,6 @@ do for [term in "png svg"] {
        datadir."/fig2_9_vertices.dat" using 1:2:(0.085):($5 > 0 ? 0xf6d55c : 0xffffff) \
          with circles lc rgb variable fs solid 1.0 border lc rgb "black" notitle, \
        datadir."/fig2_9_vertices.dat" using 1:2:(sprintf("%d", $3)) with labels notitle, \
-       NaN with points pt 7 ps 3 lc rgb "#f6d55c" title "hull vertex", \
-       NaN with points pt 6 ps 3 lc rgb "black" title "inner vertex (label: n_{vf})"
+       NaN with points pt 7 ps (3*PS) lc rgb "#f6d55c" title "hull vertex", \
+       NaN with points pt 6 ps (3*PS) lc rgb "black" title "inner vertex (label: n_{vf})"
 }

@@ -33,11 +33,11 @@ do for [term in "png svg"] {
     set logscale y
     unset key
     plot for [k = 0:7] f using ($1 == int(k/2) && $3 == k%2 + 1 ? $2 : NaN):c \
-           with linespoints lw 2 dt 1+k%2 pt (k%2 == 0 ? 7 : 5) ps 0.9 \
+           with linespoints lw 2 dt 1+k%2 pt (k%2 == 0 ? 7 : 5) ps (0.9*PS) \
            lc rgb word(C_SERIES, int(k/2) + 1) title word(names, int(k/2) + 1)." ".word(orders, k%2 + 2), \
-         for [i = 0:3] f using ($1 == i && $3 == 0 ? $2 : NaN):c with points pt 9 ps 1.6 lc rgb word(C_SERIES, i + 1) \
+         for [i = 0:3] f using ($1 == i && $3 == 0 ? $2 : NaN):c with points pt 9 ps (1.6*PS) lc rgb word(C_SERIES, i + 1) \
            title (i == 0 ? "random order (triangles)" : ""), \
-         g using 2:c with points pt 6 ps 3.5 lw 2 lc rgb "black" title "last size run (the next one would be quadratic)"
+         g using 2:c with points pt 6 ps (3.5*PS) lw 2 lc rgb "black" title "last size run (the next one would be quadratic)"
   }
   # The legend: a plot of its own below the panels, with no axes.
   unset logscale
@@ -53,9 +53,9 @@ do for [term in "png svg"] {
   set xrange [0:1]
   set yrange [0:1]
   set key inside center center horizontal maxcols 3 samplen 2.5 width 1 spacing 1.1
-  plot for [k = 0:7] NaN with linespoints lw 2 dt 1+k%2 pt (k%2 == 0 ? 7 : 5) ps 0.9 \
+  plot for [k = 0:7] NaN with linespoints lw 2 dt 1+k%2 pt (k%2 == 0 ? 7 : 5) ps (0.9*PS) \
          lc rgb word(C_SERIES, int(k/2) + 1) title word(names, int(k/2) + 1)." ".word(orders, k%2 + 2), \
-       NaN with points pt 9 ps 1.6 lc rgb "#606060" title "random order", \
-       NaN with points pt 6 ps 3 lw 2 lc rgb "black" title "last size run before quadratic"
+       NaN with points pt 9 ps (1.6*PS) lc rgb "#606060" title "random order", \
+       NaN with points pt 6 ps (3*PS) lw 2 lc rgb "black" title "last size run before quadratic"
   unset multiplot
 }

@@ -15,7 +15,7 @@ do for [t in "png svg"] {
     load sprintf('%s/rec_frame_%d.gp', datadir, k)
     eval panel(k + 1, ftitle)
     plot sprintf('%s/rec_frame_%d.dat', datadir, k) with lines lc rgb C_TRI lw 1, \
-         datadir.'/rec_points.dat' with points pt 7 ps 0.8 lc rgb C_POINT
+         datadir.'/rec_points.dat' with points pt 7 ps (0.8*PS) lc rgb C_POINT
     unset object; unset arrow
     unset label
   }

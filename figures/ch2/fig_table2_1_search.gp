@@ -15,7 +15,7 @@ set yrange [10:1000]
 do for [term in "png svg"] {
   eval fig_open(term, "fig_table2_1_search")
   set output (term eq "png" ? outdir."/fig_table2_1_search.png" : outdir."/fig_table2_1_search.svg")
-  plot datadir."/table2_1.dat" using 1:2 with linespoints pt 7 ps 1.3 lw 2 lc rgb word(C_SERIES, 1) title "this library", \
-       datadir."/table2_1.dat" using 1:5 with linespoints pt 6 ps 1.3 lw 2 dt 2 lc rgb word(C_SERIES, 2) title "notes' Table 2.1", \
+  plot datadir."/table2_1.dat" using 1:2 with linespoints pt 7 ps (1.3*PS) lw 2 lc rgb word(C_SERIES, 1) title "this library", \
+       datadir."/table2_1.dat" using 1:5 with linespoints pt 6 ps (1.3*PS) lw 2 dt 2 lc rgb word(C_SERIES, 2) title "notes' Table 2.1", \
        datadir."/table2_1_sqrt.dat" using 1:2 with lines lw 1.5 lc rgb C_CONSTRUCT title "slope 1/2 (N ∝ n^{1/2})"
 }

@@ -44,6 +44,11 @@ figh(n) = fig_word(n, 3)
 # The font size in the terminal's own unit for a figure of width w (see the header).
 fig_font(t, w) = (t eq "svg" ? w / 50.0 : w / 66.6)
 
+# Points: scripts write "ps (1.5*PS)". PS makes a point of size 1 a disc of radius W/233 px
+# (0.65 mm at 15 cm) on both terminals: pngcairo draws size 1 with a radius of 3.15 px whatever
+# the font, the svg terminal with a radius of 0.375 x its font size.
+fig_points(t, w) = (t eq "svg" ? (w / 233.0) / (0.375 * fig_font("svg", w)) : (w / 233.0) / 3.15)
+
 # The command that opens figure `n` on terminal `t` ("png" or "svg"): white background, the
 # style's size and font. The script then sets the output with the file name written out,
 #   set output (term eq "png" ? outdir."/n.png" : outdir."/n.svg")
@@ -53,6 +58,7 @@ fig_font(t, w) = (t eq "svg" ? w / 50.0 : w / 66.6)
 fig_open(t, n) = (fig_known(n) ? "" : "print 'style.gp: figure ".n." has no size in FIGSIZES'; exit status 1;") . \
   sprintf("set terminal %s size %d,%d enhanced font 'Sans,%.1f' background rgb 'white' linewidth %.2f; ", \
           (t eq "svg" ? "svg" : "pngcairo"), figw(n), figh(n), fig_font(t, figw(n)), figw(n) / 1000.0) . \
+  sprintf("PS = %.3f; ", fig_points(t, figw(n))) . \
   sprintf("FS = %.1f; FW = %d; FH = %d", fig_font(t, figw(n)), figw(n), figh(n))
 
 # ---- colours: one meaning each, in every figure -------------------------------------------
