@@ -414,14 +414,15 @@ void figures21to24(const ch::Options& o) {
   const dt::PlainMesh afterMesh = dt::extractMesh(T, false);
   const std::vector<ch::Seg> afterSegs = ch::triangleSegs(afterMesh.xy, afterMesh.tri);
   const Circle cOut = circumcircle(si, si1, pj), cNew = circumcircle(si, si1, p);
-  // The view: the points and both circles, with a margin; the text em is 4.5% of it.
+  // The view: the points and both circles, with a margin.
   double vx0 = std::min(cOut.x - cOut.r, cNew.x - cNew.r), vx1 = std::max(cOut.x + cOut.r, cNew.x + cNew.r);
   double vy0 = std::min(cOut.y - cOut.r, cNew.y - cNew.r), vy1 = std::max(cOut.y + cOut.r, cNew.y + cNew.r);
   for (std::size_t i = 0; i < afterMesh.xy.size(); i += 2) {
     vx0 = std::min(vx0, afterMesh.xy[i]), vx1 = std::max(vx1, afterMesh.xy[i]);
     vy0 = std::min(vy0, afterMesh.xy[i + 1]), vy1 = std::max(vy1, afterMesh.xy[i + 1]);
   }
-  const double vm = 0.05 * std::max(vx1 - vx0, vy1 - vy0), em4 = 0.04 * std::max(vx1 - vx0, vy1 - vy0);
+  // em4: the text em in data units (16 px of about 750 px across the view)
+  const double vm = 0.05 * std::max(vx1 - vx0, vy1 - vy0), em4 = 0.022 * std::max(vx1 - vx0, vy1 - vy0);
   std::string labels4, special;
   std::vector<double> taken;
   auto label = [&](const dt::Vertex* v, const std::string& name) {

@@ -243,7 +243,7 @@ void figure26(const ch::Options& o) {
   double bx0 = p[0], bx1 = p[0], by0 = p[1], by1 = p[1];
   for (std::size_t i = 0; i < p.size(); i += 2)
     bx0 = std::min(bx0, p[i]), bx1 = std::max(bx1, p[i]), by0 = std::min(by0, p[i + 1]), by1 = std::max(by1, p[i + 1]);
-  const double am = 0.05 * std::max(ax1 - ax0, ay1 - ay0), bm = 0.1 * std::max(bx1 - bx0, by1 - by0);
+  const double am = 0.1 * std::max(ax1 - ax0, ay1 - ay0), bm = 0.1 * std::max(bx1 - bx0, by1 - by0);  // room for labels
   ax0 -= am, ax1 += am, ay0 -= am, ay1 += am, bx0 -= bm, bx1 += bm, by0 -= bm, by1 += bm;
   const double aem = 0.045 * std::max(ax1 - ax0, ay1 - ay0), bem = 0.045 * std::max(bx1 - bx0, by1 - by0);
   const std::vector<ch::Seg> allSegs = ch::triangleSegs(bw.xy, bw.tri), keptSegs = ch::triangleSegs(bw.xy, kept);
