@@ -12,8 +12,11 @@ set yrange [Y0:Y1]
 stats datadir."/fig2_2_kernel.dat" using 1:2 nooutput
 kx = STATS_mean_x; ky = STATS_mean_y
 stats datadir."/fig2_2_kernel.dat" using ($1 + $2) nooutput
-stats datadir."/fig2_2_kernel.dat" every ::STATS_index_min::STATS_index_min using 1:2 nooutput
-lx = STATS_min_x; ly = STATS_min_y
+i0 = STATS_index_min
+stats datadir."/fig2_2_kernel.dat" every ::i0::i0 using 1 nooutput
+lx = STATS_min
+stats datadir."/fig2_2_kernel.dat" every ::i0::i0 using 2 nooutput
+ly = STATS_min
 set arrow 1 from X0 + 0.45, Y0 + 0.45 to 0.5 * (kx + lx), 0.5 * (ky + ly) lw 1.5 lc rgb C_CAVITY_EDGE front
 set label 1 "ker(Σ)" at X0 + 0.2, Y0 + 0.38 tc rgb C_CAVITY_EDGE front
 do for [term in "png svg"] {
