@@ -266,7 +266,16 @@ void figures21to24(const ch::Options& o) {
   // Label sizes in data units: the panels show about 1.25 units across 650 px, em 28 px.
   const double em = 0.05;
   {
-    const auto [lx, ly] = ch::labelSpot(p->x, p->y, 0.9 * em, 1.2 * em, 0.5 * em, dtnSegs);
+    // The label of p_{n+1} avoids the edges and the cavity's circles (as 72-gons) of (b).
+    std::vector<ch::Seg> drawn1 = dtnSegs;
+    for (const dt::Face* f : C) {
+      const Circle c = circumcircle(f->V[0], f->V[1], f->V[2]);
+      for (int k = 0; k < 72; ++k) {
+        const double a = 2 * M_PI * k / 72, b = 2 * M_PI * (k + 1) / 72;
+        drawn1.push_back({c.x + c.r * std::cos(a), c.y + c.r * std::sin(a), c.x + c.r * std::cos(b), c.y + c.r * std::sin(b)});
+      }
+    }
+    const auto [lx, ly] = ch::labelSpot(p->x, p->y, 0.9 * em, 1.2 * em, 0.5 * em, drawn1);
     ch::writeOut(o, "fig2_1_p.dat", num(p->x) + " " + num(p->y) + " " + num(lx) + " " + num(ly) + "\n");
   }
   ch::writeOut(o, "fig2_1_dtn.dat", ch::gnuplotSegs(dtnSegs));
