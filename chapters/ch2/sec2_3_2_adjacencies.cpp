@@ -9,6 +9,7 @@
 
 #include "check.h"
 #include "common.h"
+#include "figure_data.h"
 #include "generators.h"
 #include "stats.h"
 #include "triangulate.h"
@@ -44,7 +45,7 @@ void figure29(const ch::Options& o) {
   const dt::MeshCounts& c = r.counts;
   if (c.n != 12 || c.nh != 9 || c.sumVF != 39)
     throw std::runtime_error("Figure 2.9: expected n = 12, n_h = 9, 39 corners");
-  ch::writeOut(o, "fig2_9_tri.dat", dt::gnuplotTriangles(r.mesh.xy, r.mesh.tri));
+  ch::writeOut(o, "fig2_9_tri.dat", ch::gnuplotEdges(r.mesh.xy, r.mesh.tri));
   std::string labels = "# x y n_vf(vertex) n_ve(vertex) on_hull\n";
   // A boundary vertex has one edge more than triangles (its fan is open); inner ones as many.
   for (std::size_t v = 0; v < c.vf.size(); ++v)
@@ -52,7 +53,7 @@ void figure29(const ch::Options& o) {
                       c.ve[v], int(c.vf[v] < c.ve[v]));
   ch::writeOut(o, "fig2_9_vertices.dat", labels);
   ch::writeOut(o, "fig2_9_title.txt",
-               ch::fmt("n = %ld, n_h = %ld (yellow): n_{vf} = %ld/%ld = %.2f;  eq. (2.2): 6 - "
+               ch::fmt("n = %ld, n_h = %ld: mean n_{vf} = %ld/%ld = %.2f;  eq. (2.2): 6 - "
                        "(3 {\303\227} %ld + 6)/%ld = %.2f",
                        c.n, c.nh, c.sumVF, c.n, c.meanVF(), c.nh, c.n, c.eq22()));
   std::cout << "Figure 2.9: n = " << c.n << ", n_h = " << c.nh << ", sum of n_vf = " << c.sumVF

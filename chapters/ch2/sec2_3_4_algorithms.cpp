@@ -21,6 +21,7 @@
 #include "cavity.h"
 #include "check.h"
 #include "common.h"
+#include "figure_data.h"
 #include "generators.h"
 #include "predicates.h"
 #include "search.h"
@@ -58,26 +59,30 @@ std::string linkArrows(const dt::Face* f, const dt::Face* g) {
 }
 
 void figure210(const ch::Options& o) {
-  // 18 random points in the unit square; the new point p is the grid position whose cavity is
-  // the largest with at most 6 faces, none of them on the hull (so every neighbour is a triangle).
+  // 18 random points in the unit square; the new point p is a grid position whose cavity has 4
+  // to 6 faces, none of them on the hull (so every neighbour is a triangle), and which is far
+  // from the cavity's vertices (so the ball has no slivers and its links stay readable).
   const std::vector<double> xy = dt::uniformPoints(18, 2010u);
   dt::Triangulation T;
   std::vector<dt::Vertex*> S = dt::addVertices(T, xy);
   dt::delaunayTrglHull(T, S, dt::StartRule::LastCavity);
-  double bx = 0.5, by = 0.5;
-  std::size_t best = 0;
+  double bx = 0.5, by = 0.5, best = -1;
   for (int i = 0; i <= 40; ++i)
     for (int j = 0; j <= 40; ++j) {
       const dt::Vertex q(0.2 + 0.015 * i, 0.2 + 0.015 * j);
       std::size_t size = 0;
       bool interior = true;
+      double near = 1e300;  // the distance from q to the nearest cavity vertex
       for (const dt::Face& f : T.faces())
         if (!f.deleted && f.inCircle(&q)) {
           ++size;
           interior = interior && !f.isGhost();
+          for (const dt::Vertex* v : f.V)
+            if (v) near = std::min(near, std::hypot(v->x - q.x, v->y - q.y));
         }
-      if (interior && size <= 6 && size > best) {
-        best = size;
+      const double score = double(size) + 20 * near;
+      if (interior && size >= 4 && size <= 6 && score > best) {
+        best = score;
         bx = q.x;
         by = q.y;
       }
@@ -87,13 +92,17 @@ void figure210(const ch::Options& o) {
   // faces across its boundary; then the real insertion, whose result we compare with them.
   std::set<const dt::Face*> cavity, outer;
   std::string before, cav;
+  // Each edge once (a closed triangle draws an inner edge twice, darker than a hull edge).
+  auto edgesOf = [](const auto& faces) { return ch::gnuplotSegs(ch::faceSegs(faces)); };
+  std::vector<const dt::Face*> beforeFaces;
   for (const dt::Face* f : T.finiteFaces()) {
-    before += triangleBlock(f);
+    beforeFaces.push_back(f);
     if (f->inCircle(p)) {
       cavity.insert(f);
       cav += triangleBlock(f);
     }
   }
+  before = edgesOf(beforeFaces);  // now: the insertion reuses the cavity's faces
   for (const dt::Face* f : cavity)
     for (const dt::Face* g : f->F)
       if (g != nullptr && !g->isGhost() && cavity.count(g) == 0) outer.insert(g);
@@ -104,7 +113,6 @@ void figure210(const ch::Options& o) {
   std::string after, ball, out, arrowsNew, arrowsOut;
   std::vector<const dt::Face*> ballFaces;
   for (const dt::Face* f : T.finiteFaces()) {
-    after += triangleBlock(f);
     if (f->V[0] == p || f->V[1] == p || f->V[2] == p) {
       ball += triangleBlock(f);
       ballFaces.push_back(f);
@@ -120,6 +128,7 @@ void figure210(const ch::Options& o) {
       if (isNew && g < f) continue;  // each new-new link once
       (isNew ? arrowsNew : arrowsOut) += linkArrows(f, g);
     }
+  after = edgesOf(T.finiteFaces());
   ch::writeOut(o, "fig2_10_before.dat", before);
   ch::writeOut(o, "fig2_10_cavity.dat", cav);
   ch::writeOut(o, "fig2_10_after.dat", after);

@@ -354,14 +354,15 @@ void brioComparison(const ch::Options& o, const std::vector<std::size_t>& sizes,
                 "to n = " + sci(randomMax) + ": its walks grow like sqrt(n).";
   tab.header = {"input", "n", "order", "N_search", "N_cavity", "t (s)", "t/n (us)", "checked"};
   // One block of rows per (input, order), so that gnuplot joins each series.
-  std::ostringstream dat[4][3];
+  std::ostringstream dat[4][3], stops;
   std::size_t total = 0, done = 0;
   for (std::size_t n : sizes) total += 4 * (n <= randomMax ? 3 : 2);
   ch::Progress prog("BRIO comparison", total);
   for (int in = 0; in < 4; ++in) {
     // A series stops once N_search + N_cavity exceeds 200: the work per point grows like n
     // there (quadratic total), and the next size would take about 100 times longer.
-    bool quadratic[3] = {false, false, false};
+    bool quadratic[3] = {false, false, false}, stopped[3] = {false, false, false};
+    std::string lastRow[3];
     for (std::size_t n : sizes) {
       Run hilbertRun;  // the Hilbert-only run of the same points, for the BRIO comparison
       const XY p = inputs[in].make(n, 1000 + 10 * n + std::size_t(in));
@@ -370,6 +371,8 @@ void brioComparison(const ch::Options& o, const std::vector<std::size_t>& sizes,
         const int k = int(ord);
         if (quadratic[k]) {
           tab.add({inputs[in].name, sci(n), orderName(ord), "", "", "skipped: quadratic", "", ""});
+          if (!stopped[k]) stops << lastRow[k];  // the last size run
+          stopped[k] = true;
           prog.update(++done);
           continue;
         }
@@ -395,8 +398,11 @@ void brioComparison(const ch::Options& o, const std::vector<std::size_t>& sizes,
         tab.add({inputs[in].name, sci(n), orderName(ord), ch::fmt("%.2f", r.nSearch),
                  ch::fmt("%.2f", r.nCavity), ch::fmt("%.3g", r.tTotal),
                  ch::fmt("%.2f", 1e6 * r.tTotal / double(n)), r.checked ? "exact" : "no"});
-        dat[in][k] << in << " " << n << " " << k << " " << r.nSearch << " " << r.nCavity << " "
-                   << r.tTotal << " " << 1e6 * r.tTotal / double(n) << "\n";
+        std::ostringstream row;
+        row << in << " " << n << " " << k << " " << r.nSearch << " " << r.nCavity << " " << r.tTotal
+            << " " << 1e6 * r.tTotal / double(n) << "\n";
+        dat[in][k] << row.str();
+        lastRow[k] = row.str();
         prog.update(++done);
       }
     }
@@ -415,6 +421,9 @@ void brioComparison(const ch::Options& o, const std::vector<std::size_t>& sizes,
   for (auto& byInput : dat)
     for (auto& series : byInput) all += series.str();
   ch::writeOut(o, "brio_compare.dat", all);
+  // The last row of each series stopped as quadratic (columns of brio_compare.dat), marked in
+  // the figure.
+  ch::writeOut(o, "brio_compare_stops.dat", stops.str().empty() ? "NaN NaN NaN NaN NaN NaN NaN\n" : stops.str());
   ch::runGnuplot(o, "fig_brio_compare.gp");
 }
 

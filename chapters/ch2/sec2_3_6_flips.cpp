@@ -17,6 +17,7 @@
 
 #include "check.h"
 #include "common.h"
+#include "figure_data.h"
 #include "flip.h"
 #include "generators.h"
 #include "hilbert.h"
@@ -49,15 +50,7 @@ bool meshIsDT(const dt::Triangulation& T, std::size_t n) {
 }
 
 // gnuplot helpers: triangles as closed polylines, filled polygons and labels as "set object".
-std::string triData(const std::vector<const dt::Face*>& F) {
-  std::ostringstream s;
-  s.precision(17);
-  for (const dt::Face* f : F) {
-    for (int k = 0; k <= 3; ++k) s << f->V[k % 3]->x << " " << f->V[k % 3]->y << "\n";
-    s << "\n";
-  }
-  return s.str();
-}
+std::string triData(const std::vector<const dt::Face*>& F) { return ch::gnuplotSegs(ch::faceSegs(F)); }
 std::string polygon(int& id, const std::vector<const dt::Vertex*>& P, const char* color) {
   std::ostringstream s;
   s.precision(17);
@@ -75,11 +68,15 @@ std::string segment(const dt::Vertex* a, const dt::Vertex* b, const char* color,
     << " nohead lc rgb \"" << color << "\" lw " << lw << " dt " << dash << " front\n";
   return s.str();
 }
-std::string label(const dt::Vertex* v, const std::string& text, double dx, double dy) {
+// A label beside v where no segment of `segs` crosses it (em: the text height in data units).
+// `taken`: points to keep clear (other vertices, labels placed before); this one is added.
+std::string label(const dt::Vertex* v, const std::string& text, const std::vector<ch::Seg>& segs,
+                  double em, std::size_t chars, std::vector<double>& taken) {
+  const auto [x, y] = ch::labelSpot(v->x, v->y, 0.65 * em, 0.3 * em * double(chars), 0.45 * em, segs, taken);
+  taken.insert(taken.end(), {x, y});
   std::ostringstream s;
   s.precision(17);
-  s << "set label \"" << text << "\" at " << v->x + dx << "," << v->y + dy
-    << " center front font \",13\"\n";
+  s << "set label \"" << text << "\" at " << x << "," << y << " center front\n";
   return s.str();
 }
 
@@ -128,22 +125,23 @@ void figureFlip(const ch::Options& o) {
     // The two faces of the flip, and the four faces around them.
     const dt::Face* g = f->F[k];
     for (const dt::Face* h : {static_cast<const dt::Face*>(f), g}) {
-      obj += polygon(id, {h->V[0], h->V[1], h->V[2]}, "#f4b6c2");
+      // The style's colours: the two faces replaced (cavity), the two made (ball), neighbours.
+      obj += polygon(id, {h->V[0], h->V[1], h->V[2]}, after ? "#b8e0b0" : "#f9c58d");
       for (int j = 0; j < 3; ++j) {
         const dt::Face* n = h->F[j];
         if (n != nullptr && n != f && n != g && !n->isGhost())
-          obj += polygon(id, {n->V[0], n->V[1], n->V[2]}, "#cfe3f7");
+          obj += polygon(id, {n->V[0], n->V[1], n->V[2]}, "#c6dbef");
       }
     }
-    obj += segment(e0, e1, after ? "#1f5fbf" : "#c0392b", 3.5);
+    obj += segment(e0, e1, after ? "#2e7d32" : "#c51b7d", 3.5);
+    const std::vector<ch::Seg> segs = ch::faceSegs(T.finiteFaces());
+    std::vector<double> taken;
     for (int i = 0; i < 4; ++i) {
       const dt::Vertex* v = S[std::size_t(i)];
       const int before = d0.at(v), now = d1.at(v);
-      std::string t = std::string(names[i]) + ": " + std::to_string(before);
-      if (after) t += " → " + std::to_string(now) + " (" + (now > before ? "+" : "") +
-                      std::to_string(now - before) + ")";
-      const double dy = (i == 3) ? -0.45 : 0.45;
-      obj += label(v, t, 0, dy);
+      std::string t = std::string(names[i]) + ": " + std::to_string(after ? now : before);
+      if (after) t += std::string(" (") + (now > before ? "+" : "") + std::to_string(now - before) + ")";
+      obj += label(v, t, segs, 0.45, after ? 9 : 4, taken);
     }
     ch::writeOut(o, stem + ".gp", obj);
     ch::writeOut(o, stem + "_tri.dat", triData(T.finiteFaces()));
@@ -250,25 +248,42 @@ void figureRecovery(const ch::Options& o) {
   std::vector<const dt::Vertex*> hull;
   for (dt::Vertex* v : dt::convexHull(H)) hull.push_back(byId(v->id));
   std::vector<std::string> titles;
+  double vx0, vy0, vx1, vy1;  // the view's side (as in rec_frames.gp), for the label size
+  bbox(p, vx0, vy0, vx1, vy1);
+  const double viewSide = 2 * factor * 0.5 * std::max(vx1 - vx0, vy1 - vy0) * 1.08;
   auto frame = [&](int k, const std::string& title, const dt::Vertex* e0, const dt::Vertex* e1,
                    const dt::Vertex* n0, const dt::Vertex* n1, bool dropSuper) {
     std::string obj;
     int id = 0;
     // conv(S) in pink, the triangles of S in grey on top: pink shows what they miss.
-    obj += polygon(id, hull, "#f2a7a7");
+    // (the style's colours: uncovered hull pink, covered hull pale blue, the removed edge in the
+    // conflict colour, the new one in the ball's)
+    obj += polygon(id, hull, "#f4b6d2");
     for (const dt::Face* f : R.finiteFaces())
       if (f->V[0]->id >= 0 && f->V[1]->id >= 0 && f->V[2]->id >= 0)
-        obj += polygon(id, {f->V[0], f->V[1], f->V[2]}, "#dddddd");
-    if (e0) obj += segment(e0, e1, "#c0392b", 2.5, "2");
-    if (n0) obj += segment(n0, n1, "#1f5fbf", 3);
-    obj += "set title \"" + title + "\"\n";
+        obj += polygon(id, {f->V[0], f->V[1], f->V[2]}, "#dde6f0");
+    if (e0) obj += segment(e0, e1, "#c51b7d", 2.5, "2");
+    if (n0) obj += segment(n0, n1, "#2e7d32", 3);
+    obj += "ftitle = \"" + title + "\"\n";
     std::vector<const dt::Face*> F;
     for (const dt::Face* f : R.finiteFaces())
       if (!dropSuper || (f->V[0]->id >= 0 && f->V[1]->id >= 0 && f->V[2]->id >= 0)) F.push_back(f);
+    // The super-vertices and the four vertices of the frame's flip (its title names them) are
+    // labelled, off this frame's edges; the text em is about 6% of the view. (All nine points
+    // would not fit: some lie closer together than a label is wide.)
+    std::vector<ch::Seg> segs = ch::faceSegs(F);
+    if (e0) segs.push_back({e0->x, e0->y, e1->x, e1->y});
+    std::vector<double> taken;
+    for (const dt::Vertex& v : R.vertices()) taken.insert(taken.end(), {v.x, v.y});
+    for (const dt::Vertex& v : R.vertices()) {
+      if ((dropSuper && v.id < 0) || (v.id >= 0 && &v != e0 && &v != e1 && &v != n0 && &v != n1)) continue;
+      const std::string nm = v.id < 0 ? "p_{" + std::to_string(v.id) + "}" : "p_{" + std::to_string(v.id + 1) + "}";
+      obj += label(&v, nm, segs, 0.06 * viewSide, 3, taken);
+    }
     ch::writeOut(o, "rec_frame_" + std::to_string(k) + ".gp", obj);
     ch::writeOut(o, "rec_frame_" + std::to_string(k) + ".dat", triData(F));
   };
-  frame(0, "DT(S_0 ∪ S): pink = conv(S) not covered", nullptr, nullptr, nullptr, nullptr, false);
+  frame(0, "DT(S_0 ∪ S)", nullptr, nullptr, nullptr, nullptr, false);
   int k = 1;
   for (const auto& e : log) {
     const dt::Vertex *a = byId(e[0]->id), *b = byId(e[1]->id);
@@ -281,14 +296,10 @@ void figureRecovery(const ch::Options& o) {
     auto nm = [](const dt::Vertex* v) {
       return v->id < 0 ? "p_{" + std::to_string(v->id) + "}" : "p_{" + std::to_string(v->id + 1) + "}";
     };
-    const bool notesKind = (e[0]->id < 0) != (e[1]->id < 0) && e[2]->id >= 0 && e[3]->id >= 0;
-    frame(k, "flip " + std::to_string(k) + ": " + nm(a) + nm(b) + " → " + nm(e[2]) + nm(e[3]) +
-                 (notesKind ? " (2.2.1's rule)"
-                  : ((e[0]->id < 0) == (e[1]->id < 0) ? " (other)" : " (super opposite)")), a,
-          b, byId(e[2]->id), byId(e[3]->id), false);
+    frame(k, nm(a) + nm(b) + " → " + nm(e[2]) + nm(e[3]), a, b, byId(e[2]->id), byId(e[3]->id), false);
     ++k;
   }
-  frame(k, "super faces removed: DT(S)", nullptr, nullptr, nullptr, nullptr, true);
+  frame(k, "DT(S)", nullptr, nullptr, nullptr, nullptr, true);
   ++k;
   double x0, y0, x1, y1;
   bbox(p, x0, y0, x1, y1);
