@@ -277,7 +277,7 @@ int main(int argc, char** argv) {
       pp.push_back(std::size_t(std::llround(std::pow(10.0, e))));
     ch::Table u;
     u.header = {"n", "CPU (ns/point)", "wall (ns/point)", "of which sort (CPU ns/point)",
-                "the rest (CPU ns/point)", "peak (MB)", "peak (bytes/point)", "check (s)",
+                "the rest (CPU ns/point)", "peak (MB)", "peak (bytes/point)", "check, wall (s)",
                 "peak with check (MB)"};
     std::ostringstream dat, large;
     dat << "# n cpu_ns wall_ns sort_ns insert_ns peakMB checkPeakMB\n";
