@@ -211,6 +211,7 @@ int main(int argc, char** argv) {
     if (maxN >= 10000000) sizes.push_back(10000000);
     const std::string loadBefore = loadAverage();
     std::ostringstream pv;  // the verdicts on the targets of issue 18, computed
+    ch::Values values(o, "bench_parallel");  // the same, for the page's prose (largest n)
     ch::Table t;
     t.header = {"n", "kernel", "threads", "wall (s)", "CPU (s)", "wall / CGAL", "CPU / CGAL",
                 "deferred (%)", "peak (MB)", "triangles", "checked"};
@@ -251,6 +252,19 @@ int main(int argc, char** argv) {
              << ").";
         }
         pv << "</p>\n";
+      }
+      if (n == sizes.back()) {  // the page's values: the largest n
+        const bool both = seq && two;
+        values.set("par.n", std::to_string(n));
+        values.set("par.load", loadAverage());
+        values.set("par.speedup2", both ? ch::fmt("%.2f", (*seq)[0] / (*two)[0]) : "(not measured)");
+        values.set("par.cpu_ratio2", both ? ch::fmt("%.2f", (*two)[1] / (*seq)[1]) : "(not measured)");
+        const bool ref = both && cg;
+        const double w2 = ref ? (*two)[0] / (*cg)[0] : 0, c1 = ref ? (*seq)[1] / (*cg)[1] : 0;
+        values.set("par.cgal_wall2", ref ? ch::fmt("%.2f", w2) : "(not measured)");
+        values.set("par.cgal_cpu1", ref ? ch::fmt("%.2f", c1) : "(not measured)");
+        values.set("par.target2", ref ? (w2 <= 0.5 ? "met" : "missed") : "not measured");
+        values.set("par.target1", ref ? (c1 <= 0.65 ? "met" : "missed") : "not measured");
       }
       for (std::size_t j = 0; j < runs.size(); ++j) {
         const std::vector<double>& r = best[j];
@@ -342,6 +356,19 @@ int main(int argc, char** argv) {
           << ch::fmt("%.0f", double(size) / bytesPerPoint) << ".";
     }
     v << "</p>\n";
+    values.set("tpp.flat_up_to", std::to_string(flatUpTo));
+    values.set("tpp.n_last", std::to_string(last.first));
+    values.num("tpp.ratio_last", last.second / lo, "%.2f");
+    if (curve.size() > 1) {
+      values.num("tpp.steep", curve[steep].second / curve[steep - 1].second, "%.2f");
+      values.set("tpp.steep_from", std::to_string(curve[steep - 1].first));
+      values.set("tpp.steep_to", std::to_string(curve[steep].first));
+    } else {
+      values.set("tpp.steep", "(one size only)");
+      values.set("tpp.steep_from", "-");
+      values.set("tpp.steep_to", "-");
+    }
+    values.write();
     ch::writeOut(o, "time_per_point_verdict.html", v.str());
     ch::runGnuplot(o, "fig_time_per_point.gp");
     return 0;
