@@ -1,4 +1,4 @@
-/// \file test_hilbert_sort.cpp The one Hilbert sort (code/hilbert.cpp): table keys and radix sort give the same orders as keys one level at a time and std::sort.
+/// \file test_hilbert_sort.cpp The one Hilbert sort (code/hilbert.cpp): table keys and radix sort give the same orders as keys one level at a time and std::sort; the adaptive refinement keeps a far outlier or a dense cluster from leaving points in input order.
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "generators.h"
 #include "hilbert.h"
 #include "support.h"
 
@@ -77,10 +78,11 @@ TEST_CASE("2.3.5 Hilbert sort: table keys equal the keys of hilbertIndex, one le
 
 TEST_CASE("2.3.5 Hilbert sort: the radix sort gives the order of std::sort on (key, index)") {
   // depth 31 packs 62 key bits: with the index they exceed 64 bits (the comparison-sort path).
+  // The fixed grid (adaptive = false): equal keys in index order.
   for (int depth : {0, 1, 3, 10, 20, 31}) {
     const XY p = mixedPoints(20000, 7 + unsigned(depth));
     INFO("depth " << depth);
-    CHECK(dt::hilbertOrder(p, depth) == hilbertOrderRef(p, depth));
+    CHECK(dt::hilbertOrder(p, depth, false) == hilbertOrderRef(p, depth));
   }
   CHECK(dt::hilbertOrder({}).empty());
   CHECK(dt::hilbertOrder({2, 3}) == std::vector<std::size_t>{0});
@@ -91,7 +93,7 @@ TEST_CASE("2.3.5 BRIO: the one-sort BRIO gives the order of sorting each round b
     const XY p = mixedPoints(20000, 17 + unsigned(depth));
     for (std::uint64_t seed : {1u, 5u}) {
       INFO("depth " << depth << " seed " << seed);
-      CHECK(dt::brioOrder(p, seed, depth) == brioOrderRef(p, seed, depth));
+      CHECK(dt::brioOrder(p, seed, depth, nullptr, false) == brioOrderRef(p, seed, depth));
     }
   }
 }
@@ -119,4 +121,102 @@ TEST_CASE("BRIO by biased coins (the fast kernel's order): 3/4 of the points in 
   CHECK(dt::brioCoinOrder(p, 3) == o);
   CHECK(dt::brioCoinOrder(p, 4) != o);
   CHECK(dt::brioCoinOrder(p, 3, 1) == dt::hilbertOrder(p));  // one round: the Hilbert sort
+}
+
+namespace {
+
+// The length of the tour through the points in `order`, leaving out every step to or from a
+// point outside [lo, hi]^2 (the outlier).
+double tourWithin(const XY& p, const std::vector<std::size_t>& order, double lo, double hi) {
+  auto in = [&](std::size_t i) {
+    return p[2 * i] >= lo && p[2 * i] <= hi && p[2 * i + 1] >= lo && p[2 * i + 1] <= hi;
+  };
+  double len = 0;
+  for (std::size_t k = 1; k < order.size(); ++k) {
+    const std::size_t a = order[k - 1], b = order[k];
+    if (in(a) && in(b)) len += std::hypot(p[2 * a] - p[2 * b], p[2 * a + 1] - p[2 * b + 1]);
+  }
+  return len;
+}
+
+bool isPermutation(std::vector<std::size_t> o, std::size_t n) {
+  std::sort(o.begin(), o.end());
+  for (std::size_t k = 0; k < o.size(); ++k)
+    if (o[k] != k) return false;
+  return o.size() == n;
+}
+
+}  // namespace
+
+TEST_CASE("2.3.5 adaptive Hilbert order: still sorted by the fixed-grid key; equal points keep their input order") {
+  for (int depth : {1, 3, 0}) {
+    const XY p = mixedPoints(5000, 40 + unsigned(depth));
+    const std::vector<std::size_t> o = dt::hilbertOrder(p, depth);
+    const std::vector<std::uint64_t> keys = dt::hilbertKeys(p, depth);
+    REQUIRE(isPermutation(o, keys.size()));
+    INFO("depth " << depth);
+    for (std::size_t k = 1; k < o.size(); ++k) {
+      REQUIRE(keys[o[k - 1]] <= keys[o[k]]);
+      if (p[2 * o[k - 1]] == p[2 * o[k]] && p[2 * o[k - 1] + 1] == p[2 * o[k] + 1])
+        REQUIRE(o[k - 1] < o[k]);
+    }
+    // At depth 1 the 4 cells hold thousands of points each: the refinement reorders them.
+    if (depth == 1) CHECK(o != dt::hilbertOrder(p, depth, false));
+  }
+}
+
+TEST_CASE("2.3.5 adaptive Hilbert order: one far outlier leaves the others' tour as short as without it") {
+  const std::size_t n = 20000;
+  XY p = dt::outlierPoints(n, 5, 1e12);
+  XY q;  // the same points without the outlier
+  for (std::size_t i = 0; i < n; ++i)
+    if (p[2 * i] < 2) q.insert(q.end(), {p[2 * i], p[2 * i + 1]});
+  REQUIRE(q.size() == 2 * (n - 1));
+  const double alone = tourWithin(q, dt::hilbertOrder(q), 0, 1);
+  const double adaptive = tourWithin(p, dt::hilbertOrder(p), 0, 1);
+  const double fixed = tourWithin(p, dt::hilbertOrder(p, 0, false), 0, 1);
+  MESSAGE("tour of the uniform points: alone " << alone << ", with the outlier: adaptive "
+          << adaptive << ", fixed grid " << fixed);
+  CHECK(adaptive < 1.05 * alone);
+  CHECK(fixed > 20 * alone);  // a random order: about n/2 against 0.98 sqrt(n)
+  // The same for the orders the kernels use (BRIO's rounds lengthen every tour alike).
+  const double coin = tourWithin(p, dt::brioCoinOrder(p, 1), 0, 1);
+  const double coinAlone = tourWithin(q, dt::brioCoinOrder(q, 1), 0, 1);
+  CHECK(coin < 1.2 * coinAlone);
+  CHECK(tourWithin(p, dt::brioCoinOrder(p, 1, 8, false), 0, 1) > 10 * coinAlone);
+  const double brio = tourWithin(p, dt::brioOrder(p, 1), 0, 1);
+  CHECK(brio < 1.2 * tourWithin(q, dt::brioOrder(q, 1), 0, 1));
+}
+
+TEST_CASE("2.3.5 adaptive Hilbert order: a cluster of width 1e-9 beside uniform points is toured like uniform points") {
+  const std::size_t n = 20000;
+  const XY p = dt::clusterBesideUniform(n, 6, 1e-9);
+  auto clusterTour = [&](const std::vector<std::size_t>& o) {
+    std::vector<std::size_t> inCluster;
+    for (std::size_t i : o)
+      if (std::fabs(p[2 * i] - 0.3) < 1e-9 && std::fabs(p[2 * i + 1] - 0.7) < 1e-9)
+        inCluster.push_back(i);
+    double len = 0;
+    for (std::size_t k = 1; k < inCluster.size(); ++k) {
+      const std::size_t a = inCluster[k - 1], b = inCluster[k];
+      len += std::hypot(p[2 * a] - p[2 * b], p[2 * a + 1] - p[2 * b + 1]);
+    }
+    return len;
+  };
+  // 2000 points in a square of side 1e-9: a Hilbert tour about 0.98 sqrt(2000) 1e-9 = 4.4e-8.
+  const double adaptive = clusterTour(dt::hilbertOrder(p));
+  const double fixed = clusterTour(dt::hilbertOrder(p, 0, false));
+  MESSAGE("tour of the cluster: adaptive " << adaptive << ", fixed grid " << fixed);
+  CHECK(adaptive < 1.2 * 0.98 * std::sqrt(2000.0) * 1e-9);
+  CHECK(fixed > 10 * adaptive);
+}
+
+TEST_CASE("2.3.5 adaptive Hilbert order: points at every scale of the double range, duplicates, terminate") {
+  XY p = dt::exponentSpreadPoints(3000, 8);
+  const XY d = dt::logRadiusPoints(3000, 9);
+  p.insert(p.end(), d.begin(), d.end());
+  p.insert(p.end(), d.begin(), d.begin() + 1000);  // 500 duplicated points
+  for (int e = -1074; e <= 1023; ++e) p.insert(p.end(), {std::ldexp(1.0, e), 0.0});
+  CHECK(isPermutation(dt::hilbertOrder(p), p.size() / 2));
+  CHECK(isPermutation(dt::brioCoinOrder(p, 2), p.size() / 2));
 }
