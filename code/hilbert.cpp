@@ -332,33 +332,38 @@ void sortRun(const std::vector<double>& xy, std::size_t* idx, std::size_t len, i
   b.halfSide = std::max(xmax / 2 - b.xmin / 2, ymax / 2 - b.ymin / 2);
   if (!(b.halfSide > 0)) return;  // all equal: input order
   const BoxCells cells(b, hilbertAutoDepth(len));
-  std::vector<std::pair<std::uint64_t, std::size_t>> kv(len);  // (key, position): stable
-  const int posBits = bitsFor(len), keyBits = 2 * cells.depth;
-  if (len >= 4096 && keyBits + posBits <= 64) {  // large runs (an outlier's): the radix sort
-    std::vector<std::uint64_t> w(len);
-    for (std::size_t k = 0; k < len; ++k) {
-      int s = state;
-      w[k] = cells.key(xy, idx[k], s) << posBits | k;
+  std::vector<std::pair<std::size_t, std::size_t>> runs;  // [begin, end) of shared cells
+  {  // scoped: the keys are freed before the recursion, which may go a few hundred levels deep
+    std::vector<std::pair<std::uint64_t, std::size_t>> kv(len);  // (key, position): stable
+    const int posBits = bitsFor(len), keyBits = 2 * cells.depth;
+    if (len >= 4096 && keyBits + posBits <= 64) {  // large runs (an outlier's): the radix sort
+      std::vector<std::uint64_t> w(len);
+      for (std::size_t k = 0; k < len; ++k) {
+        int s = state;
+        w[k] = cells.key(xy, idx[k], s) << posBits | k;
+      }
+      radixSort(w, posBits, posBits + keyBits);
+      const std::uint64_t mask = (std::uint64_t{1} << posBits) - 1;
+      for (std::size_t k = 0; k < len; ++k) kv[k] = {w[k] >> posBits, std::size_t(w[k] & mask)};
+    } else {
+      for (std::size_t k = 0; k < len; ++k) {
+        int s = state;
+        kv[k] = {cells.key(xy, idx[k], s), k};
+      }
+      std::sort(kv.begin(), kv.end());
     }
-    radixSort(w, posBits, posBits + keyBits);
-    const std::uint64_t mask = (std::uint64_t{1} << posBits) - 1;
-    for (std::size_t k = 0; k < len; ++k) kv[k] = {w[k] >> posBits, std::size_t(w[k] & mask)};
-  } else {
-    for (std::size_t k = 0; k < len; ++k) {
-      int s = state;
-      kv[k] = {cells.key(xy, idx[k], s), k};
+    const std::vector<std::size_t> old(idx, idx + len);
+    for (std::size_t k = 0; k < len; ++k) idx[k] = old[kv[k].second];
+    if (kv.front().first == kv.back().first) return;  // no split (cannot happen: safety)
+    for (std::size_t a = 0, e; a < len; a = e) {
+      for (e = a + 1; e < len && kv[e].first == kv[a].first;) ++e;
+      if (e - a >= 2) runs.emplace_back(a, e);
     }
-    std::sort(kv.begin(), kv.end());
   }
-  std::vector<std::size_t> old(idx, idx + len);
-  for (std::size_t k = 0; k < len; ++k) idx[k] = old[kv[k].second];
-  if (kv.front().first == kv.back().first) return;  // no split (cannot happen: safety)
-  for (std::size_t a = 0, e; a < len; a = e) {
-    for (e = a + 1; e < len && kv[e].first == kv[a].first;) ++e;
-    if (e - a < 2) continue;
+  for (const auto& r : runs) {
     int s = state;
-    cells.key(xy, idx[a], s);  // the state of this cell
-    sortRun(xy, idx + a, e - a, s);
+    cells.key(xy, idx[r.first], s);  // the state of this cell
+    sortRun(xy, idx + r.first, r.second - r.first, s);
   }
 }
 

@@ -202,8 +202,9 @@ void depthTable(const ch::Options& o, std::size_t n) {
   std::sort(depths.begin(), depths.end());
   ch::Table tab;
   tab.caption = "How the curve depth d changes the counts (n = " + sci(n) +
-                ", Hilbert order, super-triangles, LastCavity). With 4^d << n many points share "
-                "a cell and keep their random order: the walks grow. The auto depth is " +
+                ", Hilbert order on the fixed grid, without the adaptive refinement, "
+                "super-triangles, LastCavity). With 4^d << n many points share a cell and keep "
+                "their random order: the walks grow. The auto depth is " +
                 std::to_string(autoDepth) + ".";
   tab.header = {"depth d", "4^d / n", "uniform N_search", "uniform N_cavity", "uniform t (s)",
                 "clustered N_search", "clustered N_cavity", "clustered t (s)"};
@@ -212,8 +213,8 @@ void depthTable(const ch::Options& o, std::size_t n) {
   ch::Progress prog("depth table", depths.size());
   std::size_t done = 0;
   for (int d : depths) {
-    const Run u = triangulate(pu, Order::Hilbert, d, true);
-    const Run c = triangulate(pc, Order::Hilbert, d, true);
+    const Run u = triangulate(pu, Order::HilbertFixed, d, true);
+    const Run c = triangulate(pc, Order::HilbertFixed, d, true);
     tab.add({std::to_string(d) + (d == autoDepth ? " (auto)" : ""),
              ch::fmt("%.3g", std::pow(4.0, d) / double(n)), ch::fmt("%.2f", u.nSearch),
              ch::fmt("%.2f", u.nCavity), ch::fmt("%.3g", u.tTotal), ch::fmt("%.2f", c.nSearch),
