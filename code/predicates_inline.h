@@ -144,10 +144,12 @@ inline int signOfLiftedSum(const Int128 (&lift)[3], const Int128 (&minor)[3]) {
 // Claim. Each operation below returns (exact result)(1 + d) with |d| <= u = 2^-53:
 //  - product: m1 m2 has magnitude in [1/4, 1), far from the subnormals: one rounding to nearest;
 //    renormalising (a power of two) is exact.
-//  - sum, exponents e1 >= e2, gap g = e1 - e2: if g <= 60, m2 2^-g >= 2^-62 is exact, and the
-//    exact sum of m1 and it, a multiple of 2^-115, is either 0 or far above the subnormals: one
-//    rounding to nearest. If g > 60 the result is x1 itself: |x2| < 2^(e1-60) <= 2^-59 |x1|, so
-//    |d| = |x2| / |x1 + x2| < 1 / (2^59 - 1) < u.
+//  - sum, exponents e1 >= e2, gap g = e1 - e2: if g <= 60, m2 2^-g (|.| >= 2^-61) is exact (a
+//    power of two times a double, far from the subnormals; so a fused multiply-add would give
+//    the same sum), and the exact sum of m1 and it, a multiple of 2^-113, is either 0 or far
+//    above the subnormals: one rounding to nearest. If g > 60 the result is x1 itself:
+//    |x2| < 2^e2 <= 2^(e1-61) <= 2^-60 |x1|, so |d| = |x2| / |x1 + x2| <= 1 / (2^60 - 1) < u.
+//  - the constants 5u and 12u are powers of two times small integers: xf() holds them exactly.
 // So the Xf evaluation obeys the rounding model on which the two filters' error bounds below
 // are proved (every operation exact times (1 + d), |d| <= u), without their two caveats: there is
 // no underflow and no overflow. The same expressions and the same bounds (5u detsum, 12u
