@@ -365,7 +365,8 @@ void outlierComparison(const ch::Options& o, const std::vector<std::size_t>& siz
   ch::Progress prog("fixed grid against adaptive", total);
   auto row = [&](const char* name, const XY& p, Order ord) {
     const Run r = triangulate(p, ord, 0, true);
-    tab.add({name, sci(p.size() / 2), orderName(ord), ch::fmt("%.2f", r.nSearch),
+    tab.add({name, sci(p.size() / 2), ord == Order::Hilbert ? "Hilbert, adaptive" : orderName(ord),
+             ch::fmt("%.2f", r.nSearch),
              ch::fmt("%.2f", r.nCavity), ch::fmt("%.3g", r.tTotal), r.checked ? "exact" : "no"});
     prog.update(++done);
     return r;
