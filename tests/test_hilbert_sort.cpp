@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <numeric>
 #include <utility>
 #include <vector>
@@ -219,4 +220,54 @@ TEST_CASE("2.3.5 adaptive Hilbert order: points at every scale of the double ran
   for (int e = -1074; e <= 1023; ++e) p.insert(p.end(), {std::ldexp(1.0, e), 0.0});
   CHECK(isPermutation(dt::hilbertOrder(p), p.size() / 2));
   CHECK(isPermutation(dt::brioCoinOrder(p, 2), p.size() / 2));
+}
+
+TEST_CASE("2.3.5 adaptive Hilbert order: nested clusters switch to median splits that still follow the curve") {
+  // 4000 uniform points in the unit square, 4000 in a square of side 1e-150 and, inside that,
+  // 8000 in a square of side 1e-300: twice in a row one cell keeps most of the points, so the
+  // innermost cluster is ordered by median splits.
+  const std::size_t m = 8000;
+  XY p = dt::uniformPoints(4000, 21);
+  const XY mid = dt::uniformPoints(4000, 22, 0, 1e-150);  // at the origin: widths this small
+  const XY in = dt::uniformPoints(m, 23, 0, 1e-300);      // need no large offset
+  p.insert(p.end(), mid.begin(), mid.end());
+  p.insert(p.end(), in.begin(), in.end());
+  p.insert(p.end(), in.begin(), in.begin() + 400);  // 200 duplicated points
+  dt::shufflePoints(p, 24);
+  auto innerTour = [&](const std::vector<std::size_t>& o) {
+    double len = 0;
+    std::size_t prev = o.size();
+    for (std::size_t i : o) {
+      if (p[2 * i] > 1e-300 || p[2 * i + 1] > 1e-300) continue;
+      if (prev != o.size())
+        len += std::hypot(p[2 * i] - p[2 * prev], p[2 * i + 1] - p[2 * prev + 1]);
+      prev = i;
+    }
+    return len / 1e-300;  // in units of the cluster's side
+  };
+  const std::vector<std::size_t> o = dt::hilbertOrder(p);
+  REQUIRE(isPermutation(o, p.size() / 2));
+  const double adaptive = innerTour(o), fixed = innerTour(dt::hilbertOrder(p, 0, false));
+  MESSAGE("tour of the innermost cluster / side: adaptive " << adaptive << ", fixed grid "
+          << fixed << ", sqrt(m) = " << std::sqrt(double(m)));
+  // A Hilbert tour of m uniform points is about sqrt(m) sides long; a random order, m / 2.
+  CHECK(adaptive < 1.3 * std::sqrt(double(m)));
+  CHECK(fixed > 20 * std::sqrt(double(m)));
+  // Equal points keep their input order, in the median splits too.
+  std::vector<std::size_t> pos(o.size());
+  for (std::size_t k = 0; k < o.size(); ++k) pos[o[k]] = k;
+  std::map<std::pair<double, double>, std::size_t> firstSeen;
+  long misordered = 0, pairs = 0;
+  for (std::size_t i = 0; i < o.size(); ++i) {
+    const auto key = std::make_pair(p[2 * i], p[2 * i + 1]);
+    const auto it = firstSeen.find(key);
+    if (it == firstSeen.end()) {
+      firstSeen.emplace(key, i);
+    } else {
+      ++pairs;
+      misordered += pos[it->second] > pos[i];
+    }
+  }
+  CHECK(pairs == 200);
+  CHECK(misordered == 0);
 }
