@@ -319,73 +319,9 @@ void radixSort(std::vector<std::uint64_t>& a, int lo, int hi) {
 // Termination: a refined cell's points span at most one cell, 2^-depth (depth >= 9) of the box
 // they were sorted in, so every level shrinks the box by at least 2^8, and after a few hundred
 // levels (the ratio of the largest to the smallest double, 2^2098) the box is flat: equal
-// points, which keep their input order. Cost: a cell that keeps most of its parent's points
-// level after level would make that O(n levels); medianSort bounds it (see sortRun). Uniform
-// data has almost no shared cells: it costs a scan.
-// The state after sub-quadrant q of state s (HilbertTables::step's update of the frame).
-int nextState(int s, int q) {
-  int redAxis = s & 1;
-  bool redNeg = (s >> 1) & 1, blueNeg = (s >> 2) & 1;
-  if (q == 0 || q == 3) {
-    redAxis = 1 - redAxis;
-    std::swap(redNeg, blueNeg);
-    if (q == 3) {
-      redNeg = !redNeg;
-      blueNeg = !blueNeg;
-    }
-  }
-  return redAxis | int(redNeg) << 1 | int(blueNeg) << 2;
-}
-
-// The Hilbert curve by median splits (the idea of CGAL's spatial_sort): halve the points along
-// the red axis, then each half along the blue axis, both at medians, so that the four quarters
-// come in the curve's order 0 (-red, -blue), 1 (-red, +blue), 2 (+red, +blue), 3 (+red, -blue),
-// and recurse with each quarter's frame. Every level halves the points whatever their spread,
-// hence O(len log len). Ties on a coordinate go by index, so equal points keep their order.
-// The points are copied next to their indices, so that the partitions run through memory.
-struct SortPoint {
-  double c[2];
-  std::size_t i;
-};
-
-void medianSortPoints(SortPoint* p, std::size_t len, int s) {
-  if (len < 2) return;
-  const int redAxis = s & 1, blueAxis = 1 - redAxis;
-  const bool redNeg = (s >> 1) & 1, blueNeg = (s >> 2) & 1;
-  // Puts the median of [a, b) at mid along `axis`, the smaller side first (larger if `down`).
-  auto split = [](SortPoint* a, SortPoint* mid, SortPoint* b, int axis, bool down) {
-    std::nth_element(a, mid, b, [axis, down](const SortPoint& x, const SortPoint& y) {
-      const double u = x.c[axis], v = y.c[axis];
-      return u != v ? (down ? u > v : u < v) : x.i < y.i;
-    });
-  };
-  SortPoint* const last = p + len;
-  SortPoint* const m = p + len / 2;
-  split(p, m, last, redAxis, redNeg);  // [p, m): the -red half
-  SortPoint* const m0 = p + (m - p) / 2;
-  SortPoint* const m1 = m + (last - m) / 2;
-  split(p, m0, m, blueAxis, blueNeg);    // -blue first
-  split(m, m1, last, blueAxis, !blueNeg);  // +blue first
-  medianSortPoints(p, std::size_t(m0 - p), nextState(s, 0));
-  medianSortPoints(m0, std::size_t(m - m0), nextState(s, 1));
-  medianSortPoints(m, std::size_t(m1 - m), nextState(s, 2));
-  medianSortPoints(m1, std::size_t(last - m1), nextState(s, 3));
-}
-
-void medianSort(const std::vector<double>& xy, std::size_t* idx, std::size_t len, int s) {
-  std::vector<SortPoint> p(len);
-  for (std::size_t k = 0; k < len; ++k) p[k] = {{xy[2 * idx[k]], xy[2 * idx[k] + 1]}, idx[k]};
-  medianSortPoints(p.data(), len, s);
-  for (std::size_t k = 0; k < len; ++k) idx[k] = p[k].i;
-}
-
+// points, which keep their input order. Uniform data has almost no shared cells: it costs a scan.
 // Orders idx[0..len) (one cell's points, curve state `state`) along the curve over their box.
-// `crowded` counts the levels above in a row where one cell kept more than half of the points:
-// points spread over many binades (2^-1070 beside 2^1019) resolve only depth binades per level,
-// so after two such levels the median sort takes over and bounds the work by O(len log len).
-void sortRun(const std::vector<double>& xy, std::size_t* idx, std::size_t len, int state,
-             int crowded) {
-  if (crowded >= 2) return medianSort(xy, idx, len, state);
+void sortRun(const std::vector<double>& xy, std::size_t* idx, std::size_t len, int state) {
   HilbertBox b{xy[2 * idx[0]], xy[2 * idx[0] + 1], 0};
   double xmax = b.xmin, ymax = b.ymin;
   for (std::size_t k = 1; k < len; ++k) {
@@ -427,8 +363,7 @@ void sortRun(const std::vector<double>& xy, std::size_t* idx, std::size_t len, i
   for (const auto& r : runs) {
     int s = state;
     cells.key(xy, idx[r.first], s);  // the state of this cell
-    const std::size_t m = r.second - r.first;
-    sortRun(xy, idx + r.first, m, s, 2 * m > len ? crowded + 1 : 0);
+    sortRun(xy, idx + r.first, r.second - r.first, s);
   }
 }
 
@@ -442,7 +377,7 @@ void refineSorted(const std::vector<double>& xy, const BoxCells& cells, std::siz
     if (e - a < 2) continue;
     int s = 0;
     cells.key(xy, order[a], s);
-    sortRun(xy, order + a, e - a, s, 2 * (e - a) > n ? 1 : 0);
+    sortRun(xy, order + a, e - a, s);
   }
 }
 //! [adaptiveHilbert]

@@ -67,9 +67,7 @@ std::vector<std::uint64_t> hilbertKeysFast(const std::vector<double>& xy, int de
 /// they do not fit, beyond about 2^24 points). With `adaptive` (the default), the distinct
 /// points that share a cell are ordered again along the curve over their own bounding box,
 /// recursively (keys refined where points are dense, so that a cluster or a far outlier does not
-/// leave thousands of points in input order; a cell that keeps most of the points twice in a row
-/// is ordered by median splits along the curve instead, O(n log n) for any spread of
-/// exponents); equal points keep their input order. With
+/// leave thousands of points in input order); equal points keep their input order. With
 /// adaptive = false, the fixed grid of the notes: equal keys keep their input order.
 /// Deterministic either way.
 std::vector<std::size_t> hilbertOrder(const std::vector<double>& xy, int depth = 0,

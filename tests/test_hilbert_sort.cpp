@@ -222,10 +222,9 @@ TEST_CASE("2.3.5 adaptive Hilbert order: points at every scale of the double ran
   CHECK(isPermutation(dt::brioCoinOrder(p, 2), p.size() / 2));
 }
 
-TEST_CASE("2.3.5 adaptive Hilbert order: nested clusters switch to median splits that still follow the curve") {
+TEST_CASE("2.3.5 adaptive Hilbert order: clusters nested two deep are toured like uniform points") {
   // 4000 uniform points in the unit square, 4000 in a square of side 1e-150 and, inside that,
-  // 8000 in a square of side 1e-300: twice in a row one cell keeps most of the points, so the
-  // innermost cluster is ordered by median splits.
+  // 8000 in a square of side 1e-300: the innermost cluster is reached after two refinements.
   const std::size_t m = 8000;
   XY p = dt::uniformPoints(4000, 21);
   const XY mid = dt::uniformPoints(4000, 22, 0, 1e-150);  // at the origin: widths this small
@@ -253,7 +252,7 @@ TEST_CASE("2.3.5 adaptive Hilbert order: nested clusters switch to median splits
   // A Hilbert tour of m uniform points is about sqrt(m) sides long; a random order, m / 2.
   CHECK(adaptive < 1.3 * std::sqrt(double(m)));
   CHECK(fixed > 20 * std::sqrt(double(m)));
-  // Equal points keep their input order, in the median splits too.
+  // Equal points keep their input order.
   std::vector<std::size_t> pos(o.size());
   for (std::size_t k = 0; k < o.size(); ++k) pos[o[k]] = k;
   std::map<std::pair<double, double>, std::size_t> firstSeen;
