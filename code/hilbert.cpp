@@ -312,7 +312,7 @@ void radixSort(std::vector<std::uint64_t>& a, int lo, int hi) {
 //! [adaptiveHilbert]
 // The adaptive refinement. A fixed grid over the bounding box puts a dense cluster, or all the
 // points but one far outlier, into a single cell, and a cell's points come in input order: a
-// random order, for which walks are long. So every cell that holds several distinct points is
+// random order, for which walks are long. So every cell that holds more than a few points is
 // ordered again, by the same curve over the bounding box of its own points, started in the state
 // in which the curve enters the cell (so that it still enters and leaves on the right sides),
 // and so on recursively: in effect, the keys are refined wherever points are dense.
@@ -320,6 +320,10 @@ void radixSort(std::vector<std::uint64_t>& a, int lo, int hi) {
 // they were sorted in, so every level shrinks the box by at least 2^8, and after a few hundred
 // levels (the ratio of the largest to the smallest double, 2^2098) the box is flat: equal
 // points, which keep their input order. Uniform data has almost no shared cells: it costs a scan.
+// A cell of at most this many points keeps their input order: they are neighbours anyway, and
+// points on a curve share cells two by two, where refining them would cost more than it saves.
+constexpr std::size_t kSmallCell = 4;
+
 // Orders idx[0..len) (one cell's points, curve state `state`) along the curve over their box.
 void sortRun(const std::vector<double>& xy, std::size_t* idx, std::size_t len, int state) {
   HilbertBox b{xy[2 * idx[0]], xy[2 * idx[0] + 1], 0};
@@ -334,7 +338,13 @@ void sortRun(const std::vector<double>& xy, std::size_t* idx, std::size_t len, i
   const BoxCells cells(b, hilbertAutoDepth(len));
   std::vector<std::pair<std::size_t, std::size_t>> runs;  // [begin, end) of shared cells
   {  // scoped: the keys are freed before the recursion, which may go a few hundred levels deep
-    std::vector<std::pair<std::uint64_t, std::size_t>> kv(len);  // (key, position): stable
+    // (key, position): stable. Most shared cells hold two or three points (points on a curve,
+    // clusters): those stay on the stack.
+    std::pair<std::uint64_t, std::size_t> kvSmall[16];
+    std::size_t oldSmall[16];
+    std::vector<std::pair<std::uint64_t, std::size_t>> kvBig(len <= 16 ? 0 : len);
+    std::vector<std::size_t> oldBig(len <= 16 ? 0 : len);
+    std::pair<std::uint64_t, std::size_t>* const kv = len <= 16 ? kvSmall : kvBig.data();
     const int posBits = bitsFor(len), keyBits = 2 * cells.depth;
     if (len >= 4096 && keyBits + posBits <= 64) {  // large runs (an outlier's): the radix sort
       std::vector<std::uint64_t> w(len);
@@ -350,14 +360,15 @@ void sortRun(const std::vector<double>& xy, std::size_t* idx, std::size_t len, i
         int s = state;
         kv[k] = {cells.key(xy, idx[k], s), k};
       }
-      std::sort(kv.begin(), kv.end());
+      std::sort(kv, kv + len);
     }
-    const std::vector<std::size_t> old(idx, idx + len);
+    std::size_t* const old = len <= 16 ? oldSmall : oldBig.data();
+    std::copy(idx, idx + len, old);
     for (std::size_t k = 0; k < len; ++k) idx[k] = old[kv[k].second];
-    if (kv.front().first == kv.back().first) return;  // no split (cannot happen: safety)
+    if (kv[0].first == kv[len - 1].first) return;  // no split (cannot happen: safety)
     for (std::size_t a = 0, e; a < len; a = e) {
       for (e = a + 1; e < len && kv[e].first == kv[a].first;) ++e;
-      if (e - a >= 2) runs.emplace_back(a, e);
+      if (e - a > kSmallCell) runs.emplace_back(a, e);
     }
   }
   for (const auto& r : runs) {
@@ -374,7 +385,7 @@ void refineSorted(const std::vector<double>& xy, const BoxCells& cells, std::siz
                   std::size_t n, Same same) {
   for (std::size_t a = 0, e; a < n; a = e) {
     for (e = a + 1; e < n && same(a, e);) ++e;
-    if (e - a < 2) continue;
+    if (e - a <= kSmallCell) continue;
     int s = 0;
     cells.key(xy, order[a], s);
     sortRun(xy, order + a, e - a, s);

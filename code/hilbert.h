@@ -64,8 +64,8 @@ std::vector<std::uint64_t> hilbertKeysFast(const std::vector<double>& xy, int de
 
 /// The Hilbert sort of 2.3.5: indices of the points ordered by Hilbert key. depth = 0 chooses
 /// hilbertAutoDepth(n). One radix sort of (key, index) packed in 64 bits (a comparison sort when
-/// they do not fit, beyond about 2^24 points). With `adaptive` (the default), the distinct
-/// points that share a cell are ordered again along the curve over their own bounding box,
+/// they do not fit, beyond about 2^24 points). With `adaptive` (the default), the points
+/// of a cell holding more than four are ordered again along the curve over their own bounding box,
 /// recursively (keys refined where points are dense, so that a cluster or a far outlier does not
 /// leave thousands of points in input order); equal points keep their input order. With
 /// adaptive = false, the fixed grid of the notes: equal keys keep their input order.
