@@ -54,6 +54,9 @@ head         base               scripts
 tail         base               scripts
 ls           base               scripts/fuzz.sh
 cp           base               scripts
+git          git                scripts/mutants.sh (a temporary copy of the tree)
+tar          base               scripts/mutants.sh
+touch        base               scripts/mutants.sh
 mv           base               scripts
 date         base               scripts
 sleep        base               scripts
@@ -67,6 +70,9 @@ diff         base               tests
 env          base               scripts (#!/usr/bin/env bash)
 bash         base               scripts
 perl         base               scripts/check_deps.sh (perl-base)
+sh           base               tests/test_cli.cpp tests/test_bad_input.cpp (a signal during the writes, a pipe)
+ln           base               tests/test_cli.cpp (a hard link to the input)
+mkfifo       base               tests/test_bad_input.cpp (a named pipe as input)
 '
 # Shell words that are not programs (keywords and builtins) are skipped by the scan.
 BUILTINS=" if then else elif fi for while until do done case esac in function return local export
