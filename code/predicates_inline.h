@@ -22,6 +22,7 @@ enum Stage : int {
   kSmallInt = 2,  ///< the floating-point value itself, proved exact (small multiples of 2^k)
   kWide = 3,      ///< the same integers, up to 62 bits, evaluated in 128- and 256-bit integers
   kExtended = 4,  ///< the filter again, in floating point with a separate integer exponent
+  kStageCount = 5 ///< the number of stages (tests/stage_tally.h reads it)
 };
 
 constexpr double kU = 0x1p-53;  // unit roundoff of binary64, round to nearest

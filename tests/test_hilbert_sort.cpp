@@ -149,7 +149,7 @@ bool isPermutation(std::vector<std::size_t> o, std::size_t n) {
 
 }  // namespace
 
-TEST_CASE("2.3.5 adaptive Hilbert order: still sorted by the fixed-grid key; equal points keep their input order") {
+TEST_CASE("Hilbert sort (2.3.5) adaptive: still sorted by the fixed-grid key; equal points keep their input order") {
   for (int depth : {1, 3, 0}) {
     const XY p = mixedPoints(5000, 40 + unsigned(depth));
     const std::vector<std::size_t> o = dt::hilbertOrder(p, depth);
@@ -166,7 +166,7 @@ TEST_CASE("2.3.5 adaptive Hilbert order: still sorted by the fixed-grid key; equ
   }
 }
 
-TEST_CASE("2.3.5 adaptive Hilbert order: one far outlier leaves the others' tour as short as without it") {
+TEST_CASE("Hilbert sort (2.3.5) adaptive: one far outlier leaves the others' tour as short as without it") {
   const std::size_t n = 20000;
   XY p = dt::outlierPoints(n, 5, 1e12);
   XY q;  // the same points without the outlier
@@ -189,7 +189,7 @@ TEST_CASE("2.3.5 adaptive Hilbert order: one far outlier leaves the others' tour
   CHECK(brio < 1.2 * tourWithin(q, dt::brioOrder(q, 1), 0, 1));
 }
 
-TEST_CASE("2.3.5 adaptive Hilbert order: a cluster of width 1e-9 beside uniform points is toured like uniform points") {
+TEST_CASE("Hilbert sort (2.3.5) adaptive: a cluster of width 1e-9 beside uniform points is toured like uniform points") {
   const std::size_t n = 20000;
   const XY p = dt::clusterBesideUniform(n, 6, 1e-9);
   auto clusterTour = [&](const std::vector<std::size_t>& o) {
@@ -212,7 +212,7 @@ TEST_CASE("2.3.5 adaptive Hilbert order: a cluster of width 1e-9 beside uniform 
   CHECK(fixed > 10 * adaptive);
 }
 
-TEST_CASE("2.3.5 adaptive Hilbert order: points at every scale of the double range, duplicates, terminate") {
+TEST_CASE("Hilbert sort (2.3.5) adaptive: points at every scale of the double range and duplicates terminate") {
   XY p = dt::exponentSpreadPoints(3000, 8);
   const XY d = dt::logRadiusPoints(3000, 9);
   p.insert(p.end(), d.begin(), d.end());
@@ -222,7 +222,7 @@ TEST_CASE("2.3.5 adaptive Hilbert order: points at every scale of the double ran
   CHECK(isPermutation(dt::brioCoinOrder(p, 2), p.size() / 2));
 }
 
-TEST_CASE("2.3.5 adaptive Hilbert order: clusters nested two deep are toured like uniform points") {
+TEST_CASE("Hilbert sort (2.3.5) adaptive: clusters nested two deep are toured like uniform points") {
   // 4000 uniform points in the unit square, 4000 in a square of side 1e-150 and, inside that,
   // 8000 in a square of side 1e-300: the innermost cluster is reached after two refinements.
   const std::size_t m = 8000;

@@ -225,7 +225,7 @@ double ulps(double x, int n) {
 
 }  // namespace
 
-TEST_CASE("predicate core: exponents spread over the whole double range go to the extended-exponent stage, never to a wrong sign") {
+TEST_CASE("predicate core exponents spread over the whole double range go to the extended-exponent stage and never get a wrong sign") {
   std::mt19937_64 rng(913);
   Tally o, c;
   for (int it = 0; it < 30000; ++it) {
@@ -243,7 +243,7 @@ TEST_CASE("predicate core: exponents spread over the whole double range go to th
   CHECK(c.stage[dt::pred::kExact] < c.calls / 100);
 }
 
-TEST_CASE("predicate core: exactly degenerate inputs at wildly different powers of two and their one-ulp neighbours agree with GMP") {
+TEST_CASE("predicate core exactly degenerate inputs at wildly different powers of two and their one-ulp neighbours agree with GMP") {
   // Points s_i (p, q) on a line through the origin, s_i = +-2^k_i with k_i spread over the
   // range (p, q small integers, so every coordinate is exact): any three are collinear and any
   // four "cocircular" (incircle of four collinear points is 0). Then each coordinate nudged by
@@ -274,7 +274,7 @@ TEST_CASE("predicate core: exactly degenerate inputs at wildly different powers 
   CHECK(c.stage[dt::pred::kExact] > 1000);    // exact zeros: GMP, as it must be
 }
 
-TEST_CASE("predicate core: subnormal coordinates beside huge ones agree with GMP") {
+TEST_CASE("predicate core subnormal coordinates beside huge ones agree with GMP") {
   std::mt19937_64 rng(915);
   std::uniform_int_distribution<int> which(0, 3), sub(1, 1 << 20);
   Tally o, c;
@@ -305,7 +305,7 @@ TEST_CASE("predicate core: subnormal coordinates beside huge ones agree with GMP
   CHECK(d.m == 0);
 }
 
-TEST_CASE("predicate core: dt::orient2d / dt::incircle count the extended-exponent stage") {
+TEST_CASE("predicate core dt::orient2d / dt::incircle count the extended-exponent stage") {
   dt::predicateCounters().reset();
   // (2^1000, 0), (0, 2^1000), (-2^1000, 3): products overflow; differences round (3 - 2^1000).
   CHECK(dt::orient2d(0x1p1000, 0, 0, 0x1p1000, -0x1p1000, 3) == 1);
