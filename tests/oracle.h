@@ -100,17 +100,18 @@ class HardInputs {
  public:
   explicit HardInputs(std::uint64_t seed) : g_(seed) {}
   int family() const { return family_; }
-  static constexpr int kOrientFamilies = 6;
-  static constexpr int kIncircleFamilies = 7;
+  static constexpr int kOrientFamilies = 7;
+  static constexpr int kIncircleFamilies = 8;
   static const char* orientName(int f) {
     static const char* n[] = {"collinear lattice", "lattice moved 1-2 ulps", "rounded near-collinear",
-                              "exponent spread 2^-1000..2^1000", "subnormal", "generic"};
+                              "exponent spread 2^-1000..2^1000", "subnormal",
+                              "whole range 2^-1074..2^1023", "generic"};
     return n[f];
   }
   static const char* incircleName(int f) {
     static const char* n[] = {"Pythagorean r = 1185665", "Pythagorean moved 1-2 ulps",
                               "lattice rectangle", "rounded circle", "exponent spread",
-                              "subnormal", "generic"};
+                              "subnormal", "whole range 2^-1074..2^1023", "generic"};
     return n[f];
   }
 
@@ -151,6 +152,9 @@ class HardInputs {
         v[5] = nudge(v[1] + t * (v[3] - v[1]), uni(-1, 1));
         break;
       }
+      case 5:  // every coordinate at its own exponent anywhere in the range (overflow, underflow)
+        for (int i = 0; i < 6; ++i) v[i] = std::ldexp(real(), uni(-1074, 1023));
+        break;
       default:
         for (int i = 0; i < 6; ++i) v[i] = std::ldexp(real(), uni(-2, 2));
     }
@@ -227,6 +231,9 @@ class HardInputs {
         }
         break;
       }
+      case 6:  // every coordinate at its own exponent anywhere in the range (overflow, underflow)
+        for (int i = 0; i < 8; ++i) v[i] = std::ldexp(real(), uni(-1074, 1023));
+        break;
       default:
         for (int i = 0; i < 8; ++i) v[i] = std::ldexp(real(), uni(-2, 2));
     }

@@ -1,6 +1,8 @@
 // bench_kernels: the corrected listings (Hilbert order), the fast kernel and, when it is
 // installed, CGAL's Delaunay_triangulation_2, on the same point sets (uniform, clustered, grid,
-// circle). Each run is a child process, so its peak memory (ru_maxrss) is its own; the CPU time
+// circle; one far outlier, a cluster of width 1e-9 beside uniform points, log-uniform radii
+// (2.3.5, the adaptive order); exponents spread over the double range, 10^300 beside 10^-300
+// (2.3.1, the extended-exponent stage)). Each run is a child process, so its peak memory (ru_maxrss) is its own; the CPU time
 // covers everything from the coordinates to the triangulation (sorting included). Writes
 // table_bench.{md,csv,html}.
 //
@@ -33,6 +35,7 @@
 #include "common.h"
 #include "fast_delaunay.h"
 #include "fast_parallel.h"
+#include "generators.h"
 #include "hilbert.h"
 #include "triangulate.h"
 
@@ -51,14 +54,24 @@ double cpuSeconds() {
   return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
 }
 
-enum class Family { Uniform, Clustered, Grid, Circle };
+enum class Family { Uniform, Clustered, Grid, Circle, Outlier, ClusterBeside, LogRadius,
+                    ExponentSpread, Mixed300 };
 const char* familyName(Family f) {
   switch (f) {
     case Family::Uniform: return "uniform";
     case Family::Clustered: return "clustered";
     case Family::Grid: return "grid";
-    default: return "circle";
+    case Family::Circle: return "circle";
+    case Family::Outlier: return "outlier";
+    case Family::ClusterBeside: return "cluster 1e-9";
+    case Family::LogRadius: return "log radius";
+    case Family::ExponentSpread: return "exponent spread";
+    default: return "1e+-300";
   }
+}
+// Exponent spread: 2.3.1's GMP-heavy case; 20,000 points (issue 18) whatever the size asked.
+std::size_t familySize(Family f, std::size_t n) {
+  return f == Family::ExponentSpread ? std::min<std::size_t>(n, 20000) : n;
 }
 
 double wallSeconds() {
@@ -100,7 +113,22 @@ std::string methodName(Method m) {
 // The point sets, from fixed seeds. Grid: the integer points of a square (about n of them,
 // shuffled), all degenerate; circle: n points on the unit circle, rounded (nearly cocircular).
 std::vector<double> makePoints(Family f, std::size_t n) {
-  std::mt19937_64 rng(20260 + unsigned(f));
+  const std::uint64_t seed = 20260 + unsigned(f);
+  switch (f) {  // the families of generators.h
+    case Family::Outlier: return dt::outlierPoints(n, seed, 1e12);
+    case Family::ClusterBeside: return dt::clusterBesideUniform(n, seed, 1e-9);
+    case Family::LogRadius: return dt::logRadiusPoints(n, seed, 1e-6, 1e6);
+    case Family::ExponentSpread: return dt::exponentSpreadPoints(n, seed, -1070, 1019);
+    case Family::Mixed300: {  // half uniform in [-1, 1)^2 10^300, half 10^-300, shuffled
+      std::vector<double> p = dt::uniformPoints(n / 2, seed, -1e300, 1e300);
+      const std::vector<double> q = dt::uniformPoints(n - n / 2, seed + 1, -1e-300, 1e-300);
+      p.insert(p.end(), q.begin(), q.end());
+      dt::shufflePoints(p, seed + 2);
+      return p;
+    }
+    default: break;
+  }
+  std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> u(0, 1);
   std::vector<double> xy;
   xy.reserve(2 * n);
@@ -269,21 +297,25 @@ int main(int argc, char** argv) {
               " at the start; the fast kernels' triangles are validated exactly)";
   t.header = {"points", "n", "kernel", "CPU time (s)", "time ratio", "wall (s)", "wall ratio",
               "peak (MB)", "peak ratio", "triangles", "same count"};
-  const Family families[] = {Family::Uniform, Family::Clustered, Family::Grid, Family::Circle};
-  // For the page's targets: at the largest n, the speed-up on uniform points, the worst time
-  // and peak ratios of the fast kernel, and the listings' worst time ratio (all to CGAL).
+  const Family families[] = {Family::Uniform,        Family::Clustered, Family::Grid,
+                             Family::Circle,         Family::Outlier,   Family::ClusterBeside,
+                             Family::LogRadius,      Family::ExponentSpread, Family::Mixed300};
+  const std::size_t nFamilies = sizeof families / sizeof families[0];
+  // For the page's targets: at the largest n where CGAL runs (not at 10^8; a family measured
+  // at one size only: there), the speed-up on uniform points, the worst time and peak ratios
+  // of the fast kernel, and the listings' worst time ratio (all to CGAL).
   double uniformSpeedup = 0, worstFast = 0, worstPeak = 0, worstListings = 0;
   std::string worstListingsFamily, winsOn, losesOn;
-  // The verdicts are taken at the largest n where CGAL runs (not at 10^8).
   std::size_t verdictN = 0;
   for (std::size_t n : sizes)
     if (n < 100000000) verdictN = n;
   std::uint64_t runs = 0;
-  for (std::size_t n : sizes) runs += n >= 100000000 ? 2 : 4 * methods.size();
+  for (std::size_t n : sizes) runs += n >= 100000000 ? 2 : nFamilies * methods.size();
   ch::Progress progress("bench_kernels", runs);
   std::uint64_t done = 0;
   for (std::size_t n : sizes) {
     for (Family f : families) {
+      if (familySize(f, n) < n && n != sizes.front()) continue;  // its one size: measured once
       // 10^8: the fast kernels on uniform points only (CGAL and the listings would take long).
       if (n >= 100000000 && f != Family::Uniform) continue;
       std::vector<Measure> res;
@@ -295,7 +327,8 @@ int main(int argc, char** argv) {
         if (n >= 100000000) std::cout << "running " << methodName(m) << " at 10^8..." << std::endl;
         Measure best;
         for (int k = 0; k < r; ++k) {
-          const Measure x = runChild(m, f, n, k == 0);  // validated once: the same points
+          // Validated once (the first repetition): the same points every time.
+          const Measure x = runChild(m, f, familySize(f, n), k == 0);
           if (!x.ok) {
             best = x;
             break;
@@ -332,7 +365,8 @@ int main(int argc, char** argv) {
                ratios && base->peakKB > 0 ? ch::fmt("%.2f", double(x.peakKB) / double(base->peakKB))
                                           : "-",
                std::to_string(x.triangles), same ? "yes" : "NO"});
-        if (haveCgal && n == verdictN && x.ok && ratios && ran[k] != Method::Cgal) {
+        const bool lastSize = n == verdictN || familySize(f, verdictN) < verdictN;
+        if (haveCgal && lastSize && x.ok && ratios && ran[k] != Method::Cgal) {
           const double tr = x.seconds / base->seconds;
           if (ran[k] == Method::Fast) {
             std::string& list = tr < 1.0 ? winsOn : losesOn;
