@@ -5,6 +5,7 @@
 
 namespace dt {
 
+//! [stuckRecoveryExample]
 StuckRecovery stuckRecoveryExample() {
   // BEGIN SOLUTION 2.3.6-1
   // A flat triangle u v y: its circumcircle has radius about 1/(8 d) = 12.5 and swallows the
@@ -16,5 +17,6 @@ StuckRecovery stuckRecoveryExample() {
   return StuckRecovery{{0, 0, 1, 0, 0.5, -d}, 2.0};
   // END SOLUTION 2.3.6-1
 }
+//! [stuckRecoveryExample]
 
 }  // namespace dt

@@ -36,6 +36,7 @@ int crossSign(Point2 a, Point2 b, Point2 c, Point2 d) {
 }  // namespace
 // END SOLUTION 2.2.2-1
 
+//! [oneEdgeRegionBounded]
 bool oneEdgeRegionBounded(const std::vector<Point2>& poly, std::size_t i) {
   const std::size_t m = poly.size();
   if (m < 3) throw std::invalid_argument("oneEdgeRegionBounded: fewer than 3 corners");
@@ -52,5 +53,6 @@ bool oneEdgeRegionBounded(const std::vector<Point2>& poly, std::size_t i) {
   return crossSign(a, b, c, d) > 0;
   // END SOLUTION 2.2.2-1
 }
+//! [oneEdgeRegionBounded]
 
 }  // namespace dt
