@@ -180,13 +180,15 @@ cmd_start() {
   local id="$1" dir="$2"
   exists "$id"
   if [ -e "$dir" ] && [ -n "$(ls -A "$dir" 2>/dev/null)" ]; then die "$dir exists and is not empty"; fi
+  mkdir -p "$dir"
+  dir="$(cd "$dir" && pwd)"
   copy_project "$HERE" "$dir"
   strip_tree "$id" "$dir"
   local kind; kind="$(field "$id" kind)"
   echo "exercise $id ($kind): $(field "$id" title)"
   echo "statement: book page $(field "$id" page) (book/$(field "$id" page).md, section Exercises)"
   if [ "$kind" = implement ]; then
-    echo "your code goes where $dir/$(region_files "$id" "$dir" | head -n 1) throws \"exercise $id: not implemented yet\""
+    echo "your code goes where $(region_files "$id" "$HERE" | grep '^code/' | sed "s#^#$dir/#" | tr '\n' ' ')throws \"exercise $id: not implemented yet\""
   fi
   echo "check it with: scripts/exercise.sh check $id   (from $dir)"
 }
@@ -269,7 +271,10 @@ cmd_handout() {
       echo
       echo "## Exercise $id: $(field "$id" title) ($(field "$id" kind))"
       echo
-      statement "$id" | to_markdown "$HERE"
+      # The page's bold label repeats the heading.
+      statement "$id" | to_markdown "$HERE" | sed -E '1s/^\*\*Exercise [^*]*\*\* \([a-z]*\)\. //'
+      echo
+      echo "(Book page \`$(field "$id" page)\`, section Exercises.)"
       for fig in $(field "$id" figures); do
         if [ -f "$figdir/$fig" ]; then
           cp "$figdir/$fig" "$out/"
@@ -294,12 +299,15 @@ cmd_handout() {
       echo
       echo "## Exercise $id: $(field "$id" title)"
       echo
+      # The entry without its own heading, then the measured tables that answer it.
       awk -v id="$id" 'index($0, "BEGIN SOLUTION " id " ") { p = 1; next }
-                       index($0, "END SOLUTION " id " ") { p = 0 } p' "$HERE/book/solutions.md" |
-        to_markdown "$HERE"
-      echo
-      echo "Tests:"
-      field "$id" test | sed 's/^/- /'
+                       index($0, "END SOLUTION " id " ") { p = 0 } p && !/^## /' \
+        "$HERE/book/solutions.md" | to_markdown "$HERE"
+      for tab in $(field "$id" tables); do
+        echo
+        if [ -f "$figdir/$tab" ]; then cat "$figdir/$tab"
+        else echo "(Table \`$tab\`: run \`build/$(field "$id" program)\` first; it is not built yet.)"; fi
+      done
     done
   } >"$sols"
   echo "$sheet"
