@@ -138,7 +138,7 @@ run_tests() {
         echo "FAIL $id: no test named '$name' in $bin"
         return 1
       fi
-      echo "FAIL $id: test '$name'"
+      echo "FAIL $id: test '$(sed -n 's/^TEST CASE: *//p' <<<"$out" | head -n 1)'"
       # The first failing check as doctest reports it (location, expression, values).
       awk '/ERROR:|FATAL ERROR|THREW|threw/ && !shown { shown = 1; p = 1 }
            p && /^[=]+$/ { exit }
@@ -308,6 +308,9 @@ cmd_handout() {
         if [ -f "$figdir/$tab" ]; then cat "$figdir/$tab"
         else echo "(Table \`$tab\`: run \`build/$(field "$id" program)\` first; it is not built yet.)"; fi
       done
+      echo
+      echo "Tests (doctest names or patterns, \`build/dt_tests -tc='...'\`):"
+      field "$id" test | sed 's/^/- /'
     done
   } >"$sols"
   echo "$sheet"
@@ -367,7 +370,6 @@ cmd_lint() {
   [ $# -eq 1 ] || die "usage: lint BUILD"
   local bin="$1/dt_tests" id name fail=0 list kind page
   [ -x "$bin" ] || die "no $bin"
-  list="$("$bin" --list-test-cases --no-version 2>&1)"
   for id in $(ids); do
     kind="$(field "$id" kind)"; page="$(field "$id" page)"
     case "$kind" in implement|measure|prove) ;; *) echo "$id: unknown kind '$kind'"; fail=1 ;; esac
@@ -375,7 +377,9 @@ cmd_lint() {
     [ -n "$(statement "$id")" ] || { echo "$id: no '<!-- EXERCISE $id -->' statement on book/$page.md"; fail=1; }
     [ "$(field "$id" test | wc -l)" = "$(field "$id" hint | wc -l)" ] || { echo "$id: not one hint per test"; fail=1; }
     while IFS= read -r name; do
-      grep -qxF -- "$name" <<<"$list" || { echo "$id: no test named '$name'"; fail=1; }
+      list="$("$bin" --list-test-cases --test-case="${name//,/?}" --no-version 2>&1)"
+      grep -q 'passing the current filters: 1$' <<<"$list" ||
+        { echo "$id: '$name' does not name exactly one test case"; fail=1; }
     done < <(field "$id" test)
     if [ "$kind" = implement ]; then
       region_files "$id" "$HERE" | grep -q '^code/' || { echo "$id: no solution region in code/"; fail=1; }

@@ -1,4 +1,4 @@
-/// \file test_exercises_2_2_2.cpp Exercises of section 2.2.2 (exercises/exercises.txt): the region of points that see exactly one hull edge, and the lexicographically largest vertex.
+/// \file test_2_2_2_exercises.cpp Exercises of section 2.2.2 (exercises/exercises.txt): the region of points that see exactly one hull edge, and the lexicographically largest vertex.
 #include <doctest/doctest.h>
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-/// \file test_exercises_2_3_6.cpp Exercises of section 2.3.6 (exercises/exercises.txt): where 2.2.1's flips are stuck, and what a flip makes of the new edge.
+/// \file test_2_3_6_exercises.cpp Exercises of section 2.3.6 (exercises/exercises.txt): where 2.2.1's flips are stuck, and what a flip makes of the new edge.
 #include <doctest/doctest.h>
 
 #include <random>

@@ -1,4 +1,4 @@
-/// \file test_exercises_2_3_2.cpp Exercise 2.3.2-3 (exercises/exercises.txt): the counts of points in convex position, and the fan of a parabola.
+/// \file test_2_3_2_exercises.cpp Exercise 2.3.2-3 (exercises/exercises.txt): the counts of points in convex position, and the fan of a parabola.
 #include <doctest/doctest.h>
 
 #include <algorithm>

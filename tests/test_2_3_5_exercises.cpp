@@ -1,4 +1,4 @@
-/// \file test_exercises_2_3_5.cpp Exercises of section 2.3.5 (exercises/exercises.txt): the four frames of Listing 2.8, the bottom row of H_k, points on a circle, and the first BRIO rounds.
+/// \file test_2_3_5_exercises.cpp Exercises of section 2.3.5 (exercises/exercises.txt): the four frames of Listing 2.8, the bottom row of H_k, points on a circle, and the first BRIO rounds.
 #include <doctest/doctest.h>
 
 #include <algorithm>
