@@ -134,8 +134,8 @@ run_tests() {
     local rc=$?
     set -e
     if ! grep -qE 'test cases: *1 \| *1 passed' <<<"$out" || [ $rc -ne 0 ]; then
-      if grep -qE 'test cases: *0 ' <<<"$out"; then
-        echo "FAIL $id: no test named '$name' in $bin"
+      if ! grep -qE 'test cases: *1 \|' <<<"$out"; then
+        echo "FAIL $id: '$name' does not name exactly one test case of $bin"
         return 1
       fi
       echo "FAIL $id: test '$(sed -n 's/^TEST CASE: *//p' <<<"$out" | head -n 1)'"
@@ -161,18 +161,11 @@ cmd_list() {
   done
 }
 
-# copy_project SRC DIR: the project's own files (no build directories, no git history: the
-# history holds the solutions).
+# copy_project SRC DIR: the project's own files, without build directories and without the git
+# history (the history holds the solutions).
 copy_project() {
-  local src="$1" dir="$2"
-  mkdir -p "$dir"
-  if git -C "$src" rev-parse --is-inside-work-tree >/dev/null 2>&1; then
-    (cd "$src" && git ls-files -co --exclude-standard -z | grep -zv '^build' |
-       xargs -0 cp --parents -t "$dir")
-  else
-    (cd "$src" && find . -path './build*' -prune -o -path './.git' -prune -o -type f -print0 |
-       xargs -0 cp --parents -t "$dir")
-  fi
+  (cd "$1" && find . \( -path './build*' -o -path './.git' \) -prune -o -type f -print0 |
+     xargs -0 cp --parents -t "$2")
 }
 
 cmd_start() {
@@ -330,6 +323,12 @@ cmd_selftest() {
       if [ "$(field "$id" kind)" = implement ]; then sel="$sel $id"; fi
     done
   fi
+  # The objects of the current test sources only: a renamed test file leaves its old object behind.
+  local test_objs=() t
+  for t in "$HERE"/tests/*.cpp; do
+    [ -f "$objs/$(basename "$t").o" ] || die "$build has no object for tests/$(basename "$t") (build dt_tests first)"
+    test_objs+=("$objs/$(basename "$t").o")
+  done
   work="$(mktemp -d)"
   trap 'rm -rf "$work"' RETURN
   for id in $sel; do
@@ -348,7 +347,7 @@ cmd_selftest() {
         o_list+=("$o")
       done
       [ $ok = 1 ] || { fail=1; continue; }
-      if ! g++ -o "$work/t" "${o_list[@]}" "$objs"/*.o "$build/libdt.a" -lmpfr -lgmp 2>"$work/ld.log"; then
+      if ! g++ -o "$work/t" "${o_list[@]}" "${test_objs[@]}" "$build/libdt.a" -lmpfr -lgmp 2>"$work/ld.log"; then
         echo "FAIL $id: the $variant copy does not link:"; head -n 20 "$work/ld.log"; fail=1; continue
       fi
       local res; set +e; res="$(run_tests "$id" "$work/t")"; local rc=$?; set -e
