@@ -88,20 +88,45 @@ inline std::string writeOut(const Options& o, const std::string& name, const std
   return path;
 }
 
+/// The files a gnuplot script promises: every literal `outdir."/NAME"` (or with single quotes)
+/// in it. Names built with sprintf (animation frames) are not listed; the script's own exit
+/// status covers them.
+inline std::vector<std::string> gnuplotOutputs(const std::string& scriptPath) {
+  std::ifstream in(scriptPath);
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string s = text.str();
+  std::vector<std::string> names;
+  for (std::size_t at = s.find("outdir."); at != std::string::npos; at = s.find("outdir.", at + 7)) {
+    const std::size_t q = at + 7;
+    if (q + 2 >= s.size() || (s[q] != '"' && s[q] != '\'') || s[q + 1] != '/') continue;
+    const std::size_t close = s.find(s[q], q + 1);
+    if (close != std::string::npos) names.push_back(s.substr(q + 2, close - q - 2));
+  }
+  return names;
+}
+
 /// Runs figures/ch2/<script> with gnuplot; the script reads its data from `datadir` and
-/// writes into `outdir` (both set with -e). Returns false (and says why) on failure.
-inline bool runGnuplot(const Options& o, const std::string& script) {
-  if (!o.plot) return true;
+/// writes into `outdir` (both set with -e). A figure the book embeds must not go missing
+/// quietly: if gnuplot fails, or a file the script names is not written by this run, this
+/// throws (runMain turns that into exit status 1) with the script and the file named.
+inline void runGnuplot(const Options& o, const std::string& script) {
+  if (!o.plot) return;
   const std::string path = std::string(DT_SOURCE_DIR) + "/figures/ch2/" + script;
+  const std::vector<std::string> promised = gnuplotOutputs(path);
+  for (const auto& name : promised) std::remove((o.out + "/" + name).c_str());
   const std::string cmd = "gnuplot -e \"datadir='" + o.out + "'; outdir='" + o.out + "'\" '" +
                           path + "'";
   const int rc = std::system(cmd.c_str());
-  if (rc != 0) {
-    std::cerr << "gnuplot failed (" << rc << ") on " << path << "\n";
-    return false;
+  if (rc != 0)
+    throw std::runtime_error("gnuplot failed (status " + std::to_string(rc) + ") on " + path +
+                             ": its figures were not drawn (is gnuplot installed? bash scripts/deps.sh)");
+  for (const auto& name : promised) {
+    struct stat st;
+    if (stat((o.out + "/" + name).c_str(), &st) != 0 || st.st_size == 0)
+      throw std::runtime_error(path + " ran but did not write " + o.out + "/" + name);
   }
   std::cout << "plotted " << path << " into " << o.out << "\n";
-  return true;
 }
 
 /// A table printed as Markdown on stdout and written as .md, .csv and .html (the book

@@ -128,15 +128,6 @@ void figure25(const ch::Options& o) {
   tab.emit(o, "table_fig2_5");
   ch::runGnuplot(o, "fig2_5.gp");
   ch::runGnuplot(o, "fig2_5_anim.gp");
-  if (o.plot) {
-    // An animated GIF from the frames, if ImageMagick is installed.
-    const std::string cmd = "command -v convert >/dev/null 2>&1 && convert -delay 90 -loop 0 '" + o.out +
-                            "'/fig2_5_anim_[0-9][0-9].png '" + o.out + "/fig2_5_anim.gif'";
-    if (std::system(cmd.c_str()) == 0)
-      std::cout << "wrote " << o.out << "/fig2_5_anim.gif\n";
-    else
-      std::cout << "no GIF (ImageMagick's convert is missing or failed); the PNG frames are there\n";
-  }
 }
 
 // ---- Figure 2.6 ---------------------------------------------------------------------------
