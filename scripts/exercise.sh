@@ -142,7 +142,7 @@ run_tests() {
       # The first failing check as doctest reports it (location, expression, values).
       awk '/ERROR:|FATAL ERROR|THREW|threw/ && !shown { shown = 1; p = 1 }
            p && /^[=]+$/ { exit }
-           p && /^$/ { blank++; if (blank > 1) exit }
+           p && /^$/ { exit }
            p { print "  " $0 }' <<<"$out" | head -n 12
       [ -n "$hint" ] && echo "hint: $hint"
       return 1
