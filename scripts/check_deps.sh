@@ -67,6 +67,9 @@ diff         base               tests
 env          base               scripts (#!/usr/bin/env bash)
 bash         base               scripts
 perl         base               scripts/check_deps.sh (perl-base)
+sh           base               tests/test_cli.cpp tests/test_bad_input.cpp (a signal during the writes, a pipe)
+ln           base               tests/test_cli.cpp (a hard link to the input)
+mkfifo       base               tests/test_bad_input.cpp (a named pipe as input)
 '
 # Shell words that are not programs (keywords and builtins) are skipped by the scan.
 BUILTINS=" if then else elif fi for while until do done case esac in function return local export
