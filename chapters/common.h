@@ -195,6 +195,43 @@ std::string fmt(const char* f, A... a) {
   return buf;
 }
 
+/// The numbers and verdicts a book page quotes in its prose, written by a chapter program as
+/// "key value" lines into values_<program>.txt next to its tables. The book build replaces
+/// each @{key} of book/*.md by its value and stops on a key that no program wrote, so the
+/// text cannot drift from the measurements. A verdict ("rises", "agrees") is a value too,
+/// computed from the same numbers the tables show.
+class Values {
+ public:
+  Values(const Options& o, std::string program) : o_(o), program_(std::move(program)) {}
+  /// Records `value` under `key` (one word; each key once per program).
+  void set(const std::string& key, const std::string& value) {
+    if (key.empty() || key.find_first_of(" \t\n{}") != std::string::npos)
+      throw std::invalid_argument("value key '" + key + "' must be one word without braces");
+    if (value.find('\n') != std::string::npos)
+      throw std::invalid_argument("value of '" + key + "' spans lines");
+    for (const auto& kv : kv_)
+      if (kv.first == key) throw std::invalid_argument("value key '" + key + "' set twice");
+    kv_.emplace_back(key, value);
+  }
+  /// A number, printf-formatted (e.g. "%.1f").
+  void num(const std::string& key, double v, const char* format) { set(key, fmt(format, v)); }
+  /// One of two words, as the measured condition says.
+  void verdict(const std::string& key, bool condition, const char* ifTrue, const char* ifFalse) {
+    set(key, condition ? ifTrue : ifFalse);
+  }
+  /// Writes values_<program>.txt into the output directory.
+  void write() const {
+    std::string text;
+    for (const auto& kv : kv_) text += kv.first + " " + kv.second + "\n";
+    writeOut(o_, "values_" + program_ + ".txt", text);
+  }
+
+ private:
+  const Options& o_;
+  std::string program_;
+  std::vector<std::pair<std::string, std::string>> kv_;
+};
+
 /// Progress of a long run on stderr, at most a few times per second; silent unless stderr is
 /// a terminal (logs of the main command stay readable).
 class Progress {

@@ -23,6 +23,7 @@ KernelStep delaunayKernelStep(const std::vector<double>& xy, std::vector<Tri>& t
   std::size_t kept = 0;
   for (std::size_t j = 0; j < tri.size(); ++j) {
     const Tri t = tri[j];
+    if (incircleTests) ++*incircleTests;  // one real call per triangle tested
     // "Contains" is the open disk, decided exactly: a point on the circle (cocircular input)
     // leaves the triangle in place, and the cavity stays star-shaped (Proposition 2.1.1).
     if (incircle(X(t[0]), Y(t[0]), X(t[1]), Y(t[1]), X(t[2]), Y(t[2]), px, py) > 0)
@@ -30,7 +31,6 @@ KernelStep delaunayKernelStep(const std::vector<double>& xy, std::vector<Tri>& t
     else
       tri[kept++] = t;
   }
-  if (incircleTests) *incircleTests += tri.size();
   tri.resize(kept);
   // Algorithm 1 indented the loop over the cavity inside the loop over DT_{i-1}: the ball must
   // be built once, after the whole cavity is known.

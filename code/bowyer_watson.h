@@ -23,7 +23,7 @@ struct KernelStep {
 /// C is every triangle whose open circumdisk contains the point (each triangle is tested:
 /// O(size of tri)); B is the fan joining the point to every edge of C not shared by two
 /// triangles of C. Kept triangles stay in order, the ball is appended. If `incircleTests` is
-/// given, the number of incircle tests is added to it.
+/// given, each incircle call made is counted in it.
 KernelStep delaunayKernelStep(const std::vector<double>& xy, std::vector<Tri>& tri, int ip,
                               std::uint64_t* incircleTests = nullptr);
 //! [delaunayKernelStepDecl]
@@ -34,7 +34,7 @@ struct BowyerWatsonResult {
   std::vector<double> xy;
   std::vector<long> ids;
   std::vector<Tri> tri;
-  std::uint64_t incircleTests = 0;  ///< sum over insertions of the triangles tested
+  std::uint64_t incircleTests = 0;  ///< incircle calls made, summed over insertions
   std::uint64_t cavityFaces = 0;    ///< sum of |C|
   std::uint64_t duplicates = 0;     ///< points skipped: they coincide with an earlier point
 };

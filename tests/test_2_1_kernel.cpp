@@ -220,7 +220,7 @@ TEST_CASE("2.1.1 ker(Sigma) is the intersection of the half-planes of the orient
   CHECK(dt::polygonKernel(square).size() == 4);
 }
 
-TEST_CASE("2.1.2 Prop. 2.1.1: the cavity is non-empty, edge-connected, star-shaped, p in its kernel") {
+TEST_CASE("2.1.2 Prop. 2.1.1: the cavity is non-empty and edge-connected and star-shaped with p in its kernel") {
   // Checked exactly at every insertion; the cavity is computed by testing every face, so its
   // connectivity is a real check. Grids and exactly cocircular points are the hard cases.
   XY uniform = dt::uniformPoints(2000, 7);
@@ -243,7 +243,7 @@ TEST_CASE("2.1.2 Prop. 2.1.1: the cavity is non-empty, edge-connected, star-shap
   CHECK(total == 2000 + 900 + 400 + 324 + 400);
 }
 
-TEST_CASE("2.1.2 Property 2.1.1: no point of S_n inside the cavity, hence |bnd| = |C| + 2") {
+TEST_CASE("2.1.2 Property 2.1.1: no point of S_n inside the cavity hence |bnd| = |C| + 2") {
   // checkCavity counts the vertices off the boundary and the boundary edges; a cavity that
   // violated Property 2.1.1 would show |bnd| = |C| + 2 - 2 (inner vertices).
   const KernelRun run = runKernel(dt::uniformPoints(500, 11), 1u << 30);

@@ -1,8 +1,14 @@
-/// \file test_2_3_4_algorithms.cpp Claims of section 2.3.4: Table 2.1 (N_search like sqrt(n), N_cavity tends to 4), the ball of |C| + 2 triangles, and the parabola worst case.
+/// \file test_2_3_4_algorithms.cpp Claims of section 2.3.4: computeAdjacencies (Listing 2.4), Table 2.1 (N_search like sqrt(n), N_cavity tends to 4), the ball of |C| + 2 triangles, and the parabola worst case.
 #include <doctest/doctest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <map>
+#include <set>
+#include <stdexcept>
 
+#include "adjacency.h"
 #include "cavity.h"
 #include "search.h"
 #include "stats.h"
@@ -105,11 +111,13 @@ TEST_CASE("2.3.4 a cavity of size |C| gives |C| + 2 new triangles (4 -> 6)") {
   REQUIRE(dt::checkTriangulation(T).ok);
 }
 
-TEST_CASE("Exercise 2.3.4.2: the last point's cavity has deg(p) - 2 faces; their mean is 4 + (6 - D)/n") {
+TEST_CASE("2.3.4 exercise 2: the last point's cavity has deg(p) - 2 faces; their mean is 4 + (6 - D)/n") {
   const dt::XY p = dt::uniformPoints(150, 8);
   const std::size_t n = p.size() / 2;
   double meanLast = 0;
   std::array<double, 2> backward{};
+  double D = 0;
+  std::set<const dt::Vertex*> superSeen;
   for (std::size_t last = 0; last < n; last += 1) {
     // Insert every point but `last`, then `last`: its cavity is its star minus 2.
     dt::Triangulation T;
@@ -128,28 +136,63 @@ TEST_CASE("Exercise 2.3.4.2: the last point's cavity has deg(p) - 2 faces; their
     if (last == 0) {
       REQUIRE(dt::checkTriangulation(T).ok);
       backward = dt::backwardCavityMean(T);  // DT(S0 u S) is the same whatever the order
+      // D, the degree of the four super vertices, counted from their stars.
+      for (dt::Face& f : T.faces())
+        for (const dt::Vertex* s : f.V)
+          if (s->id < 0 && !superSeen.count(s)) {
+            superSeen.insert(s);
+            D += double(dt::vertexStar(&f, s).size());
+          }
     }
   }
-  // Random points: no four cocircular, so every order gives the same triangulation.
+  // Random points: no four cocircular, so every order gives the same triangulation, and the
+  // mean of the measured last-point cavities is 4 + (6 - D)/n.
+  REQUIRE(superSeen.size() == 4);
+  CHECK(D == backward[1]);
   CHECK(meanLast == doctest::Approx(backward[0]).epsilon(1e-12));
-  CHECK(backward[0] == doctest::Approx(4 + (6 - backward[1]) / double(n)).epsilon(1e-12));
+  CHECK(meanLast == doctest::Approx(4 + (6 - D) / double(n)).epsilon(1e-12));
 }
 
-TEST_CASE("2.3.4 N_search counts the faces lineSearch visits, the face it returns included") {
+TEST_CASE("2.3.4 N_search counts the faces lineSearch visits including the face it returns") {
+  // One insertion whose first face already has v in its circle: N_search = 1, not 0.
   dt::Triangulation T;
   dt::initSuperTriangles(T, 0, 0, 1, 1);
   dt::Vertex* v = T.addVertex(0.5, 0.5, 0);
-  dt::SearchInfo info;
-  dt::Face* f = dt::lineSearch(&T.faces().front(), v, &info);
-  REQUIRE(f != nullptr);
-  CHECK(info.steps == 1);  // the first face already contains v in its circle
-  dt::Vertex* w = T.addVertex(0.9, 0.1, 1);
   dt::InsertionStats st;
-  dt::delaunayTrgl(T, {v, w}, dt::StartRule::FirstFace, &st);
-  CHECK(st.searchSteps >= 2);  // at least one face per insertion
+  dt::delaunayTrgl(T, {v}, dt::StartRule::FirstFace, &st);
+  CHECK(st.insertions == 1);
+  CHECK(st.searchSteps == 1);
+  // A strip of 2K triangles between y = 0 and y = 1 (top row shifted by 1/2: one Delaunay
+  // triangulation). A walk from the leftmost triangle towards a point near the right end
+  // crosses the triangles in the order of their centroids, so it visits exactly the first
+  // triangle (in that order) whose circle contains the point, and every one before it:
+  // counted here by brute force, without the walk.
+  const int K = 40;
+  dt::XY p;
+  for (int i = 0; i <= K; ++i) p.insert(p.end(), {double(i), 0.0});
+  for (int i = 0; i < K; ++i) p.insert(p.end(), {i + 0.5, 1.0});
+  dt::Triangulation S;
+  dt::delaunayTrglHull(S, dt::addVertices(S, p), dt::StartRule::LastCavity);
+  REQUIRE(dt::checkTriangulation(S).ok);
+  std::vector<dt::Face*> strip;
+  for (dt::Face& f : S.faces())
+    if (!f.isGhost()) strip.push_back(&f);
+  REQUIRE(strip.size() == std::size_t(2 * K - 1));
+  auto cx = [](const dt::Face* f) { return f->V[0]->x + f->V[1]->x + f->V[2]->x; };
+  std::sort(strip.begin(), strip.end(), [&](const dt::Face* a, const dt::Face* b) { return cx(a) < cx(b); });
+  for (double tx : {K - 0.3, K / 2.0 + 0.1, 3.2}) {
+    CAPTURE(tx);
+    dt::Vertex target(tx, 0.4);
+    std::size_t first = 0;
+    while (first < strip.size() && !strip[first]->inCircle(&target)) ++first;
+    REQUIRE(first < strip.size());
+    dt::SearchInfo info;
+    CHECK(dt::lineSearch(strip[0], &target, &info) == strip[first]);
+    CHECK(info.steps == first + 1);
+  }
 }
 
-TEST_CASE("2.3.4 worst case: points on a parabola towards its apex, cavities of O(i) faces") {
+TEST_CASE("2.3.4 worst case: points on a parabola towards its apex give cavities of O(i) faces") {
   // x = -n..-1 in increasing x: each point is inside every circle through three earlier ones (a
   // circle cuts the parabola at 4 points with x summing to 0), so in DT(S) the cavity of the i-th
   // point is all i - 3 triangles plus the ghosts it sees: sum ~ n^2 / 2.
@@ -187,7 +230,7 @@ TEST_CASE("2.3.4 Listing 2.5 without recursion: a cavity of 10^5 faces") {
   CHECK(r.nHull == std::size_t(n + 1));
 }
 
-TEST_CASE("Exercise 2.3.4.1: computeAdjacenciesSorted inside the kernel gives the same mesh") {
+TEST_CASE("2.3.4 exercise 1: computeAdjacenciesSorted inside the kernel gives the same mesh") {
   // Rebuild each ball's links with the sorting method and compare with the map's.
   const dt::XY p = dt::uniformPoints(3000, 12);
   dt::Triangulation T;
@@ -206,4 +249,60 @@ TEST_CASE("Exercise 2.3.4.1: computeAdjacenciesSorted inside the kernel gives th
     same += all[i]->F[0] == links[i][0] && all[i]->F[1] == links[i][1] && all[i]->F[2] == links[i][2];
   CHECK(same == all.size());
   CHECK(dt::checkTriangulation(T).ok);
+}
+
+TEST_CASE("2.3.4 Listing 2.4: computeAdjacencies pairs every interior edge exactly once") {
+  for (unsigned seed : {1u, 2u, 3u}) {
+    dt::Triangulation T;
+    std::vector<dt::Vertex*> S;
+    dt::XY p = seed == 3 ? dt::gridPoints(12, 9) : dt::uniformPoints(500, seed);
+    for (std::size_t i = 0; i < p.size() / 2; ++i) S.push_back(T.addVertex(p[2 * i], p[2 * i + 1], long(i)));
+    dt::initSuperTriangles(T, 0, 0, 12, 12);
+    dt::delaunayTrgl(T, S, dt::StartRule::LastCavity);
+    REQUIRE(dt::checkTriangulation(T).ok);
+    // Remember the links, forget them, rebuild them from scratch with each method.
+    std::vector<dt::Face*> all;
+    std::map<dt::Face*, std::array<dt::Face*, 3>> before;
+    for (dt::Face& f : T.faces()) {
+      all.push_back(&f);
+      before[&f] = {f.F[0], f.F[1], f.F[2]};
+    }
+    for (int method = 0; method < 2; ++method) {
+      CAPTURE(method);
+      for (dt::Face* f : all) f->F[0] = f->F[1] = f->F[2] = nullptr;
+      if (method == 0)
+        dt::computeAdjacencies(all);
+      else
+        dt::computeAdjacenciesSorted(all);
+      std::size_t links = 0, boundary = 0;
+      for (dt::Face* f : all)
+        for (int k = 0; k < 3; ++k) {
+          CHECK(f->F[k] == before[f][std::size_t(k)]);
+          if (f->F[k] == nullptr) {
+            ++boundary;
+            continue;
+          }
+          ++links;
+          const int j = dt::neighbourIndex(f->F[k], f);
+          REQUIRE(j >= 0);
+          CHECK(f->F[k]->V[j] == f->V[(k + 1) % 3]);  // across the same edge, opposite way
+        }
+      // The super-square: 4 boundary edges; every other edge linked from both sides.
+      const dt::MeshCounts c = dt::meshCounts(T.vertices().size(), dt::extractMesh(T, false).tri);
+      CHECK(boundary == 4);
+      CHECK(links == 2 * std::size_t(c.ne - 4));
+    }
+  }
+}
+
+TEST_CASE("2.3.4 Listing 2.4 rejects an edge used twice with the same orientation") {
+  dt::Triangulation T;
+  dt::Vertex* a = T.addVertex(0, 0, 0);
+  dt::Vertex* b = T.addVertex(1, 0, 1);
+  dt::Vertex* c = T.addVertex(0, 1, 2);
+  dt::Vertex* d = T.addVertex(0, -1, 3);
+  std::vector<dt::Face*> faces = {T.addFace(a, b, c), T.addFace(a, b, d)};
+  std::vector<dt::Face*> copy = faces;
+  CHECK_THROWS_AS(dt::computeAdjacencies(faces), std::logic_error);
+  CHECK_THROWS_AS(dt::computeAdjacenciesSorted(copy), std::logic_error);
 }

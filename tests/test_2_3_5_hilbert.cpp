@@ -61,7 +61,7 @@ XY parabolaPoints(std::size_t n, unsigned seed) {
 
 }  // namespace
 
-TEST_CASE("2.3.5 Listing 2.8 gives a true Hilbert order: consecutive cells of a 2^k x 2^k grid share an edge, k = 1..8") {
+TEST_CASE("2.3.5 Listing 2.8 gives a true Hilbert order: consecutive cells of a 2^k x 2^k grid share an edge for k = 1..8") {
   for (int k = 1; k <= 8; ++k) {
     const std::uint32_t m = 1u << k;
     std::vector<std::pair<std::uint64_t, std::pair<int, int>>> cells;
@@ -91,7 +91,7 @@ TEST_CASE("2.3.5 Listing 2.8 gives a true Hilbert order: consecutive cells of a 
   }
 }
 
-TEST_CASE("2.3.5 Listing 2.8 corrected: NaN is rejected, a point on a dividing line goes to the lower quadrant") {
+TEST_CASE("2.3.5 Listing 2.8 corrected: NaN is rejected and a point on a dividing line goes to the lower quadrant") {
   int bits[4] = {-1, -1, -1, -1};
   const double nan = std::numeric_limits<double>::quiet_NaN();
   CHECK_THROWS_AS(dt::HilbertCoord(nan, 0.2, 0.5, 0.5, 0.5, 0, 0, 0.5, 2, bits), std::invalid_argument);
@@ -121,7 +121,7 @@ TEST_CASE("2.3.5 Listing 2.8 corrected: NaN is rejected, a point on a dividing l
   CHECK(sub[1] == bits[2]);
 }
 
-TEST_CASE("2.3.5 Hilbert keys: box and depth from the data, keys fit in 62 bits, degenerate inputs") {
+TEST_CASE("2.3.5 Hilbert keys: box and depth from the data and keys in 62 bits on degenerate inputs too") {
   const XY p = dttest::uniformPoints(2000, 51, -3, 7);
   CHECK(dt::hilbertAutoDepth(2000) == 6 + 8);  // 4^6 = 4096 >= 2000
   CHECK(dt::hilbertAutoDepth(1) == 8);
@@ -168,9 +168,15 @@ TEST_CASE("2.3.5 Figure 2.12: the Hilbert tour of n random points grows like sqr
   // at small n and seed-to-seed variation; a length growing like n^0.6 would already fail it.
   CHECK(std::fabs(ratio[1] / ratio[0] - 1) < 0.10);
   CHECK(std::fabs(ratio[2] / ratio[1] - 1) < 0.10);
+  // The constant itself, as the book quotes it (0.98 sqrt(n)): over seeds 60-67 the ratio was
+  // 0.972-0.987 at 10^4 and 0.976-0.981 at 10^5; the bounds are that spread doubled.
+  CHECK(ratio[1] > 0.96);
+  CHECK(ratio[1] < 1.00);
+  CHECK(ratio[2] > 0.97);
+  CHECK(ratio[2] < 0.99);
 }
 
-TEST_CASE("2.3.5 Table 2.2: with Hilbert order and the walk started in the previous cavity, N_search stays bounded") {
+TEST_CASE("2.3.5 Table 2.2: with Hilbert order and the walk started in the previous cavity N_search stays bounded") {
   double ns[3];
   const std::size_t sizes[3] = {1000, 10000, 100000};
   for (int k = 0; k < 3; ++k) {
@@ -204,7 +210,7 @@ TEST_CASE("2.3.5 Table 2.2: N_cavity with Hilbert order is 5.6 +- 0.3 at n = 10^
   CHECK(b.meanSearch() < 4);  // and the walks stay short (measured 3.06)
 }
 
-TEST_CASE("2.3.5 BRIO: a permutation whose rounds double in size, each round Hilbert-sorted") {
+TEST_CASE("2.3.5 BRIO: a permutation whose rounds double in size with each round Hilbert-sorted") {
   const std::size_t n = 10007;
   const XY p = dttest::uniformPoints(n, 90);
   std::vector<std::size_t> starts;

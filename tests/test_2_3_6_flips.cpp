@@ -118,7 +118,7 @@ XY hugeCircleArc(std::size_t n, double R) {
 
 }  // namespace
 
-TEST_CASE("2.3.3: a flip changes the degrees of the four vertices by -1, -1, +1, +1") {
+TEST_CASE("2.3.6 a flip changes the degrees of its four vertices by -1 -1 +1 +1 (the claim of 2.3.3)") {
   dt::Triangulation T;
   const auto S = dt::addVertices(T, dt::uniformPoints(300, 2336));
   dt::delaunayTrglHull(T, S, dt::StartRule::LastCavity);
@@ -162,7 +162,7 @@ TEST_CASE("2.3.3: a flip changes the degrees of the four vertices by -1, -1, +1,
   CHECK(dt::checkTriangulation(T).ok);
 }
 
-TEST_CASE("2.3.6: flipEdge refuses reflex or flat quadrilaterals and ghost edges, unchanged") {
+TEST_CASE("2.3.6 flipEdge refuses reflex or flat quadrilaterals and ghost edges and leaves them unchanged") {
   dt::Triangulation T;
   // a d b c with d inside triangle a b c's side so that a d b c is reflex at d.
   dt::Vertex* a = T.addVertex(0, 0, 0);
@@ -198,7 +198,7 @@ TEST_CASE("2.3.6: flipEdge refuses reflex or flat quadrilaterals and ghost edges
     for (int k = 0; k < 3; ++k) CHECK_FALSE(dt::isFlippable(&f, k));
 }
 
-TEST_CASE("2.3.6: Lawson's flips turn any triangulation into the Delaunay triangulation") {
+TEST_CASE("2.3.6 Lawson's flips turn any triangulation into the Delaunay triangulation") {
   struct Family {
     std::string name;
     XY p;
@@ -234,7 +234,7 @@ TEST_CASE("2.3.6: Lawson's flips turn any triangulation into the Delaunay triang
   CHECK(dt::lawsonFlip(T).flips > 500);
 }
 
-TEST_CASE("2.2.1/2.3.6: the recovery from DT(S0 ∪ S) gives DT(S) for super-triangles of any size") {
+TEST_CASE("2.3.6 the recovery from DT(S0 ∪ S) gives DT(S) for super-triangles of any size") {
   XY grid = dt::gridPoints(12, 9, 0.5);
   dt::shufflePoints(grid, 4);
   XY circle = dt::circlePoints(120, 3);
@@ -276,8 +276,8 @@ TEST_CASE("2.2.1/2.3.6: the recovery from DT(S0 ∪ S) gives DT(S) for super-tri
   }
 }
 
-TEST_CASE("2.2.1: flat hull triangles put small super vertices inside circumcircles; the notes' "
-          "flips alone then fail, the completed rule does not") {
+TEST_CASE("2.3.6 flat hull triangles put small super vertices inside circumcircles so the "
+          "notes' flips alone fail and the completed rule does not") {
   // On the bent line every lower-hull triangle is nearly flat: its circumcircle is huge and
   // contains the super vertices unless they are very far.
   const XY p = bentLine(60, 1e-3);
@@ -304,7 +304,7 @@ TEST_CASE("2.2.1: flat hull triangles put small super vertices inside circumcirc
   CHECK(notesFailures >= 1);   // and the notes' flips alone not always
 }
 
-TEST_CASE("2.3.6: superInCircle agrees with incircle on points of S and pushes super vertices away") {
+TEST_CASE("2.3.6 superInCircle agrees with incircle on points of S and pushes super vertices away") {
   dt::Triangulation T;
   dt::Vertex* a = T.addVertex(0, 0, 0);
   dt::Vertex* b = T.addVertex(1, 0, 1);

@@ -37,7 +37,7 @@ void expectRefused(const Bad& b, const std::string& extra = "") {
 
 }  // namespace
 
-TEST_CASE("bad input: a wrong or missing point count in a .node header") {
+TEST_CASE("bad input a wrong or missing point count in a .node header") {
   const Bad cases[] = {
       {"count_high.node", "4 2 0 0\n1 0 0\n2 1 0\n3 0 1\n",
        ":4: file ends after 3 of the 4 points announced in the header (line 1)"},
@@ -57,7 +57,7 @@ TEST_CASE("bad input: a wrong or missing point count in a .node header") {
   for (const Bad& b : cases) expectRefused(b);
 }
 
-TEST_CASE("bad input: non-numeric fields, NaN, infinities, overflow and underflow") {
+TEST_CASE("bad input non-numeric fields or NaN or infinities or overflow or underflow") {
   const Bad cases[] = {
       {"word.node", "3 2 0 0\n1 0 0\n2 1 zero\n3 0 1\n", ":3: y 'zero' is not a number"},
       {"word.xy", "0 0\n1 0\nx1 1\n", ":3: x 'x1' is not a number"},
@@ -78,7 +78,7 @@ TEST_CASE("bad input: non-numeric fields, NaN, infinities, overflow and underflo
   for (const Bad& b : cases) expectRefused(b);
 }
 
-TEST_CASE("bad input: empty files, binary garbage, extra columns, line endings") {
+TEST_CASE("bad input empty files or binary garbage or extra columns or odd line endings") {
   std::string binary = "\x7f" "ELF\x02\x01\x01";
   binary += '\0';
   binary += "\x03\x3e\n";
@@ -101,7 +101,7 @@ TEST_CASE("bad input: empty files, binary garbage, extra columns, line endings")
   for (const Bad& b : cases) expectRefused(b);
 }
 
-TEST_CASE("bad input: 0-based and 1-based numbering must be consistent") {
+TEST_CASE("bad input 0-based and 1-based numbering must be consistent") {
   const Bad cases[] = {
       {"starts_at_2.node", "3 2 0 0\n2 0 0\n3 1 0\n4 0 1\n",
        ":2: first point number is 2; expected 0 or 1"},
@@ -113,7 +113,7 @@ TEST_CASE("bad input: 0-based and 1-based numbering must be consistent") {
   for (const Bad& b : cases) expectRefused(b);
 }
 
-TEST_CASE("bad input: fewer than 3 distinct points, or all collinear, has no triangulation") {
+TEST_CASE("bad input fewer than 3 distinct points or all collinear has no triangulation") {
   const Bad cases[] = {
       {"none.node", "0 2 0 0\n", ": fewer than 3 distinct points: no triangulation exists"},
       {"one.xy", "1 1\n", ": fewer than 3 distinct points: no triangulation exists"},
@@ -140,7 +140,7 @@ TEST_CASE("bad input: fewer than 3 distinct points, or all collinear, has no tri
   }
 }
 
-TEST_CASE("good input: Windows line endings, a byte order mark, comments, attributes") {
+TEST_CASE("bad input lookalikes are accepted: Windows line endings or a byte order mark or comments or attributes") {
   struct Good {
     const char* name;
     const char* text;
@@ -167,7 +167,7 @@ TEST_CASE("good input: Windows line endings, a byte order mark, comments, attrib
   }
 }
 
-TEST_CASE("bad usage and unwritable output: exit status and no partial output") {
+TEST_CASE("bad input usage errors and unwritable output give an exit status and no partial output") {
   const std::string in = dttest::tmpPath("usage.xy"), out = dttest::tmpPath("usage_out");
   dttest::writeText(in, "0 0\n1 0\n0 1\n");
   std::remove((out + ".ele").c_str());

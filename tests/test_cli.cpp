@@ -43,7 +43,7 @@ void runAndValidate(const std::string& name, const XY& p, int first = 1) {
 
 }  // namespace
 
-TEST_CASE("delaunay2d: exact DT(S) on degenerate families") {
+TEST_CASE("cli delaunay2d writes the exact DT(S) on degenerate families") {
   runAndValidate("grid", dt::gridPoints(30, 30));
   // an integer grid rotated by an angle with rational cos and sin (3/5, 4/5)
   runAndValidate("grid_rotated", dt::rotatedGridPoints(20, 20));
@@ -75,7 +75,7 @@ TEST_CASE("delaunay2d: exact DT(S) on degenerate families") {
   runAndValidate("sorted_by_x", sorted);
 }
 
-TEST_CASE("delaunay2d: duplicates are merged, keep the first number, and are reported") {
+TEST_CASE("cli delaunay2d merges duplicates into the first number and reports them") {
   const std::string in = dttest::tmpPath("dups.xy"), out = dttest::tmpPath("dups_out");
   dttest::writeText(in, "0 0\n1 0\n0 1\n1 0\n1 1\n");
   const dttest::CliResult r = dttest::runCli("'" + in + "' -o '" + out + "'");
@@ -86,7 +86,7 @@ TEST_CASE("delaunay2d: duplicates are merged, keep the first number, and are rep
   CHECK(ele.rfind("2 3 0", 0) == 0);            // header: two triangles
 }
 
-TEST_CASE("delaunay2d: bad input gets a message naming the problem, exit 2, and no output") {
+TEST_CASE("cli delaunay2d answers bad input with a message naming the problem and exit 2 and no output") {
   struct Bad {
     const char* name;
     const char* text;

@@ -153,7 +153,7 @@ std::vector<std::array<int, 3>> canonical(Tris tri) {
 
 }  // namespace
 
-TEST_CASE("degenerate families: Listing 2.7 with super-triangles gives a valid DT(S0 u S)") {
+TEST_CASE("degenerate families Listing 2.7 with super-triangles gives a valid DT(S0 u S)") {
   for (const dtdeg::Family& f : dtdeg::families()) {
     CAPTURE(f.name);
     superListing(f, dt::StartRule::LastCavity);
@@ -165,14 +165,14 @@ TEST_CASE("degenerate families: Listing 2.7 with super-triangles gives a valid D
   }
 }
 
-TEST_CASE("degenerate families: super-triangles then flips (2.3.6) recover the exact DT(S)") {
+TEST_CASE("degenerate families super-triangles then flips (2.3.6) recover the exact DT(S)") {
   for (const dtdeg::Family& f : dtdeg::families()) {
     CAPTURE(f.name);
     superRecovered(f);
   }
 }
 
-TEST_CASE("degenerate families: the hull method (2.2.2) gives the exact DT(S)") {
+TEST_CASE("degenerate families the hull method (2.2.2) gives the exact DT(S)") {
   for (const dtdeg::Family& f : dtdeg::families()) {
     CAPTURE(f.name);
     hullMethod(f, dt::StartRule::LastCavity);
@@ -183,7 +183,7 @@ TEST_CASE("degenerate families: the hull method (2.2.2) gives the exact DT(S)") 
   }
 }
 
-TEST_CASE("degenerate families: the fast kernel gives the exact DT(S) in every order") {
+TEST_CASE("degenerate families the fast kernel gives the exact DT(S) in every order") {
   for (const dtdeg::Family& f : dtdeg::families()) {
     CAPTURE(f.name);
     for (dt::FastOrder o : {dt::FastOrder::RadixBrio, dt::FastOrder::Brio,
@@ -192,7 +192,7 @@ TEST_CASE("degenerate families: the fast kernel gives the exact DT(S) in every o
   }
 }
 
-TEST_CASE("degenerate families: Algorithm 1 (plain triangle list) gives a valid DT(S0 u S)") {
+TEST_CASE("degenerate families Algorithm 1 (plain triangle list) gives a valid DT(S0 u S)") {
   for (const dtdeg::Family& f : dtdeg::families(true)) {
     CAPTURE(f.name);
     const dt::BowyerWatsonResult r = dt::bowyerWatson(f.points);
@@ -204,7 +204,7 @@ TEST_CASE("degenerate families: Algorithm 1 (plain triangle list) gives a valid 
   }
 }
 
-TEST_CASE("degenerate families: the CLI writes the exact DT(S) with every method and kernel") {
+TEST_CASE("degenerate families the CLI writes the exact DT(S) with every method and kernel") {
   int i = 0;
   for (const dtdeg::Family& f : dtdeg::families()) {
     CAPTURE(f.name);
@@ -215,7 +215,7 @@ TEST_CASE("degenerate families: the CLI writes the exact DT(S) with every method
   }
 }
 
-TEST_CASE("degenerate families in general position: every method gives the same triangles") {
+TEST_CASE("degenerate families in general position give the same triangles with every method") {
   // Without 4 cocircular points DT(S) is unique, so all methods must agree triangle for
   // triangle (random points at 1e+-300 and in 12 nested scales are in general position with
   // overwhelming probability; the exact check above would catch a mesh that is not DT(S)).
@@ -235,7 +235,7 @@ TEST_CASE("degenerate families in general position: every method gives the same 
   }
 }
 
-TEST_CASE("degenerate families: a huge input of few distinct points") {
+TEST_CASE("degenerate families include a huge input of few distinct points") {
   // 200000 points, 7 distinct: the duplicates must cost a walk each, not a failure.
   const dtdeg::Family f{"200000 copies of 7 points", dtdeg::fewDistinct(200000, 21)};
   const Tris hull = hullMethod(f, dt::StartRule::LastCavity);
@@ -258,7 +258,7 @@ TEST_CASE("degenerate input without a triangulation is refused by every method")
   }
 }
 
-TEST_CASE("coordinates near the overflow threshold: hull methods exact, super refused cleanly") {
+TEST_CASE("degenerate coordinates near the overflow threshold: hull methods exact and super refused cleanly") {
   // Sums and differences of coordinates near DBL_MAX overflow; the hull method and the fast
   // kernel need neither (exact predicates, centroid computed without overflow). Super-triangles
   // 10x (or even 1.01x) the bounding box cannot be represented in doubles.

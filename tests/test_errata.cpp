@@ -105,7 +105,6 @@ TEST_CASE("errata Listing 2.7: every face of every Delaunay ball is counter-cloc
       const Edge& e = scratch.bnd[i];
       ++built;
       if (orientationTest(e.V[0], e.V[1], s) <= 0) ++clockwise;
-      // What the printed (vmin, vmax) order would have produced, for comparison.
     }
   }
   CHECK(built == st.cavityFaces + 2 * st.insertions);  // |ball| = |C| + 2 at every insertion
@@ -121,7 +120,7 @@ TEST_CASE("errata Listing 2.7: every face of every Delaunay ball is counter-cloc
   CHECK(checkTriangulation(T).ok);
 }
 
-TEST_CASE("errata 2.3.5: a depth-d Hilbert coordinate has d digits k_0..k_{d-1}, not d+1") {
+TEST_CASE("errata 2.3.5: a depth-d Hilbert coordinate has d digits k_0..k_{d-1} and not d+1") {
   // The notes write (k_0, k_1, ..., k_d); Listing 2.8 fills bits[0..d-1] only.
   int bits[9];
   std::fill(bits, bits + 9, -7);
@@ -133,7 +132,7 @@ TEST_CASE("errata 2.3.5: a depth-d Hilbert coordinate has d digits k_0..k_{d-1},
   CHECK(bits[8] == -7);
 }
 
-TEST_CASE("errata 2.3.1: O(c,b,a) is -O(a,b,c), not the same value") {
+TEST_CASE("errata 2.3.1: O(c b a) is -O(a b c) and not the same value") {
   // The notes say the two maps "should be the same"; swapping two points is an odd
   // permutation of the determinant's rows. Exact signs on the notes' own example.
   const double eps = std::ldexp(1.0, -53);

@@ -70,7 +70,7 @@ std::vector<dt::FastOptions> allVariants() {
 
 }  // namespace
 
-TEST_CASE("fast kernel: same DT(S) as the corrected listings on random points, in every variant") {
+TEST_CASE("fast kernel gives the same DT(S) as the corrected listings on random points in every variant") {
   const dttest::XY p = dttest::uniformPoints(3000, 91);
   const Tris ref = canonical(listings(p));
   REQUIRE(ref.size() > 5900);  // 2(n-1) - n_h with n_h about 20 for 3000 uniform points
@@ -81,7 +81,7 @@ TEST_CASE("fast kernel: same DT(S) as the corrected listings on random points, i
   }
 }
 
-TEST_CASE("fast kernel: grid, circle, collinear hull: valid, and as many triangles as the listings") {
+TEST_CASE("fast kernel on grid and circle and collinear hull is valid with as many triangles as the listings") {
   std::vector<dttest::XY> inputs;
   inputs.push_back(dttest::gridPoints(40, 40));            // 4 cocircular points per square
   inputs.push_back(dttest::circlePoints(500));             // all nearly cocircular
@@ -106,7 +106,7 @@ TEST_CASE("fast kernel: grid, circle, collinear hull: valid, and as many triangl
   }
 }
 
-TEST_CASE("fast kernel: huge and tiny coordinates keep the exact result") {
+TEST_CASE("fast kernel keeps the exact result on huge and tiny coordinates") {
   for (double scale : {1e300, 1e-300, 0x1p-1060}) {
     dttest::XY p = dttest::uniformPoints(400, 13);
     dttest::XY g = dttest::gridPoints(8, 8, 0.125);
@@ -119,7 +119,7 @@ TEST_CASE("fast kernel: huge and tiny coordinates keep the exact result") {
   }
 }
 
-TEST_CASE("fast kernel: duplicates are merged into the smallest-numbered equal point") {
+TEST_CASE("fast kernel merges duplicates into the smallest-numbered equal point") {
   dttest::XY p = dttest::uniformPoints(200, 3);
   const dttest::XY base = p;
   // Points 200..399 repeat 0..199, and 400..409 repeat point 5 again.
@@ -141,7 +141,7 @@ TEST_CASE("fast kernel: duplicates are merged into the smallest-numbered equal p
   }
 }
 
-TEST_CASE("fast kernel: inputs without a triangulation are refused") {
+TEST_CASE("fast kernel refuses inputs without a triangulation") {
   CHECK_THROWS_AS(dt::fastDelaunay({0, 0, 1, 1, 2, 2, 3, 3}), dt::DegenerateInput);
   CHECK_THROWS_AS(dt::fastDelaunay({0, 0, 1, 1, 0, 0, 1, 1}), dt::DegenerateInput);
   CHECK_THROWS_AS(dt::fastDelaunay({0, 0, 1, 1}), dt::DegenerateInput);
@@ -152,7 +152,7 @@ TEST_CASE("fast kernel: inputs without a triangulation are refused") {
   CHECK(r.tri.size() == 3);
 }
 
-TEST_CASE("fast kernel: the filters send exactly the degenerate tests to the exact stages") {
+TEST_CASE("fast kernel filters send exactly the degenerate tests to the exact stages") {
   // Random points: no test needs more than the filter.
   const dt::FastResult u = fastChecked(dttest::uniformPoints(5000, 17));
   CHECK(u.stats.exactIncircle == 0);
@@ -181,12 +181,12 @@ TEST_CASE("fast kernel: the filters send exactly the degenerate tests to the exa
   CHECK(d.tri.size() == 2 * 39 * 39);
   const dt::FastResult c = fastChecked(dttest::circlePoints(2000));
   CHECK(c.stats.exactIncircle > 0);
-  // The mean cavity of random points is about 4 triangles (2.3.4, Table 2.2: 4.06 to 4.17);
-  // ghost triangles and BRIO rounds keep it within a few percent of that.
-  CHECK(double(u.stats.cavityFaces) / double(u.stats.insertions) == doctest::Approx(4.1).epsilon(0.05));
+  // The mean cavity of 5000 random points (ghost triangles and BRIO rounds included), measured
+  // over seeds 10-19: 4.015 to 4.080. The bounds are that spread doubled around its middle.
+  CHECK(double(u.stats.cavityFaces) / double(u.stats.insertions) == doctest::Approx(4.05).epsilon(0.02));
 }
 
-TEST_CASE("delaunay2d --kernel fast (the default) and --kernel listings write the same DT(S)") {
+TEST_CASE("fast kernel delaunay2d --kernel fast (the default) and --kernel listings write the same DT(S)") {
   dttest::XY p = dttest::uniformPoints(3000, 23);
   const dttest::XY g = dttest::gridPoints(5, 5, 0.25);  // cocircular: counts must still agree
   p.insert(p.end(), g.begin(), g.end());
@@ -216,7 +216,7 @@ TEST_CASE("delaunay2d --kernel fast (the default) and --kernel listings write th
   CHECK(dttest::runCli("'" + in + "' -o x --kernel quick").status == 2);
 }
 
-TEST_CASE("fast kernel: fastHilbertKeys is hilbert.h's table-driven hilbertKeysFast") {
+TEST_CASE("fast kernel fastHilbertKeys is hilbert.h's table-driven hilbertKeysFast") {
   // The keys themselves are tested against hilbertIndex in test_hilbert_sort.cpp.
   const dttest::XY p = dttest::uniformPoints(5000, 4);
   CHECK(dt::fastHilbertKeys(p) == dt::hilbertKeys(p, 0));
@@ -224,7 +224,7 @@ TEST_CASE("fast kernel: fastHilbertKeys is hilbert.h's table-driven hilbertKeysF
   CHECK_THROWS_AS(dt::fastHilbertKeys(p, 32), std::invalid_argument);
 }
 
-TEST_CASE("fast kernel: a cavity of hundreds of triangles (the centre of a circle, inserted last)") {
+TEST_CASE("fast kernel handles a cavity of hundreds of triangles (the centre of a circle inserted last)") {
   // Every triangle of the points on the circle has the centre strictly inside its circle: the
   // last insertion removes them all, and its boundary has 400 edges (the sorted linking path).
   dttest::XY p = dttest::circlePoints(400);

@@ -64,7 +64,7 @@ XY mixedPoints(std::size_t n, unsigned seed) {
 
 }  // namespace
 
-TEST_CASE("2.3.5 Hilbert sort: table keys equal the keys of hilbertIndex, one level at a time") {
+TEST_CASE("Hilbert sort (2.3.5) table keys equal the keys of hilbertIndex one level at a time") {
   for (int depth : {1, 2, 3, 4, 5, 7, 8, 13, 16, 18, 21, 31}) {
     const XY p = mixedPoints(3000, unsigned(depth));
     INFO("depth " << depth);
@@ -75,7 +75,7 @@ TEST_CASE("2.3.5 Hilbert sort: table keys equal the keys of hilbertIndex, one le
   CHECK(dt::hilbertKeysFast({1, 2, 1, 2}) == dt::hilbertKeys({1, 2, 1, 2}, 0));
 }
 
-TEST_CASE("2.3.5 Hilbert sort: the radix sort gives the order of std::sort on (key, index)") {
+TEST_CASE("Hilbert sort (2.3.5) by radix gives the order of std::sort on key then index") {
   // depth 31 packs 62 key bits: with the index they exceed 64 bits (the comparison-sort path).
   for (int depth : {0, 1, 3, 10, 20, 31}) {
     const XY p = mixedPoints(20000, 7 + unsigned(depth));
@@ -86,7 +86,7 @@ TEST_CASE("2.3.5 Hilbert sort: the radix sort gives the order of std::sort on (k
   CHECK(dt::hilbertOrder({2, 3}) == std::vector<std::size_t>{0});
 }
 
-TEST_CASE("2.3.5 BRIO: the one-sort BRIO gives the order of sorting each round by (key, index)") {
+TEST_CASE("Hilbert sort for BRIO in one sort gives the order of sorting each round by key then index") {
   for (int depth : {0, 2, 20, 31}) {
     const XY p = mixedPoints(20000, 17 + unsigned(depth));
     for (std::uint64_t seed : {1u, 5u}) {
@@ -96,7 +96,7 @@ TEST_CASE("2.3.5 BRIO: the one-sort BRIO gives the order of sorting each round b
   }
 }
 
-TEST_CASE("BRIO by biased coins (the fast kernel's order): 3/4 of the points in the last round, each round in Hilbert order") {
+TEST_CASE("Hilbert sort for BRIO by biased coins (the fast kernel's order) puts 3/4 of the points in the last round and each round in Hilbert order") {
   const std::size_t n = 40000;
   const XY p = mixedPoints(n - 1000, 31);
   const std::vector<std::size_t> o = dt::brioCoinOrder(p, 3);

@@ -28,7 +28,7 @@ void check(const double v[8], Tally& o, Tally& c) {
 
 }  // namespace
 
-TEST_CASE("predicate core: grids at every scale, small multiples of 2^k decided exactly in doubles") {
+TEST_CASE("predicate core decides grids at every scale (small multiples of 2^k) exactly in doubles") {
   // Points of a small grid (side 2^g) scaled by h = 2^s and shifted far from the origin: many
   // collinear and cocircular quadruples (the filter cannot decide a zero), differences exact.
   std::mt19937_64 rng(909);
@@ -69,7 +69,7 @@ TEST_CASE("predicate core: grids at every scale, small multiples of 2^k decided 
   CHECK(c.stage[dt::pred::kFilter] > c.calls / 4);
 }
 
-TEST_CASE("predicate core: huge and tiny grids, where h leaves [2^-260, 2^200], go to the wide stage") {
+TEST_CASE("predicate core sends huge and tiny grids where h leaves [2^-260 .. 2^200] to the wide stage") {
   std::mt19937_64 rng(910);
   std::uniform_int_distribution<long> cell(0, 7);
   Tally o, c;
@@ -89,7 +89,7 @@ TEST_CASE("predicate core: huge and tiny grids, where h leaves [2^-260, 2^200], 
   CHECK(c.stage[dt::pred::kWide] > 100);
 }
 
-TEST_CASE("predicate core: the wide stage's 128- and 256-bit integers, up to 62-bit multiples") {
+TEST_CASE("predicate core wide stage holds 128- and 256-bit integers of up to 62-bit multiples") {
   std::mt19937_64 rng(912);
   Tally o, c;
   // Integers of up to 50 bits at random offsets: differences exact, of up to 51 bits, scaled
@@ -136,7 +136,7 @@ TEST_CASE("predicate core: the wide stage's 128- and 256-bit integers, up to 62-
   CHECK(x.hi == 1);
 }
 
-TEST_CASE("predicate core: a difference that rounds is never taken for exact") {
+TEST_CASE("predicate core never takes a difference that rounds is never taken for exact") {
   // 2^60 - 1 rounds to 2^60, a multiple of a power of two: only the two-sum check stops it.
   const double big = std::ldexp(1.0, 60);
   int s = -1;
@@ -154,7 +154,7 @@ TEST_CASE("predicate core: a difference that rounds is never taken for exact") {
   CHECK_FALSE(dt::pred::smallMultiples(zero, 12));
 }
 
-TEST_CASE("predicate core: random near-degenerate inputs, nudged by ulps, agree with GMP") {
+TEST_CASE("predicate core agrees with GMP on random near-degenerate inputs nudged by ulps") {
   std::mt19937_64 rng(911);
   std::uniform_real_distribution<double> u(-1, 1);
   std::uniform_int_distribution<int> k(-3, 3), sc(-200, 200);
@@ -192,7 +192,7 @@ TEST_CASE("predicate core: random near-degenerate inputs, nudged by ulps, agree 
   CHECK(c.stage[dt::pred::kFilter] > 1000);
 }
 
-TEST_CASE("predicate core: dt::orient2d / dt::incircle report the small-multiple stage and count it") {
+TEST_CASE("predicate core dt::orient2d / dt::incircle report the small-multiple stage and count it") {
   dt::predicateCounters().reset();
   CHECK(dt::orient2d(0, 0, 1, 1, 2, 2) == 0);
   CHECK(dt::lastPredicateStage() == dt::pred::kSmallInt);

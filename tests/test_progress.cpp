@@ -24,7 +24,7 @@ std::string slowInput() {
 
 }  // namespace
 
-TEST_CASE("delaunay2d: no progress report when stderr is not a terminal") {
+TEST_CASE("progress is not reported when stderr is not a terminal") {
   const std::string in = slowInput(), out = dttest::tmpPath("progress_quiet");
   const dttest::CliResult r = dttest::runCli("'" + in + "' -o '" + out + "'" + kSlow);
   REQUIRE(r.status == 0);
@@ -32,7 +32,7 @@ TEST_CASE("delaunay2d: no progress report when stderr is not a terminal") {
   CHECK(r.out.empty());
 }
 
-TEST_CASE("delaunay2d: --progress reports on any stderr, --no-progress never") {
+TEST_CASE("progress is reported with --progress on any stderr and never with --no-progress") {
   const std::string in = dttest::tmpPath("progress_small.xy"), out = dttest::tmpPath("progress_small");
   dttest::writeText(in, "0 0\n1 0\n0 1\n1 1\n");
   dttest::CliResult r = dttest::runCli("'" + in + "' -o '" + out + "' --progress");
@@ -54,7 +54,7 @@ TEST_CASE("delaunay2d: --progress reports on any stderr, --no-progress never") {
   CHECK(r.err.empty());
 }
 
-TEST_CASE("delaunay2d: progress on a terminal, rewritten in place") {
+TEST_CASE("progress on a terminal is rewritten in place") {
   // script(1) runs the command on a pseudo-terminal and copies what it writes.
   REQUIRE_MESSAGE(std::system("command -v script > /dev/null") == 0, "script (util-linux) is needed");
   const std::string log = dttest::tmpPath("progress_tty.log");

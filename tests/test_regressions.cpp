@@ -14,7 +14,7 @@ std::string replayTriangulate(const std::vector<std::uint8_t>& bytes) {
 
 }  // namespace
 
-TEST_CASE("fuzz regression 1: triangles near 1e308 made the walk's centroid overflow") {
+TEST_CASE("regressions fuzz 1: triangles near 1e308 made the walk's centroid overflow") {
   // fuzz_triangulate, mode 2 (small integers times 2^1022): the centroid of Listing 2.6's walk
   // summed three coordinates of about 2^1023 to infinity, and the exact orientation test then
   // received a non-finite point (GMP aborts on it). Fixed in Face::centroid (mesh.cpp).
@@ -35,7 +35,7 @@ TEST_CASE("fuzz regression 1: triangles near 1e308 made the walk's centroid over
   CHECK(dt::orientationTest(&c, &a, &g) > 0);
 }
 
-TEST_CASE("fuzz regression 2: a subnormal difference vanished in the small-multiple exact stage") {
+TEST_CASE("regressions fuzz 2: a subnormal difference vanished in the small-multiple exact stage") {
   // fuzz_triangulate, mode 0 (raw doubles): (0, 0), (0, 8.0869e-320) and (1.3568e-312,
   // 1.0385e34). The orientation's differences 8e-320 and 1e34 were taken as multiples of
   // h = 2^89 because 8e-320 / 2^89 underflows to 0, so orient2d returned 0 instead of -1 and
@@ -54,4 +54,22 @@ TEST_CASE("fuzz regression 2: a subnormal difference vanished in the small-multi
   CHECK(dt::orient2dExact(0, tiny, x, y, 0, 0) == -1);
   CHECK(dt::orient2d(0, tiny, x, y, 0, 0) == -1);
   CHECK(dt::orient2d(x, y, 0, tiny, 0, 0) == 1);
+}
+
+TEST_CASE("regressions oracle 1: a lattice rectangle near 2^255 overflowed incircle's semi-static filter") {
+  // Found by the independent oracle (tests/oracle.h, 2.3.1 exactness tests): the four corners
+  // of a rectangle, exactly cocircular. M (the largest difference) is about 2^256, M^4 is still
+  // finite, but a lift times a minor overflowed to -infinity, and -det > 134u M^4 held: the
+  // filter answered -1. Fixed by requiring M < 2^254 in that filter (predicates_inline.h).
+  const double v[8] = {0x1.8p+249, -0x1.2b8p+255, 0x1.a8p+255, -0x1.2b8p+255,
+                       0x1.8p+249, 0x1.69p+254,   0x1.a8p+255, 0x1.69p+254};
+  CHECK(dt::incircle(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]) == 0);
+  CHECK(dt::incircleExact(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]) == 0);
+  // The same rectangle at every scale up to overflow: never a wrong sign.
+  for (int e = 200; e <= 766; ++e) {
+    CAPTURE(e);
+    double w[8];
+    for (int i = 0; i < 8; ++i) w[i] = std::ldexp(v[i], e - 255);
+    CHECK(dt::incircle(w[0], w[1], w[2], w[3], w[4], w[5], w[6], w[7]) == 0);
+  }
 }
