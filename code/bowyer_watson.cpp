@@ -13,6 +13,7 @@ namespace dt {
 //! [delaunayKernelStep]
 KernelStep delaunayKernelStep(const std::vector<double>& xy, std::vector<Tri>& tri, int ip,
                               std::uint64_t* incircleTests) {
+  // BEGIN SOLUTION 2.2-1
   const double px = xy[2 * ip], py = xy[2 * ip + 1];
   auto X = [&](int i) { return xy[2 * i]; };
   auto Y = [&](int i) { return xy[2 * i + 1]; };
@@ -50,11 +51,13 @@ KernelStep delaunayKernelStep(const std::vector<double>& xy, std::vector<Tri>& t
       ++step.ball;
     }
   return step;
+  // END SOLUTION 2.2-1
 }
 //! [delaunayKernelStep]
 
 //! [bowyerWatson]
 BowyerWatsonResult bowyerWatson(const std::vector<double>& xy, double factor) {
+  // BEGIN SOLUTION 2.2-1
   BowyerWatsonResult r;
   const std::size_t n = xy.size() / 2;
   if (n == 0) throw std::invalid_argument("bowyerWatson: no points");
@@ -94,6 +97,7 @@ BowyerWatsonResult bowyerWatson(const std::vector<double>& xy, double factor) {
     r.cavityFaces += s.cavity;
   }
   return r;
+  // END SOLUTION 2.2-1
 }
 //! [bowyerWatson]
 
@@ -113,6 +117,7 @@ std::vector<std::array<long, 3>> canonicalTriangles(const std::vector<long>& ids
 std::vector<std::array<long, 2>> hullEdgesNotCovered(const std::vector<double>& xy,
                                                      const std::vector<long>& ids,
                                                      const std::vector<Tri>& tri) {
+  // BEGIN SOLUTION 2.2-3
   auto X = [&](int i) { return xy[2 * i]; };
   auto Y = [&](int i) { return xy[2 * i + 1]; };
   std::vector<int> pts;
@@ -152,6 +157,7 @@ std::vector<std::array<long, 2>> hullEdgesNotCovered(const std::vector<double>& 
       missing.push_back({ids[a], ids[b]});
   }
   return missing;
+  // END SOLUTION 2.2-3
 }
 
 std::vector<Tri> bruteForceDelaunay(const std::vector<double>& xy) {

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace dt {
 
@@ -259,6 +260,7 @@ int incircleMPFR200(double ax, double ay, double bx, double by, double cx, doubl
   return incircleMPFR(200, ax, ay, bx, by, cx, cy, dx, dy);
 }
 
+// BEGIN SOLUTION 2.3.1-2 (remove)
 // Exercise: how many bits make MPFR exact? Scaled as in the exact stage, the inputs are integers
 // of at most B bits. Then |differences| < 2^(B+1), products < 2^(2B+2), and the orientation
 // value < 2^(2B+3); the incircle lifts and minors are < 2^(2B+3), their products < 2^(4B+6), the
@@ -279,15 +281,20 @@ int scaledBits(const double* x, int n) {
   return any ? emax - emin : 1;
 }
 }  // namespace
+// END SOLUTION 2.3.1-2
 
 int exactBitsOrient2d(double ax, double ay, double bx, double by, double cx, double cy) {
+  // BEGIN SOLUTION 2.3.1-2
   const double in[6] = {ax, ay, bx, by, cx, cy};
   return 2 * scaledBits(in, 6) + 3;
+  // END SOLUTION 2.3.1-2
 }
 int exactBitsIncircle(double ax, double ay, double bx, double by, double cx, double cy, double dx,
                       double dy) {
+  // BEGIN SOLUTION 2.3.1-2
   const double in[8] = {ax, ay, bx, by, cx, cy, dx, dy};
   return 4 * scaledBits(in, 8) + 8;
+  // END SOLUTION 2.3.1-2
 }
 
 // As printed: "max(x_a, y_a, x_b, y_b, x_c, y_c)", a signed maximum (no absolute values).

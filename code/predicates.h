@@ -68,9 +68,8 @@ int incircleMPFR200(double ax, double ay, double bx, double by, double cx, doubl
 int orient2dMPFR(int bits, double ax, double ay, double bx, double by, double cx, double cy);
 int incircleMPFR(int bits, double ax, double ay, double bx, double by, double cx, double cy,
                  double dx, double dy);
-/// A precision (in bits) with which every MPFR operation of orient2dMPFR / incircleMPFR is exact
-/// on these inputs, hence the sign too (exercise of section 2.3.1). It grows with the spread of
-/// the exponents: 109 bits for doubles of one binade, about 2100 for 1e-308 beside 1e308.
+/// Exercise 2.3.1-2: a precision (in bits) with which every MPFR operation of orient2dMPFR /
+/// incircleMPFR is exact on these inputs, hence the sign too.
 int exactBitsOrient2d(double ax, double ay, double bx, double by, double cx, double cy);
 int exactBitsIncircle(double ax, double ay, double bx, double by, double cx, double cy, double dx,
                       double dy);

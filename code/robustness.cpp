@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <stdexcept>
 #include <utility>
 
 #include "predicates.h"
@@ -100,6 +101,7 @@ std::vector<std::pair<double, double>> cocircularIntegerPoints() {
 
 //! [orient2dNaiveCanonical]
 int orient2dNaiveCanonical(double ax, double ay, double bx, double by, double cx, double cy) {
+  // BEGIN SOLUTION 2.3.1-1
   struct P {
     double x, y;
     bool operator<(const P& o) const { return x < o.x || (x == o.x && y < o.y); }
@@ -110,6 +112,7 @@ int orient2dNaiveCanonical(double ax, double ay, double bx, double by, double cx
   if (p[2] < p[1]) std::swap(p[1], p[2]), parity = -parity;
   if (p[1] < p[0]) std::swap(p[0], p[1]), parity = -parity;
   return parity * orient2dNaive(p[0].x, p[0].y, p[1].x, p[1].y, p[2].x, p[2].y);
+  // END SOLUTION 2.3.1-1
 }
 //! [orient2dNaiveCanonical]
 
@@ -120,6 +123,7 @@ bool segmentsCrossNotes(double px, double py, double qx, double qy, double rx, d
 }
 
 //! [segmentsIntersect]
+// BEGIN SOLUTION 2.3.1-3 (remove)
 namespace {
 // For r on the line pq: is r within the bounding box of p and q? Comparisons are exact.
 bool onSegment(double px, double py, double qx, double qy, double rx, double ry) {
@@ -127,9 +131,11 @@ bool onSegment(double px, double py, double qx, double qy, double rx, double ry)
          ry <= std::max(py, qy);
 }
 }  // namespace
+// END SOLUTION 2.3.1-3
 
 bool segmentsIntersect(double px, double py, double qx, double qy, double rx, double ry,
                        double sx, double sy) {
+  // BEGIN SOLUTION 2.3.1-3
   const int o1 = orient2d(px, py, qx, qy, rx, ry), o2 = orient2d(px, py, qx, qy, sx, sy);
   const int o3 = orient2d(rx, ry, sx, sy, px, py), o4 = orient2d(rx, ry, sx, sy, qx, qy);
   if (o1 * o2 < 0 && o3 * o4 < 0) return true;  // proper crossing: the notes' case
@@ -141,6 +147,7 @@ bool segmentsIntersect(double px, double py, double qx, double qy, double rx, do
   if (o3 == 0 && onSegment(rx, ry, sx, sy, px, py)) return true;
   if (o4 == 0 && onSegment(rx, ry, sx, sy, qx, qy)) return true;
   return false;
+  // END SOLUTION 2.3.1-3
 }
 //! [segmentsIntersect]
 

@@ -70,12 +70,11 @@ std::vector<std::pair<double, double>> cocircularIntegerPoints();
 
 // ---- exercises of section 2.3.1 (the book states them; tests check the solutions) -------------
 
-/// Exercise 1: a naive orientation that is consistent under permutations. The points are sorted
-/// lexicographically before the formula is evaluated, and the sign is corrected by the parity of
-/// the sort, so f(a,b,c) = f(b,c,a) = -f(c,b,a) bit for bit. Still wrong near degeneracy.
+/// Exercise 2.3.1-1: a naive orientation (doubles, no filter) that is consistent under
+/// permutations: f(a,b,c) = f(b,c,a) = -f(c,b,a) bit for bit.
 int orient2dNaiveCanonical(double ax, double ay, double bx, double by, double cx, double cy);
 
-/// Exercise 3: do the closed segments [p,q] and [r,s] share a point? Exact, for all doubles,
+/// Exercise 2.3.1-3: do the closed segments [p,q] and [r,s] share a point? Exact, for all doubles,
 /// including touching endpoints, collinear overlaps and zero-length segments. The notes'
 /// criterion O(p,q,r) O(p,q,s) < 0 and O(r,s,p) O(r,s,q) < 0 sees proper crossings only.
 bool segmentsIntersect(double px, double py, double qx, double qy, double rx, double ry,

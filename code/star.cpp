@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <stdexcept>
 #include <unordered_map>
 
 #include "predicates.h"
@@ -37,6 +38,7 @@ bool segmentsIntersect(Point2 a, Point2 b, Point2 c, Point2 d) {
 
 //! [polygonKernelImpl]
 std::vector<Point2> polygonKernel(const std::vector<Point2>& poly) {
+  // BEGIN SOLUTION 2.1-1
   if (poly.size() < 3) return {};
   double x0 = poly[0].x, x1 = x0, y0 = poly[0].y, y1 = y0;
   for (const Point2& q : poly) {
@@ -72,13 +74,16 @@ std::vector<Point2> polygonKernel(const std::vector<Point2>& poly) {
     hasArea = orient(K[0], K[k], K[k + 1]) > 0;
   if (!hasArea) K.clear();
   return K;
+  // END SOLUTION 2.1-1
 }
 //! [polygonKernelImpl]
 
 bool inOpenKernel(const std::vector<Point2>& poly, Point2 x) {
+  // BEGIN SOLUTION 2.1-1
   for (std::size_t i = 0; i < poly.size(); ++i)
     if (orient(poly[i], poly[(i + 1) % poly.size()], x) <= 0) return false;
   return !poly.empty();
+  // END SOLUTION 2.1-1
 }
 
 bool insidePolygon(const std::vector<Point2>& poly, Point2 x) {
@@ -113,6 +118,7 @@ bool seesCorner(const std::vector<Point2>& poly, Point2 x, std::size_t j) {
 
 //! [checkCavityImpl]
 CavityReport checkCavity(const std::vector<const Face*>& C, const Vertex* p) {
+  // BEGIN SOLUTION 2.1-2
   CavityReport r;
   auto fail = [&r](const std::string& why) {
     r.ok = false;
@@ -197,6 +203,7 @@ CavityReport checkCavity(const std::vector<const Face*>& C, const Vertex* p) {
   if (r.innerVertices != 0) fail("a vertex lies inside the cavity (Property 2.1.1)");
   if (r.boundaryEdges != r.faces + 2) fail("|bnd| != |C| + 2");
   return r;
+  // END SOLUTION 2.1-2
 }
 //! [checkCavityImpl]
 

@@ -47,18 +47,22 @@ MeshCounts meshCounts(std::size_t np, const std::vector<std::array<int, 3>>& tri
 
 //! [gridCounts]
 std::array<long, 4> gridCounts(long nx, long ny) {
+  // BEGIN SOLUTION 2.3.2-1
   if (nx < 2 || ny < 2) throw std::invalid_argument("gridCounts: need nx, ny >= 2");
   // Every square gets two triangles whichever diagonal it gets; Euler does the rest.
   const long n = nx * ny, nh = 2 * (nx + ny) - 4;
   return {n, nh, 2 * (nx - 1) * (ny - 1), 3 * n - 2 * nx - 2 * ny + 1};
+  // END SOLUTION 2.3.2-1
 }
 //! [gridCounts]
 
 //! [lowDegreeVertex]
 int lowDegreeVertex(const MeshCounts& c) {
+  // BEGIN SOLUTION 2.3.2-2
   for (std::size_t v = 0; v < c.ve.size(); ++v)
     if (c.vf[v] > 0 && c.ve[v] <= 5) return int(v);
   return -1;
+  // END SOLUTION 2.3.2-2
 }
 //! [lowDegreeVertex]
 
@@ -82,14 +86,17 @@ std::vector<PointerCount> pointerCounts(double n, double nh, bool exact) {
 
 //! [halfEdgePointers]
 double halfEdgePointers(double n, double nh, bool exact) {
+  // BEGIN SOLUTION 2.3.3-1
   const double nf = exact ? 2 * (n - 1) - nh : 2 * n;
   const double ne = exact ? 3 * (n - 1) - nh : 3 * n;
   return (2 * ne * (1 + 4) + n * (1 + 1) + nf * (1 + 1)) / n;
+  // END SOLUTION 2.3.3-1
 }
 //! [halfEdgePointers]
 
 //! [vertexStarImpl]
 std::vector<Face*> vertexStar(Face* f, const Vertex* v, std::size_t maxFaces) {
+  // BEGIN SOLUTION 2.3.3-2
   auto corner = [v](const Face* g) {
     for (int i = 0; i < 3; ++i)
       if (g->V[i] == v) return i;
@@ -125,11 +132,13 @@ std::vector<Face*> vertexStar(Face* f, const Vertex* v, std::size_t maxFaces) {
   }
   star.insert(star.begin(), back.rbegin(), back.rend());
   return star;
+  // END SOLUTION 2.3.3-2
 }
 //! [vertexStarImpl]
 
 //! [computeAdjacenciesSorted]
 void computeAdjacenciesSorted(std::vector<Face*>& faces) {
+  // BEGIN SOLUTION 2.3.4-1
   struct Side {
     Vertex *lo, *hi;  // the edge, sorted
     std::size_t face;
@@ -164,11 +173,13 @@ void computeAdjacenciesSorted(std::vector<Face*>& faces) {
     }
     i = j;
   }
+  // END SOLUTION 2.3.4-1
 }
 //! [computeAdjacenciesSorted]
 
 //! [backwardCavityMean]
 std::array<double, 2> backwardCavityMean(const Triangulation& T) {
+  // BEGIN SOLUTION 2.3.4-2
   double sum = 0, D = 0;
   std::unordered_set<const Vertex*> real;  // vertices of the mesh (skipped duplicates are not)
   for (const Face* f : T.finiteFaces())
@@ -178,6 +189,7 @@ std::array<double, 2> backwardCavityMean(const Triangulation& T) {
     }
   const double n = double(real.size());
   return {n > 0 ? (sum - 2 * n) / n : 0, D};
+  // END SOLUTION 2.3.4-2
 }
 //! [backwardCavityMean]
 

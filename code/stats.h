@@ -33,13 +33,12 @@ struct MeshCounts {
 /// the 3 n_f directed edges, O(n_f log n_f); no geometry is used.
 MeshCounts meshCounts(std::size_t np, const std::vector<std::array<int, 3>>& tri);
 
-/// Exercise 2.3.2.1: the Delaunay triangulation of an nx x ny grid (nx, ny >= 2) has
-/// n = nx ny, n_h = 2(nx + ny) - 4, n_f = 2(nx - 1)(ny - 1), n_e = 3 nx ny - 2 nx - 2 ny + 1,
-/// whatever diagonal each square gets. Returns {n, n_h, n_f, n_e}.
+/// Exercise 2.3.2-1: the counts {n, n_h, n_f, n_e} of the Delaunay triangulation of an
+/// nx x ny grid (nx, ny >= 2), in closed form (book/solutions.md derives it).
 std::array<long, 4> gridCounts(long nx, long ny);
 
-/// Exercise 2.3.2.2: a vertex with at most 5 edges (one exists: eq. (2.3) gives n_ve < 6).
-/// Returns its index, or -1 if every used vertex has 6 edges or more (impossible).
+/// Exercise 2.3.2-2: the index of a vertex with at most 5 edges, or -1 if every used vertex
+/// has 6 edges or more.
 int lowDegreeVertex(const MeshCounts& c);
 
 //! [pointerCounts]
@@ -54,15 +53,13 @@ struct PointerCount {
 std::vector<PointerCount> pointerCounts(double n, double nh, bool exact);
 //! [pointerCounts]
 
-/// Exercise 2.3.3.1: N_p of a half-edge structure (not in the notes): each of the 2 n_e
-/// half-edges stores origin, twin, next and face (+1 for itself); vertices and faces store one
-/// half-edge (+1 each). With the notes' asymptotic counts: 36 n.
+/// Exercise 2.3.3-1: N_p of a half-edge structure (not in the notes), counted as
+/// pointerCounts counts the other structures (`exact` likewise).
 double halfEdgePointers(double n, double nh, bool exact);
 
 //! [vertexStar]
-/// Exercise 2.3.3.2: the face-based structure has no vertex -> face link. One Face* per
-/// vertex (N_p = 16 n) is enough to list the star of a vertex in time proportional to its
-/// degree, turning around it through F[]. Returns the finite faces of v counter-clockwise,
+/// Exercise 2.3.3-2: the star of v in the face-based structure, from one face f of v, in time
+/// proportional to the degree of v. Returns the finite faces of v counter-clockwise,
 /// consecutive ones sharing an edge; around a hull vertex the fan starts at the hull (after the
 /// ghost faces, or at an F == nullptr that the turn then completes clockwise).
 /// Throws std::logic_error if v is not a vertex of f, or if the turn exceeds `maxFaces` faces
@@ -70,15 +67,13 @@ double halfEdgePointers(double n, double nh, bool exact);
 std::vector<Face*> vertexStar(Face* f, const Vertex* v, std::size_t maxFaces = 1u << 30);
 //! [vertexStar]
 
-/// Exercise 2.3.4.1: computeAdjacencies without std::map: sort the 3N edges once and link
-/// equal neighbours, O(N log N) with one allocation. Same contract as computeAdjacencies.
+/// Exercise 2.3.4-1: computeAdjacencies without std::map, O(N log N). Same contract as
+/// computeAdjacencies.
 void computeAdjacenciesSorted(std::vector<Face*>& faces);
 
-/// Exercise 2.3.4.2 (backward analysis of N_cavity): in DT(S0 u S) built on the super-triangles,
-/// the cavity of the point inserted last had deg(p) - 2 faces, deg(p) its triangles in the final
-/// mesh. If the last point is a uniformly random one of the n, its expected cavity is the mean
-/// of deg - 2 over the real vertices (id >= 0), which equals 4 + (6 - D)/n, D the number of
-/// triangle corners at the four super-vertices. Returns {that mean, D}.
+/// Exercise 2.3.4-2 (backward analysis of N_cavity): for T = DT(S0 u S) built on the
+/// super-triangles, returns {the mean over the real vertices (id >= 0) of their number of
+/// triangles minus 2, D the number of triangle corners at the four super-vertices}.
 std::array<double, 2> backwardCavityMean(const Triangulation& T);
 
 }  // namespace dt

@@ -352,18 +352,22 @@ void brioComparison(const ch::Options& o, const std::vector<std::size_t>& sizes,
       {"uniform", [](std::size_t n, std::uint64_t s) { return dt::uniformPoints(n, s); }},
       {"clustered", [](std::size_t n, std::uint64_t s) { return dt::gaussianClusters(n, s); }},
       {"parabola", dt::parabolaPoints},
-      {"jittered grid", [](std::size_t n, std::uint64_t s) { return dt::jitteredGridPoints(n, s); }}};
+      {"jittered grid", [](std::size_t n, std::uint64_t s) { return dt::jitteredGridPoints(n, s); }},
+      // Exercise 2.3.5-3: points on a circle (rounded, so only nearly cocircular); not part of
+      // the page's values below.
+      {"circle", dt::randomCirclePoints}};
+  constexpr int nInputs = sizeof(inputs) / sizeof(inputs[0]);
   ch::Table tab;
   tab.caption = "BRIO against Hilbert-only and random insertion order: delaunayTrgl with "
                 "super-triangles and LastCavity; t includes the ordering. Random order only up "
                 "to n = " + sci(randomMax) + ": its walks grow like sqrt(n).";
   tab.header = {"input", "n", "order", "N_search", "N_cavity", "t (s)", "t/n (us)", "checked"};
   // One block of rows per (input, order), so that gnuplot joins each series.
-  std::ostringstream dat[4][3], stops;
+  std::ostringstream dat[nInputs][3], stops;
   std::size_t total = 0, done = 0;
-  for (std::size_t n : sizes) total += 4 * (n <= randomMax ? 3 : 2);
+  for (std::size_t n : sizes) total += nInputs * (n <= randomMax ? 3 : 2);
   ch::Progress prog("BRIO comparison", total);
-  for (int in = 0; in < 4; ++in) {
+  for (int in = 0; in < nInputs; ++in) {
     // A series stops once N_search + N_cavity exceeds 200: the work per point grows like n
     // there (quadratic total), and the next size would take about 100 times longer.
     bool quadratic[3] = {false, false, false}, stopped[3] = {false, false, false};
@@ -383,10 +387,10 @@ void brioComparison(const ch::Options& o, const std::vector<std::size_t>& sizes,
         }
         const Run r = triangulate(p, ord, 0, n <= checkLimit);
         quadratic[k] = r.nSearch + r.nCavity > 200;
-        const bool spread = in != 2;
+        const bool spread = in == 0 || in == 1 || in == 3, parabola = in == 2;
         if (ord == Order::Hilbert) {
           if (spread) hilCavLo = std::min(hilCavLo, r.nCavity), hilCavHi = std::max(hilCavHi, r.nCavity);
-          else parabolaHilbert += (parabolaHilbert.empty() ? "" : ", ") + ch::fmt("%.0f at \\f$n = ", r.nCavity) + sci(n) + "\\f$";
+          else if (parabola) parabolaHilbert += (parabolaHilbert.empty() ? "" : ", ") + ch::fmt("%.0f at \\f$n = ", r.nCavity) + sci(n) + "\\f$";
           hilbertRun = r;
         } else if (ord == Order::Brio) {
           if (spread) {
@@ -396,7 +400,7 @@ void brioComparison(const ch::Options& o, const std::vector<std::size_t>& sizes,
               cavDiffSum += hilbertRun.nCavity - r.nCavity;
               ++pairs;
             }
-          } else {
+          } else if (parabola) {
             brioParabola = std::max(brioParabola, r.nCavity);
           }
         }
@@ -421,7 +425,7 @@ void brioComparison(const ch::Options& o, const std::vector<std::size_t>& sizes,
   v.num("s235.brio_cav_less", pairs ? cavDiffSum / pairs : 0.0, "%.1f");
   v.set("s235.parabola_hilbert", parabolaHilbert.empty() ? "not measured" : parabolaHilbert);
   v.num("s235.parabola_brio", brioParabola, "%.1f");
-  std::string all = "# input(0 uniform,1 clustered,2 parabola,3 jittered grid) n "
+  std::string all = "# input(0 uniform,1 clustered,2 parabola,3 jittered grid,4 circle) n "
                     "order(0 random,1 Hilbert,2 BRIO) nsearch ncavity t us_per_point\n";
   for (auto& byInput : dat)
     for (auto& series : byInput) all += series.str();
