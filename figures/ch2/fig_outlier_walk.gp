@@ -10,7 +10,7 @@ set tics out nomirror
 set logscale xy
 set format x "10^{%T}"
 set grid lc rgb "#d8d8d8"
-set xlabel "n (uniform points in the unit square, plus the outlier)"
+set xlabel "n (uniform in the unit square + one outlier)"
 stats f using 1 nooutput
 set xrange [STATS_min / 1.5:STATS_max * 1.5]
 do for [term in "png svg"] {
@@ -18,10 +18,10 @@ do for [term in "png svg"] {
   set output (term eq "png" ? outdir."/fig_outlier_walk.png" : outdir."/fig_outlier_walk.svg")
   eval layout(1, 2)
   eval panel(1, "N_{search}: mean walk length")
-  set key top left
-  plot f index 0 using 1:3 with linespoints lw 2 pt 7 ps (1.2*PS) lc rgb word(C_SERIES, 2) title "fixed grid over the box", \
-       f index 1 using 1:3 with linespoints lw 2 pt 5 ps (1.2*PS) lc rgb word(C_SERIES, 1) title "adaptive (crowded cells refined)", \
-       f index 0 using 1:(0.5 * sqrt($1)) with lines dt 2 lc rgb C_CONSTRUCT title "0.5 sqrt(n)"
+  set key inside top left Left reverse samplen 2 spacing 1.1
+  plot f index 0 using 1:3 with linespoints lw 2 pt 7 ps (1.2*PS) lc rgb word(C_SERIES, 2) title "fixed grid", \
+       f index 1 using 1:3 with linespoints lw 2 pt 5 ps (1.2*PS) lc rgb word(C_SERIES, 1) title "adaptive", \
+       f index 0 using 1:(0.5 * sqrt($1)) with lines dt 2 lc rgb C_CONSTRUCT title "0.5 √n"
   eval panel(2, "time per point (µs), ordering included")
   unset key
   plot f index 0 using 1:(1e6 * $5 / $1) with linespoints lw 2 pt 7 ps (1.2*PS) lc rgb word(C_SERIES, 2), \
