@@ -19,7 +19,6 @@
 set -euo pipefail
 
 repo=$(cd "$(dirname "$0")/.." && pwd)
-list="$repo/tests/mutants.txt"
 jobs=${MUTANTS_JOBS:-2}
 timeout_s=${MUTANTS_TIMEOUT:-300}
 test_args=${MUTANTS_TEST_ARGS:---source-file-exclude=*test_progress*}
@@ -31,6 +30,7 @@ build="$work/build"
 mkdir -p "$src"
 # The tracked files as they are now (uncommitted edits included), nothing else.
 (cd "$repo" && git ls-files -z | tar --null -T - -cf -) | tar -xf - -C "$src"
+list="$src/tests/mutants.txt"  # the copy's: editing the repository's list cannot disturb a run
 
 # MUTANTS_CHECK_ONLY=1: only check that every mutant applies (its text occurs exactly once).
 check_only=${MUTANTS_CHECK_ONLY:-0}

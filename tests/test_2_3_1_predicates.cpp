@@ -358,3 +358,28 @@ TEST_CASE("2.3.1 the notes' filters with MPFR-200 are exact on the printed grids
   CHECK(compareMaps(orientMap(orient2d, OrientOrder::CBA), exCBA).wrong == 0);
   CHECK(compareMaps(incircleMap(incircle, IncircleOrder::DCBA), ex2).wrong == 0);
 }
+
+TEST_CASE("2.3.1 the filters' safeguards are needed: a rounding error of 2.09u detsum and an incircle whose permanent underflows") {
+  // Found by random search against the rational oracle (tests/oracle.h): the floating-point
+  // orientation below is wrong by 2.09u (|l| + |r|), so a filter bound of 2u detsum would trust
+  // its wrong sign (the proved bound is 5u: a search of 8 10^6 adversarial inputs found nothing
+  // above 2.1u, which is why halving it cannot be caught by a test).
+  const double o[6] = {0x1.4029e5a8abd44p+0,  0x1.6e004f2c778abp+0,  -0x1.9d80746f406e6p+0,
+                       -0x1.518816067c932p+0, -0x1.cfd63363e0716p+2, -0x1.ae0a1f0cde6acp+2};
+  const double l = (o[0] - o[4]) * (o[3] - o[5]), r = (o[1] - o[5]) * (o[2] - o[4]);
+  const double det = l - r, detsum = std::fabs(l) + std::fabs(r);
+  CHECK(orientQ(o[0], o[1], o[2], o[3], o[4], o[5]) == -1);
+  CHECK(det > 2 * 0x1p-53 * detsum);  // wrong sign, above 2u detsum
+  CHECK(det < 5 * 0x1p-53 * detsum);  // below the proved bound
+  CHECK(orient2d(o[0], o[1], o[2], o[3], o[4], o[5]) == -1);
+  // Near 2^-265 every degree-4 product underflows: the permanent rounds to 0 while the
+  // determinant does not, so without the guard permanent >= 2^-900 the "bound" 0 would let
+  // the wrong sign of det through.
+  const double v[8] = {0x1.21ce663e1fed6p-264, 0x1.d72152839711ap-266, 0x1.02dac642799c8p-265,
+                       0x1.9433eaf6538bep-264, -0x1.51fed57edc222p-264, 0x1.300c7ed3be277p-266,
+                       -0x1.abe0c3c12352ep-268, -0x1.7696cadfc4beep-265};
+  CHECK(incircleQ(v) == 1);
+  CHECK(incircleNaive(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]) == -1);
+  CHECK(incircle(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]) == 1);
+  CHECK(lastPredicateStage() != 0);
+}
