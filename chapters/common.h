@@ -88,20 +88,45 @@ inline std::string writeOut(const Options& o, const std::string& name, const std
   return path;
 }
 
+/// The files a gnuplot script promises: every literal `outdir."/NAME"` (or with single quotes)
+/// in it. Names built with sprintf (animation frames) are not listed; the script's own exit
+/// status covers them.
+inline std::vector<std::string> gnuplotOutputs(const std::string& scriptPath) {
+  std::ifstream in(scriptPath);
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string s = text.str();
+  std::vector<std::string> names;
+  for (std::size_t at = s.find("outdir."); at != std::string::npos; at = s.find("outdir.", at + 7)) {
+    const std::size_t q = at + 7;
+    if (q + 2 >= s.size() || (s[q] != '"' && s[q] != '\'') || s[q + 1] != '/') continue;
+    const std::size_t close = s.find(s[q], q + 1);
+    if (close != std::string::npos) names.push_back(s.substr(q + 2, close - q - 2));
+  }
+  return names;
+}
+
 /// Runs figures/ch2/<script> with gnuplot; the script reads its data from `datadir` and
-/// writes into `outdir` (both set with -e). Returns false (and says why) on failure.
-inline bool runGnuplot(const Options& o, const std::string& script) {
-  if (!o.plot) return true;
+/// writes into `outdir` (both set with -e). A figure the book embeds must not go missing
+/// quietly: if gnuplot fails, or a file the script names is not written by this run, this
+/// throws (runMain turns that into exit status 1) with the script and the file named.
+inline void runGnuplot(const Options& o, const std::string& script) {
+  if (!o.plot) return;
   const std::string path = std::string(DT_SOURCE_DIR) + "/figures/ch2/" + script;
+  const std::vector<std::string> promised = gnuplotOutputs(path);
+  for (const auto& name : promised) std::remove((o.out + "/" + name).c_str());
   const std::string cmd = "gnuplot -e \"datadir='" + o.out + "'; outdir='" + o.out + "'\" '" +
                           path + "'";
   const int rc = std::system(cmd.c_str());
-  if (rc != 0) {
-    std::cerr << "gnuplot failed (" << rc << ") on " << path << "\n";
-    return false;
+  if (rc != 0)
+    throw std::runtime_error("gnuplot failed (status " + std::to_string(rc) + ") on " + path +
+                             ": its figures were not drawn (is gnuplot installed? bash scripts/deps.sh)");
+  for (const auto& name : promised) {
+    struct stat st;
+    if (stat((o.out + "/" + name).c_str(), &st) != 0 || st.st_size == 0)
+      throw std::runtime_error(path + " ran but did not write " + o.out + "/" + name);
   }
   std::cout << "plotted " << path << " into " << o.out << "\n";
-  return true;
 }
 
 /// A table printed as Markdown on stdout and written as .md, .csv and .html (the book
@@ -169,6 +194,43 @@ std::string fmt(const char* f, A... a) {
   std::snprintf(buf, sizeof buf, f, a...);
   return buf;
 }
+
+/// The numbers and verdicts a book page quotes in its prose, written by a chapter program as
+/// "key value" lines into values_<program>.txt next to its tables. The book build replaces
+/// each @{key} of book/*.md by its value and stops on a key that no program wrote, so the
+/// text cannot drift from the measurements. A verdict ("rises", "agrees") is a value too,
+/// computed from the same numbers the tables show.
+class Values {
+ public:
+  Values(const Options& o, std::string program) : o_(o), program_(std::move(program)) {}
+  /// Records `value` under `key` (one word; each key once per program).
+  void set(const std::string& key, const std::string& value) {
+    if (key.empty() || key.find_first_of(" \t\n{}") != std::string::npos)
+      throw std::invalid_argument("value key '" + key + "' must be one word without braces");
+    if (value.find('\n') != std::string::npos)
+      throw std::invalid_argument("value of '" + key + "' spans lines");
+    for (const auto& kv : kv_)
+      if (kv.first == key) throw std::invalid_argument("value key '" + key + "' set twice");
+    kv_.emplace_back(key, value);
+  }
+  /// A number, printf-formatted (e.g. "%.1f").
+  void num(const std::string& key, double v, const char* format) { set(key, fmt(format, v)); }
+  /// One of two words, as the measured condition says.
+  void verdict(const std::string& key, bool condition, const char* ifTrue, const char* ifFalse) {
+    set(key, condition ? ifTrue : ifFalse);
+  }
+  /// Writes values_<program>.txt into the output directory.
+  void write() const {
+    std::string text;
+    for (const auto& kv : kv_) text += kv.first + " " + kv.second + "\n";
+    writeOut(o_, "values_" + program_ + ".txt", text);
+  }
+
+ private:
+  const Options& o_;
+  std::string program_;
+  std::vector<std::pair<std::string, std::string>> kv_;
+};
 
 /// Progress of a long run on stderr, at most a few times per second; silent unless stderr is
 /// a terminal (logs of the main command stay readable).

@@ -1,16 +1,20 @@
 // delaunay2d: the Delaunay triangulation DT(S) of a point file, exact for every input.
 //
 //   delaunay2d points.node -o out [--method hull|super] [--order brio|hilbert|input] [--stats]
-//              [--svg out.svg] [--msh out.msh] [--no-check]
+//              [--svg out.svg] [--msh out.msh] [--no-check] [--kernel fast|listings]
 //
 // Reads a Triangle .node file or a plain "x y" file, writes out.ele (Triangle format,
 // counter-clockwise triangles, vertices numbered as in the input). Exit status: 0 on success,
-// 2 on bad input (message on stderr, nothing written), 1 on an internal error.
+// 2 on bad input or usage (one line on stderr, nothing written), 1 on an internal error or an
+// output that cannot be written. Outputs are all or nothing, and a failure leaves the files
+// that were there before as they were (dt::OutputFiles).
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <iostream>
+#include <cmath>
+#include <functional>
 #include <numeric>
 #include <stdexcept>
 #include <string>
@@ -44,7 +48,8 @@ const char* kUsage =
     "  --order O      insertion order (section 2.3.5): 'brio' (default; random rounds of\n"
     "                 doubling size, each Hilbert-sorted), 'hilbert' (one Hilbert sort: as\n"
     "                 fast on spread-out points, quadratic on points along a curve) or\n"
-    "                 'input' (file order: walks grow like sqrt(n))\n"
+    "                 'input' (file order: walks grow like sqrt(n), like n on sorted input);\n"
+    "                 when an order turns quadratic, a warning on stderr says so once\n"
     "  --kernel K     'fast' (default: code/fast_delaunay.h, index arrays, inlined filters,\n"
     "                 its own BRIO/Hilbert order) or 'listings' (the corrected Listings 2.4-2.7);\n"
     "                 both give the exact DT(S); --method super always uses the listings\n"
@@ -52,7 +57,8 @@ const char* kUsage =
     "  --no-progress  never report progress\n"
     "  -h, --help     this help\n"
     "exit status: 0 success; 1 internal error or output not writable; 2 bad usage or bad\n"
-    "input (message naming file, line and value; no output written)\n";
+    "input (one line naming file, line and value); on failure no output is written and files\n"
+    "that were there before are left as they were\n";
 
 struct Options {
   std::string input, out, svg, msh;
@@ -63,6 +69,51 @@ struct Options {
   // parabola) cost O(n) per insertion, BRIO's random rounds do not (sec2_3_5_hilbert).
   std::string order = "brio";
   int progress = -1;         // --progress 1, --no-progress 0, default -1: if stderr is a tty
+};
+
+[[noreturn]] void usageError(const std::string& why) {
+  std::cerr << "delaunay2d: " << why
+            << " (usage: delaunay2d INPUT -o OUT [options]; delaunay2d --help for more)\n";
+  std::exit(2);
+}
+
+// The options, one row each: to add one, add a row (its names, whether it takes a value, the
+// key under which a repetition is refused, and what it sets) and a line of kUsage.
+struct OptionSpec {
+  const char* name;
+  const char* alias;  // or nullptr
+  bool takesValue;
+  const char* key;    // options with the same key may be given once between them
+  void (*set)(Options& o, const std::string& value);
+};
+
+const OptionSpec kOptions[] = {
+    {"-o", nullptr, true, "-o", [](Options& o, const std::string& v) { o.out = v; }},
+    {"--stats", nullptr, false, "--stats", [](Options& o, const std::string&) { o.stats = true; }},
+    {"--svg", nullptr, true, "--svg", [](Options& o, const std::string& v) { o.svg = v; }},
+    {"--msh", nullptr, true, "--msh", [](Options& o, const std::string& v) { o.msh = v; }},
+    {"--no-check", nullptr, false, "--no-check",
+     [](Options& o, const std::string&) { o.check = false; }},
+    {"--method", nullptr, true, "--method",
+     [](Options& o, const std::string& v) {
+       if (v != "hull" && v != "super") usageError("--method must be 'hull' or 'super'");
+       o.superMethod = v == "super";
+     }},
+    {"--order", nullptr, true, "--order",
+     [](Options& o, const std::string& v) {
+       if (v != "hilbert" && v != "brio" && v != "input")
+         usageError("--order must be 'hilbert', 'brio' or 'input'");
+       o.order = v;
+     }},
+    {"--kernel", nullptr, true, "--kernel",
+     [](Options& o, const std::string& v) {
+       if (v != "fast" && v != "listings") usageError("--kernel must be 'fast' or 'listings'");
+       o.fastKernel = v == "fast";
+     }},
+    {"--progress", nullptr, false, "--progress",
+     [](Options& o, const std::string&) { o.progress = 1; }},
+    {"--no-progress", nullptr, false, "--progress",
+     [](Options& o, const std::string&) { o.progress = 0; }},
 };
 
 // Progress on stderr for long runs: the phase, and while the listings insert, the points
@@ -80,6 +131,8 @@ class Progress {
     insertStart_ = std::chrono::steady_clock::now();
     lastShown_ = 0;
   }
+  double insertionSeconds() const { return since(insertStart_); }
+  void setQuadratic() { quadratic_ = true; }
   void update(std::size_t done) {
     if (!on_) return;
     const double t = since(insertStart_);
@@ -88,10 +141,13 @@ class Progress {
     const double rate = lastShown_ > 0 ? double(done - lastDone_) / (t - lastShown_) : done / t;
     lastShown_ = t;
     lastDone_ = done;
+    // When each insertion costs O(done) (quadratic: WalkWatch), the time grows like done^2.
+    const double r = done > 0 ? double(total_) / double(done) : 1.0;
+    const double left = quadratic_ ? t * (r * r - 1) : rate > 0 ? double(total_ - done) / rate : 0.0;
     char buf[200];
     std::snprintf(buf, sizeof buf, "%zu of %zu points inserted (%.0f%%), %.0f points/s, about "
                   "%.0f s left", done, total_, total_ ? 100.0 * double(done) / double(total_) : 100.0,
-                  rate, rate > 0 ? double(total_ - done) / rate : 0.0);
+                  rate, left);
     show(buf);
   }
   // The last line (it ends the rewritten line on a terminal).
@@ -115,7 +171,7 @@ class Progress {
   }
   bool tty_ = ::isatty(STDERR_FILENO) == 1;
   bool on_, forced_;
-  bool shown_ = false;
+  bool shown_ = false, quadratic_ = false;
   std::size_t total_ = 0, lastDone_ = 0;
   double lastShown_ = 0;
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now(),
@@ -129,59 +185,77 @@ struct UnsupportedInput : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// Issue 19: an order that makes the walks (or the cavities) grow like the number of points
+// inserted makes the run quadratic. Watched between chunks of insertions; one warning.
+class WalkWatch {
+ public:
+  WalkWatch(bool on, std::string order, Progress& progress)
+      : on_(on), order_(std::move(order)), progress_(progress) {}
+  // `done` of `total` points inserted, with the running sums of walk steps and cavity faces.
+  void update(std::size_t done, std::size_t total, std::uint64_t walk, std::uint64_t cavity,
+              double seconds) {
+    if (!on_ || warned_ || done <= lastDone_) return;
+    const double k = double(done - lastDone_);
+    const double w = double(walk - lastWalk_) / k, c = double(cavity - lastCavity_) / k;
+    lastDone_ = done, lastWalk_ = walk, lastCavity_ = cavity;
+    // In a good order both stay O(1); in file order on spread-out points the walks grow like
+    // sqrt(n) (about sqrt(done) steps at most): a cost per point far above that is linear.
+    const double limit = 4 * std::sqrt(double(done)) + 64;
+    if (done < 2048 || (w < limit && c < limit)) return;
+    warned_ = true;
+    progress_.setQuadratic();
+    // A cost per point growing linearly: the remaining time grows like total^2 - done^2.
+    const double r = double(total) / double(done);
+    std::fprintf(stderr,
+                 "delaunay2d: warning: %s average %.0f triangles per point after %zu of %zu "
+                 "points: --order %s on this input (sorted, along a curve, or cocircular) takes "
+                 "quadratic time, about %.0f s in all at this rate; --order brio avoids it\n",
+                 w >= limit ? "walks" : "cavities", w >= limit ? w : c, done, total, order_.c_str(),
+                 seconds * r * r);
+  }
+
+ private:
+  bool on_, warned_ = false;
+  std::string order_;
+  Progress& progress_;
+  std::size_t lastDone_ = 0;
+  std::uint64_t lastWalk_ = 0, lastCavity_ = 0;
+};
+
 // Inserts S[from..) with delaunayTrgl in chunks (the same insertions as one call), reporting
 // progress between chunks.
 void insertInChunks(dt::Triangulation& T, const std::vector<dt::Vertex*>& S, std::size_t from,
-                    dt::InsertionStats& st, Progress& progress) {
-  const std::size_t chunk = 4096;
+                    dt::InsertionStats& st, Progress& progress, WalkWatch& watch) {
+  const std::size_t chunk = 1024;
   for (std::size_t a = from; a < S.size(); a += chunk) {
     const std::vector<dt::Vertex*> part(S.begin() + long(a),
                                         S.begin() + long(std::min(S.size(), a + chunk)));
     dt::delaunayTrgl(T, part, dt::StartRule::LastCavity, &st);
     progress.update(a + part.size());
+    watch.update(a + part.size(), S.size(), st.searchSteps, st.cavityFaces,
+                 progress.insertionSeconds());
   }
-}
-
-[[noreturn]] void usageError(const std::string& why) {
-  std::cerr << "delaunay2d: " << why << "\n" << kUsage;
-  std::exit(2);
 }
 
 Options parse(int argc, char** argv) {
   Options o;
+  std::vector<std::string> given;  // keys of the options seen
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    auto value = [&](const char* name) -> std::string {
-      if (i + 1 >= argc) usageError(std::string(name) + " needs a value");
-      return argv[++i];
-    };
     if (a == "-h" || a == "--help") {
       std::cout << kUsage;
       std::exit(0);
-    } else if (a == "-o") {
-      o.out = value("-o");
-    } else if (a == "--stats") {
-      o.stats = true;
-    } else if (a == "--svg") {
-      o.svg = value("--svg");
-    } else if (a == "--msh") {
-      o.msh = value("--msh");
-    } else if (a == "--method") {
-      const std::string m = value("--method");
-      if (m != "hull" && m != "super") usageError("--method must be 'hull' or 'super'");
-      o.superMethod = m == "super";
-    } else if (a == "--order") {
-      o.order = value("--order");
-      if (o.order != "hilbert" && o.order != "brio" && o.order != "input")
-        usageError("--order must be 'hilbert', 'brio' or 'input'");
-    } else if (a == "--kernel") {
-      const std::string k = value("--kernel");
-      if (k != "fast" && k != "listings") usageError("--kernel must be 'fast' or 'listings'");
-      o.fastKernel = k == "fast";
-    } else if (a == "--progress" || a == "--no-progress") {
-      o.progress = a == "--progress";
-    } else if (a == "--no-check") {
-      o.check = false;
+    }
+    const OptionSpec* spec = nullptr;
+    for (const OptionSpec& s : kOptions)
+      if (a == s.name || (s.alias != nullptr && a == s.alias)) spec = &s;
+    if (spec != nullptr) {
+      if (std::find(given.begin(), given.end(), spec->key) != given.end())
+        usageError(a == spec->key ? "option " + a + " given twice"
+                                  : "option " + a + " conflicts with an earlier " + spec->key);
+      given.push_back(spec->key);
+      if (spec->takesValue && i + 1 >= argc) usageError(a + " needs a value");
+      spec->set(o, spec->takesValue ? std::string(argv[++i]) : std::string());
     } else if (!a.empty() && a[0] == '-' && a != "-") {
       usageError("unknown option '" + a + "'");
     } else if (o.input.empty()) {
@@ -197,157 +271,274 @@ Options parse(int argc, char** argv) {
   return o;
 }
 
+// The outputs as (option, path). Refuses (exit 2) one that is the input file or two that are
+// the same file, by device and inode (dt::sameFile), before anything is read.
+std::vector<std::pair<std::string, std::string>> outputsOf(const Options& opt) {
+  std::vector<std::pair<std::string, std::string>> out = {{"-o " + opt.out, opt.out + ".ele"}};
+  if (!opt.svg.empty()) out.emplace_back("--svg", opt.svg);
+  if (!opt.msh.empty()) out.emplace_back("--msh", opt.msh);
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    if (dt::sameFile(out[i].second, opt.input)) {
+      std::cerr << "delaunay2d: " << out[i].first << ": " << out[i].second
+                << " is the input file; refusing to overwrite it\n";
+      std::exit(2);
+    }
+    for (std::size_t j = 0; j < i; ++j)
+      if (dt::sameFile(out[i].second, out[j].second)) {
+        std::cerr << "delaunay2d: " << out[j].first << " and " << out[i].first
+                  << " name the same file " << out[i].second << "\n";
+        std::exit(2);
+      }
+  }
+  return out;
+}
+
+// The line of the point farthest from the origin (the one --method super cannot enclose).
+long extremeLine(const dt::PointSet& ps) {
+  std::size_t best = 0;
+  double m = -1;
+  for (std::size_t i = 0; i < ps.size(); ++i) {
+    const double a = std::max(std::fabs(ps.xy[2 * i]), std::fabs(ps.xy[2 * i + 1]));
+    if (a > m) m = a, best = i;
+  }
+  return ps.line(best);
+}
+
+// The fast kernel's mesh with its vertices in input order and without the merged duplicates
+// (the .msh numbers its nodes as the input, as the listings' mesh does).
+dt::PlainMesh inputOrder(const std::vector<double>& xy, const std::vector<std::array<int, 3>>& tri,
+                         const std::vector<int>& inserted, const std::vector<char>& used) {
+  const std::size_t n = inserted.size();
+  std::vector<int> node(n, -1);  // by input index: its node number, or -1 if merged
+  for (std::size_t i = 0; i < n; ++i)
+    if (used[i]) node[std::size_t(inserted[i])] = 0;
+  int k = 0;
+  for (int& v : node)
+    if (v == 0) v = k++;
+  dt::PlainMesh m;
+  m.xy.resize(2 * std::size_t(k));
+  for (std::size_t i = 0; i < n; ++i)
+    if (used[i]) {
+      const std::size_t j = std::size_t(node[std::size_t(inserted[i])]);
+      m.xy[2 * j] = xy[2 * i];
+      m.xy[2 * j + 1] = xy[2 * i + 1];
+    }
+  m.tri = tri;
+  for (auto& t : m.tri)
+    for (int& v : t) v = node[std::size_t(inserted[std::size_t(v)])];
+  return m;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   const Options opt = parse(argc, argv);
+  const std::vector<std::pair<std::string, std::string>> outputs = outputsOf(opt);
   Progress progress(opt.progress);
+  // Notes on merged duplicates: printed after the run, or after the error line if it fails.
+  std::string notes;
+  int status = 0;
   try {
-    const dt::PointSet ps = dt::readPoints(opt.input);
+    dt::PointSet ps = dt::readPoints(opt.input);
     const std::size_t n = ps.size();
-    // Duplicates: sort by (x, y); keep the first occurrence (smallest number).
-    std::vector<std::size_t> order(n);
-    std::iota(order.begin(), order.end(), 0);
-    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-      return ps.xy[2 * a] < ps.xy[2 * b] ||
-             (ps.xy[2 * a] == ps.xy[2 * b] && ps.xy[2 * a + 1] < ps.xy[2 * b + 1]);
-    });
-    std::vector<char> keep(n, 1);
-    std::size_t nDup = 0;
-    std::size_t runStart = n ? order[0] : 0;  // first occurrence of the current run of equals
-    for (std::size_t k = 1; k < n; ++k) {
-      const std::size_t a = order[k - 1], b = order[k];
-      if (ps.xy[2 * a] == ps.xy[2 * b] && ps.xy[2 * a + 1] == ps.xy[2 * b + 1]) {
-        keep[b] = 0;
-        // The first few are named; a file of 10^6 copies must not print 10^6 lines.
-        if (++nDup <= kNamedDuplicates)
-          std::cerr << "delaunay2d: " << ps.path << ":" << ps.line[b] << ": point "
-                    << ps.number[b] << " duplicates point " << ps.number[runStart] << " (line "
-                    << ps.line[runStart] << "); merged\n";
-      } else {
-        runStart = b;
-      }
-    }
-    if (nDup > kNamedDuplicates)
-      std::cerr << "delaunay2d: " << ps.path << ": " << nDup - kNamedDuplicates
-                << " more duplicate points merged (" << nDup << " in all)\n";
-    dt::Triangulation T;
-    std::vector<dt::Vertex*> S;
-    S.reserve(n - nDup);
-    for (std::size_t i = 0; i < n; ++i)
-      if (keep[i]) S.push_back(T.addVertex(ps.xy[2 * i], ps.xy[2 * i + 1], long(i)));
-
-    dt::InsertionStats st;
-    progress.setTotal(S.size());
-    const auto t0 = std::chrono::steady_clock::now();
-    // --kernel fast: the distinct points go to fastDelaunay, which orders them itself.
+    auto note = [&](std::size_t dup, std::size_t kept) {
+      notes += "delaunay2d: " + ps.path + ":" + std::to_string(ps.line(dup)) + ": point " +
+               std::to_string(ps.number(dup)) + " duplicates point " +
+               std::to_string(ps.number(kept)) + " (line " + std::to_string(ps.line(kept)) +
+               "); merged\n";
+    };
+    // --kernel fast: the points as read go to fastDelaunay, which orders them, finds the
+    // duplicates as it meets them (no sort beforehand), and returns the triangles numbered in
+    // its insertion order with the map back to the input numbers.
     const bool useFast = opt.fastKernel && !opt.superMethod;
-    dt::PlainMesh fastMesh;
+    const bool watchWalks = opt.order != "brio";
+    WalkWatch watch(watchWalks, opt.order, progress);
+    dt::InsertionStats st;
+    dt::FlipStats fs;
+    std::size_t nDup = 0, nDistinct = 0;
+    std::vector<std::array<int, 3>> tri;
+    std::vector<double> fastPoints;    // fast kernel: the points in insertion order
+    std::vector<int> inserted;         // fast kernel: the input index of each of them
+    std::vector<char> used;            // fast kernel: the points that are vertices
+    std::vector<long> numbers;         // listings: the input number of each mesh vertex
+    dt::PlainMesh listingsMesh;
+    double seconds = 0;
     if (useFast) {
       dt::FastOptions fo;
       if (opt.order == "hilbert") fo.order = dt::FastOrder::Hilbert;
       if (opt.order == "input") fo.order = dt::FastOrder::Input;
-      for (std::size_t i = 0; i < n; ++i)
-        if (keep[i]) {
-          fastMesh.xy.insert(fastMesh.xy.end(), {ps.xy[2 * i], ps.xy[2 * i + 1]});
-          fastMesh.ids.push_back(long(i));
-        }
-      progress.phase("triangulating " + std::to_string(S.size()) + " points (fast kernel)");
-      dt::FastResult fr = dt::fastDelaunay(fastMesh.xy, fo);
-      fastMesh.tri = std::move(fr.tri);
+      fo.progress = [&](std::size_t done, std::size_t total, const dt::FastStats& s) {
+        progress.update(done);
+        watch.update(done, total, s.walkSteps, s.cavityFaces, progress.insertionSeconds());
+      };
+      // The triangles come numbered in insertion order, with the points in that order: the
+      // check and the SVG then read memory in the kernel's spatially coherent order.
+      fo.insertionNumbering = true;
+      fo.progressEvery = 1024;
+      progress.setTotal(n);
+      progress.phase("triangulating " + std::to_string(n) + " points (fast kernel)");
+      progress.startInsertion();
+      const auto t0 = std::chrono::steady_clock::now();
+      dt::FastResult fr = dt::fastDelaunay(ps.xy, fo);
+      seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      std::vector<double>().swap(ps.xy);  // fr.points holds them, in insertion order
+      tri = std::move(fr.tri);
+      fastPoints = std::move(fr.points);
+      inserted = std::move(fr.inserted);
       st.insertions = fr.stats.insertions;
       st.searchSteps = fr.stats.walkSteps;
       st.cavityFaces = fr.stats.cavityFaces;
-    }
-    if (!useFast && opt.order != "input" && S.size() > 1) {
-      // 2.3.5: with the walk started in the previous cavity, a Hilbert (or BRIO) order keeps
-      // the walks short; in file order they can grow like sqrt(n). Timed with the insertions.
-      std::vector<double> xy;
-      xy.reserve(2 * S.size());
-      for (const dt::Vertex* v : S) xy.insert(xy.end(), {v->x, v->y});
-      const std::vector<std::size_t> idx =
-          opt.order == "brio" ? dt::brioOrder(xy, 1) : dt::hilbertOrder(xy);
-      std::vector<dt::Vertex*> sorted(S.size());
-      for (std::size_t k = 0; k < idx.size(); ++k) sorted[k] = S[idx[k]];
-      S.swap(sorted);
-    }
-    dt::FlipStats fs;
-    if (opt.superMethod) {
-      // 2.2.1: super-triangles around the box, DT(S0 u S), then the flips of 2.3.6. A flat or
-      // collinear input is rejected as by the hull method (it has no DT(S)).
-      if (S.size() < 3) throw dt::DegenerateInput("fewer than 3 distinct points");
-      bool flat = true;
-      for (std::size_t i = 2; i < S.size() && flat; ++i)
-        flat = dt::orientationTest(S[0], S[1], S[i]) == 0;
-      if (flat) throw dt::DegenerateInput("all points are collinear");
-      double x0 = S[0]->x, x1 = x0, y0 = S[0]->y, y1 = y0;
-      for (const dt::Vertex* v : S) {
-        x0 = std::min(x0, v->x), x1 = std::max(x1, v->x);
-        y0 = std::min(y0, v->y), y1 = std::max(y1, v->y);
+      nDup = fr.duplicates.size();
+      nDistinct = n - nDup;
+      std::vector<char> isDup(n, 0);
+      for (std::size_t j = 0; j < fr.duplicates.size(); ++j) {
+        const auto [d, k] = fr.duplicates[j];
+        isDup[std::size_t(d)] = 1;
+        // The first few are named; a file of 10^6 copies must not print 10^6 lines.
+        if (j < kNamedDuplicates) note(std::size_t(d), std::size_t(k));
       }
-      // Any enclosing size gives the exact DT(S) (2.3.6); near the overflow threshold the
-      // default factor 10 may not fit in doubles, so smaller ones are tried.
-      for (double factor : {10.0, 2.0, 1.01}) {
-        try {
-          dt::initSuperTriangles(T, x0, y0, x1, y1, factor);
-          break;
-        } catch (const dt::DegenerateInput&) {
-          // The input is valid, the method cannot hold it: a usage error (exit 2), not a bug.
-          if (factor == 1.01) throw UnsupportedInput(
-              "--method super cannot enclose points this close to the overflow threshold "
-              "(|x| or |y| near 1.8e308) in double super-triangles; use --method hull");
+      used.resize(n);
+      for (std::size_t i = 0; i < n; ++i) used[i] = !isDup[std::size_t(inserted[i])];
+    } else {
+      // Duplicates: sort by (x, y); keep the first occurrence (smallest number).
+      std::vector<std::size_t> order(n);
+      std::iota(order.begin(), order.end(), 0);
+      std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+        return ps.xy[2 * a] < ps.xy[2 * b] ||
+               (ps.xy[2 * a] == ps.xy[2 * b] && ps.xy[2 * a + 1] < ps.xy[2 * b + 1]);
+      });
+      std::vector<char> keep(n, 1);
+      std::size_t runStart = n ? order[0] : 0;  // first occurrence of the current run of equals
+      for (std::size_t k = 1; k < n; ++k) {
+        const std::size_t a = order[k - 1], b = order[k];
+        if (ps.xy[2 * a] == ps.xy[2 * b] && ps.xy[2 * a + 1] == ps.xy[2 * b + 1]) {
+          keep[b] = 0;
+          // The first few are named; a file of 10^6 copies must not print 10^6 lines.
+          if (++nDup <= kNamedDuplicates) note(b, runStart);
+        } else {
+          runStart = b;
         }
       }
-      progress.phase("inserting " + std::to_string(S.size()) + " points (listings)");
-      progress.startInsertion();
-      insertInChunks(T, S, 0, st, progress);
-      progress.phase("recovering DT(S) by flips");
-      fs = dt::recoverDelaunay(T);
-    } else if (!useFast) {
-      // delaunayTrglHull on the shortest prefix of S that spans a triangle (on a collinear S
-      // it throws DegenerateInput), then the other points in chunks.
-      std::size_t k = 2;
-      while (k < S.size() && dt::orientationTest(S[0], S[1], S[k]) == 0) ++k;
-      k = std::min(k + 1, S.size());
-      dt::delaunayTrglHull(T, std::vector<dt::Vertex*>(S.begin(), S.begin() + long(k)),
-                           dt::StartRule::LastCavity, &st);
-      progress.phase("inserting " + std::to_string(S.size()) + " points (listings)");
-      progress.startInsertion();
-      insertInChunks(T, S, k, st, progress);
+      dt::Triangulation T;
+      std::vector<dt::Vertex*> S;
+      S.reserve(n - nDup);
+      for (std::size_t i = 0; i < n; ++i)
+        if (keep[i]) S.push_back(T.addVertex(ps.xy[2 * i], ps.xy[2 * i + 1], long(i)));
+      nDistinct = S.size();
+      progress.setTotal(S.size());
+      const auto t0 = std::chrono::steady_clock::now();
+      if (opt.order != "input" && S.size() > 1) {
+        // 2.3.5: with the walk started in the previous cavity, a Hilbert (or BRIO) order keeps
+        // the walks short; in file order they can grow like sqrt(n). Timed with the insertions.
+        std::vector<double> xy;
+        xy.reserve(2 * S.size());
+        for (const dt::Vertex* v : S) xy.insert(xy.end(), {v->x, v->y});
+        const std::vector<std::size_t> idx =
+            opt.order == "brio" ? dt::brioOrder(xy, 1) : dt::hilbertOrder(xy);
+        std::vector<dt::Vertex*> sorted(S.size());
+        for (std::size_t k = 0; k < idx.size(); ++k) sorted[k] = S[idx[k]];
+        S.swap(sorted);
+      }
+      if (opt.superMethod) {
+        // 2.2.1: super-triangles around the box, DT(S0 u S), then the flips of 2.3.6. A flat or
+        // collinear input is rejected as by the hull method (it has no DT(S)).
+        if (S.size() < 3) throw dt::DegenerateInput("fewer than 3 distinct points");
+        bool flat = true;
+        for (std::size_t i = 2; i < S.size() && flat; ++i)
+          flat = dt::orientationTest(S[0], S[1], S[i]) == 0;
+        if (flat) throw dt::DegenerateInput("all points are collinear");
+        double x0 = S[0]->x, x1 = x0, y0 = S[0]->y, y1 = y0;
+        for (const dt::Vertex* v : S) {
+          x0 = std::min(x0, v->x), x1 = std::max(x1, v->x);
+          y0 = std::min(y0, v->y), y1 = std::max(y1, v->y);
+        }
+        // Any enclosing size gives the exact DT(S) (2.3.6); near the overflow threshold the
+        // default factor 10 may not fit in doubles, so smaller ones are tried.
+        for (double factor : {10.0, 2.0, 1.01}) {
+          try {
+            dt::initSuperTriangles(T, x0, y0, x1, y1, factor);
+            break;
+          } catch (const dt::DegenerateInput&) {
+            // The input is valid, the method cannot hold it: a usage error (exit 2), not a bug.
+            if (factor == 1.01)
+              throw UnsupportedInput(
+                  std::to_string(extremeLine(ps)) +
+                  ": --method super cannot enclose points this close to the overflow threshold "
+                  "(|x| or |y| near 1.8e308) in double super-triangles; use --method hull");
+          }
+        }
+        progress.phase("inserting " + std::to_string(S.size()) + " points (listings)");
+        progress.startInsertion();
+        insertInChunks(T, S, 0, st, progress, watch);
+        progress.phase("recovering DT(S) by flips");
+        fs = dt::recoverDelaunay(T);
+      } else {
+        // delaunayTrglHull on the shortest prefix of S that spans a triangle (on a collinear S
+        // it throws DegenerateInput), then the other points in chunks.
+        std::size_t k = 2;
+        while (k < S.size() && dt::orientationTest(S[0], S[1], S[k]) == 0) ++k;
+        k = std::min(k + 1, S.size());
+        dt::delaunayTrglHull(T, std::vector<dt::Vertex*>(S.begin(), S.begin() + long(k)),
+                             dt::StartRule::LastCavity, &st);
+        progress.phase("inserting " + std::to_string(S.size()) + " points (listings)");
+        progress.startInsertion();
+        insertInChunks(T, S, k, st, progress, watch);
+      }
+      seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      listingsMesh = dt::extractMesh(T, true);
+      tri = std::move(listingsMesh.tri);
+      numbers.resize(listingsMesh.ids.size());
+      for (std::size_t i = 0; i < numbers.size(); ++i)
+        numbers[i] = ps.number(std::size_t(listingsMesh.ids[i]));
     }
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-
-    dt::PlainMesh m = useFast ? std::move(fastMesh) : dt::extractMesh(T, true);
+    if (nDup > kNamedDuplicates)
+      notes += "delaunay2d: " + ps.path + ": " + std::to_string(nDup - kNamedDuplicates) +
+               " more duplicate points merged (" + std::to_string(nDup) + " in all)\n";
+    // The mesh's points: the fast kernel's (in insertion order), or the listings' vertices.
+    const std::vector<double>& xy = useFast ? fastPoints : listingsMesh.xy;
     if (opt.check) {
       progress.phase("checking the result with exact predicates");
-      std::vector<char> must(m.ids.size(), 1);
-      const dt::CheckReport r = dt::checkDelaunay(m.xy, m.tri, &must);
-      if (!r.ok || m.ids.size() != S.size()) {
+      const std::vector<char> all(useFast ? 0 : xy.size() / 2, 1);
+      const dt::CheckReport r = dt::checkDelaunay(xy, tri, useFast ? &used : &all);
+      if (!r.ok || (!useFast && listingsMesh.ids.size() != nDistinct)) {
         std::cerr << "delaunay2d: internal error: the result fails the exact check: "
                   << (r.ok ? "a point is missing" : r.error) << "\n";
         return 1;
       }
     }
-    std::vector<long> numbers(m.ids.size());
-    for (std::size_t i = 0; i < m.ids.size(); ++i) numbers[i] = ps.number[std::size_t(m.ids[i])];
     progress.phase("writing " + opt.out + ".ele");
-    // All or nothing: if one output cannot be written, the ones already written are removed.
-    std::vector<std::pair<std::string, std::string>> outputs = {
-        {opt.out + ".ele", dt::eleText(m.tri, numbers, ps.firstIndex)}};
-    if (!opt.svg.empty()) outputs.emplace_back(opt.svg, dt::svgText(m.xy, m.tri));
-    if (!opt.msh.empty()) outputs.emplace_back(opt.msh, dt::mshText(m.xy, m.tri));
-    for (std::size_t i = 0; i < outputs.size(); ++i) {
-      try {
-        dt::writeFileAtomic(outputs[i].first, outputs[i].second);
-      } catch (const std::exception&) {
-        for (std::size_t j = 0; j < i; ++j) std::remove(outputs[j].first.c_str());
-        throw;
+    // All or nothing (dt::OutputFiles): every file is written beside its target, then all are
+    // renamed into place; on any failure the old files stay as they were.
+    dt::OutputFiles files;
+    std::vector<dt::Writer*> w;
+    for (const auto& o : outputs) w.push_back(&files.open(o.second));
+    if (useFast)
+      dt::writeEle(*w[0], tri, inserted, ps.firstIndex);
+    else
+      dt::writeEle(*w[0], tri, &numbers, ps.firstIndex);
+    std::size_t next = 1;
+    if (!opt.svg.empty()) dt::writeSvg(*w[next++], xy, tri);
+    if (!opt.msh.empty()) {
+      if (useFast) {
+        const dt::PlainMesh m = inputOrder(xy, tri, inserted, used);
+        dt::writeMsh(*w[next++], m.xy, m.tri);
+      } else {
+        dt::writeMsh(*w[next++], xy, tri);
       }
     }
-    progress.finish(S.size());
+    if (const char* hold = std::getenv("DELAUNAY2D_TEST_HOLD_OUTPUTS")) {
+      // Tests only: the outputs are written but not in place; a signal now must remove them.
+      for (dt::Writer* x : w) x->flush();
+      std::fprintf(stderr, "delaunay2d: holding\n");
+      std::fflush(stderr);
+      ::sleep(unsigned(std::atoi(hold)));
+    }
+    files.commit();
+    progress.finish(nDistinct);
+    std::cerr << notes;
+    notes.clear();
     if (opt.stats) {
-      std::printf("points: %zu\ntriangles: %zu\ntriangulation_seconds: %.6f\n", n, m.tri.size(),
+      std::printf("points: %zu\ntriangles: %zu\ntriangulation_seconds: %.6f\n", n, tri.size(),
                   seconds);
       std::printf("duplicates: %zu\nmean_walk_steps: %.4f\nmean_cavity_size: %.4f\n", nDup,
                   st.meanSearch(), st.meanCavity());
@@ -357,16 +548,19 @@ int main(int argc, char** argv) {
     return 0;
   } catch (const dt::InputError& e) {
     std::cerr << "delaunay2d: " << e.what() << "\n";
-    return 2;
+    status = 2;
   } catch (const dt::DegenerateInput& e) {
     std::cerr << "delaunay2d: " << opt.input << ": " << e.what()
               << ": no triangulation exists\n";
-    return 2;
+    notes.clear();  // the duplicates do not matter: nothing is triangulated
+    status = 2;
   } catch (const UnsupportedInput& e) {
-    std::cerr << "delaunay2d: " << opt.input << ": " << e.what() << "\n";
-    return 2;
+    std::cerr << "delaunay2d: " << opt.input << ":" << e.what() << "\n";
+    status = 2;
   } catch (const std::exception& e) {
     std::cerr << "delaunay2d: error: " << e.what() << "\n";
-    return 1;
+    status = 1;
   }
+  std::cerr << notes;
+  return status;
 }

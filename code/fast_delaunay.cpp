@@ -344,7 +344,8 @@ class Kernel {
 };
 
 template <class Pred, bool kMap, bool kCentroid>
-void run(std::vector<double>& P, std::vector<int>& orig, FastResult& res, Pred pred) {
+void run(std::vector<double>& P, std::vector<int>& orig, FastResult& res, Pred pred,
+         const FastOptions& opt) {
   const int n = int(orig.size());
   auto same = [&](int i, int j) { return P[2 * i] == P[2 * j] && P[2 * i + 1] == P[2 * j + 1]; };
   // The first triangle: point 0, the first point distinct from it, the first one off their
@@ -366,7 +367,13 @@ void run(std::vector<double>& P, std::vector<int>& orig, FastResult& res, Pred p
     K.init(0, i2, i1);
   res.stats.insertions = 3;
   std::vector<std::pair<int, int>> dups;  // (input number, vertex kept)
+  const std::size_t every = std::max<std::size_t>(1, opt.progressEvery);
+  std::size_t nextReport = opt.progress ? every : std::size_t(-1);
   for (int i = 1; i < n; ++i) {
+    if (__builtin_expect(std::size_t(i) == nextReport, 0)) {
+      opt.progress(std::size_t(i), std::size_t(n), res.stats);
+      nextReport += every;
+    }
     if (i == i1 || i == i2) continue;
     const int d = K.insert(i);
     if (d < 0) continue;
@@ -377,16 +384,25 @@ void run(std::vector<double>& P, std::vector<int>& orig, FastResult& res, Pred p
   // The output is the array of vertices itself: the adjacencies, the marks and the sorted
   // points are freed, the finite triangles renumbered as the input and packed at the front.
   K.releaseAllButVertices();
-  std::vector<double>().swap(P);
   std::vector<std::array<int, 3>>& V = K.vertices();
   std::size_t w = 0;
-  for (const auto& t : V)
-    if (t[2] != K.infinite()) V[w++] = {orig[t[0]], orig[t[1]], orig[t[2]]};
+  if (opt.insertionNumbering) {
+    for (const auto& t : V)
+      if (t[2] != K.infinite()) V[w++] = t;
+  } else {
+    std::vector<double>().swap(P);
+    for (const auto& t : V)
+      if (t[2] != K.infinite()) V[w++] = {orig[t[0]], orig[t[1]], orig[t[2]]};
+  }
   V.resize(w);
   res.tri = std::move(V);
   res.duplicates.reserve(dups.size());
   for (const auto& [d, v] : dups) res.duplicates.emplace_back(d, orig[v]);
   std::sort(res.duplicates.begin(), res.duplicates.end());
+  if (opt.insertionNumbering) {
+    res.points = std::move(P);
+    res.inserted = std::move(orig);
+  }
 }
 
 }  // namespace
@@ -437,18 +453,18 @@ FastResult fastDelaunay(const std::vector<double>& xy, const FastOptions& opt) {
     const PredicateCounters before = predicateCounters();
     CalledPredicates pred{&res.stats};
     if (opt.ladderMapAdjacency)
-      run<CalledPredicates, true, true>(P, orig, res, pred);
+      run<CalledPredicates, true, true>(P, orig, res, pred, opt);
     else if (opt.ladderCentroidWalk)
-      run<CalledPredicates, false, true>(P, orig, res, pred);
+      run<CalledPredicates, false, true>(P, orig, res, pred, opt);
     else
-      run<CalledPredicates, false, false>(P, orig, res, pred);
+      run<CalledPredicates, false, false>(P, orig, res, pred, opt);
     const PredicateCounters after = predicateCounters();  // GMP calls: exact - small-multiple
     res.stats.exactOrient = (after.orientExact - after.orientSmallInt) -
                             (before.orientExact - before.orientSmallInt);
     res.stats.exactIncircle = (after.incircleExact - after.incircleSmallInt) -
                               (before.incircleExact - before.incircleSmallInt);
   } else {
-    run<InlinePredicates, false, false>(P, orig, res, InlinePredicates{&res.stats});
+    run<InlinePredicates, false, false>(P, orig, res, InlinePredicates{&res.stats}, opt);
   }
   res.stats.insertSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
   return res;

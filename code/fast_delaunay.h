@@ -6,11 +6,15 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <utility>
 #include <vector>
 
 namespace dt {
+
+struct FastStats;
 
 /// Insertion order of fastDelaunay.
 enum class FastOrder {
@@ -31,6 +35,15 @@ struct FastOptions {
   bool ladderCallPredicates = false; ///< out-of-line, counted dt::orient2d / dt::incircle
   bool ladderCentroidWalk = false; ///< walk of Listing 2.6: incircle at every step, centroid ray
   bool ladderMapAdjacency = false; ///< link new triangles through a std::map (Listing 2.4)
+  /// Called after every `progressEvery` insertions with the points handled so far, their number
+  /// and the counters so far (the command line's progress report and its warning about long
+  /// walks); not called if empty.
+  std::function<void(std::size_t done, std::size_t total, const FastStats& st)> progress;
+  std::size_t progressEvery = 4096;
+  /// Number the output triangles' vertices in insertion order instead of as the input, and
+  /// return the points in that order (FastResult::points, inserted): a check or a writer then
+  /// reads memory in the kernel's spatially coherent order (the command line does).
+  bool insertionNumbering = false;
 };
 
 /// Counters and timings of one run.
@@ -50,6 +63,10 @@ struct FastResult {
   /// (duplicate, kept): every input point that was merged into an earlier-numbered equal point.
   std::vector<std::pair<int, int>> duplicates;
   FastStats stats;
+  /// With FastOptions::insertionNumbering: the points in insertion order (x0 y0 x1 y1 ...) and
+  /// the input number of each; the triangles index them. Otherwise empty.
+  std::vector<double> points;
+  std::vector<int> inserted;
 };
 
 /// DT(S) of the points xy = x0 y0 x1 y1 ..., exact for every input of finite doubles (the same

@@ -1,6 +1,10 @@
 /// \file test_bad_input.cpp Every way a .node or xy file can be wrong, through the delaunay2d binary: one clear message naming file, line and value, exit status 2, and no output file.
 #include <doctest/doctest.h>
 
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <algorithm>
 
 #include "support.h"
@@ -184,4 +188,59 @@ TEST_CASE("bad input usage errors and unwritable output give an exit status and 
   CHECK(r.status == 1);
   CHECK(r.err.find("no/such/dir.svg: cannot open for writing") != std::string::npos);
   CHECK_FALSE(dttest::fileExists(out + ".ele"));
+}
+
+TEST_CASE("bad input: devices are refused, named pipes are read") {
+  dttest::CliResult r = dttest::runCli("/dev/zero -o '" + dttest::tmpPath("zero_out") + "'");
+  CHECK(r.status == 2);
+  CHECK(r.err == "delaunay2d: /dev/zero: is a character device, not a point file (a regular file "
+                 "or a pipe)\n");
+  CHECK_FALSE(dttest::fileExists(dttest::tmpPath("zero_out.ele")));
+  // A named pipe is what a user means by "the output of another program": it is read.
+  const std::string fifo = dttest::tmpPath("points_fifo.xy"), out = dttest::tmpPath("fifo_out");
+  std::remove(fifo.c_str());
+  REQUIRE(std::system(("mkfifo '" + fifo + "'").c_str()) == 0);
+  const std::string cmd = "sh -c \"printf '0 0\\n1 0\\n0 1\\n1 1\\n' > '" + fifo + "' & " +
+                          std::string(DT_CLI) + " '" + fifo + "' -o '" + out + "'\"";
+  CHECK(std::system(cmd.c_str()) == 0);
+  CHECK(dttest::readEle(out + ".ele", 1).size() == 2);
+  std::remove(fifo.c_str());
+}
+
+TEST_CASE("bad input: binary data in the first block is named before any field is parsed") {
+  // Line 2 is not a number, but line 3 shows the file is not text: the binary data is reported.
+  std::string text = "0 0\nPNG IHDR\n";
+  text += '\0';
+  text += "\x01\x02\n0 1\n";
+  const Bad b{"image.xy", text, ":3: binary or control character (code 0) at column 1"};
+  expectRefused(b);
+}
+
+TEST_CASE("bad input: peak memory does not grow with the attributes of a line") {
+  // 4000 points with 1000 attributes each (8 MB of text): held one line at a time.
+  std::string text = "4000 2 1000 0\n";
+  std::string attrs;
+  for (int k = 0; k < 1000; ++k) attrs += " 1";
+  for (int i = 0; i < 4000; ++i)
+    text += std::to_string(i + 1) + " " + std::to_string(i % 97) + " " + std::to_string(i / 97) +
+            attrs + "\n";
+  const std::string in = dttest::tmpPath("attrs1000.node"), out = dttest::tmpPath("attrs1000_out");
+  dttest::writeText(in, text);
+  // The child's peak resident memory, from a process of its own (RUSAGE_CHILDREN is a maximum
+  // over every child waited for).
+  const pid_t pid = fork();
+  REQUIRE(pid >= 0);
+  if (pid == 0) {
+    const int rc = std::system((std::string(DT_CLI) + " '" + in + "' -o '" + out + "'").c_str());
+    struct rusage ru;
+    getrusage(RUSAGE_CHILDREN, &ru);
+    _exit(rc != 0 ? 255 : int(std::min(254L, ru.ru_maxrss / 1024)));
+  }
+  int status = 0;
+  waitpid(pid, &status, 0);
+  REQUIRE(WIFEXITED(status));
+  const int peakMB = WEXITSTATUS(status);
+  CHECK(peakMB != 255);  // the run succeeded
+  CHECK_MESSAGE(peakMB < 24, "peak " << peakMB << " MB for an 8 MB file");
+  CHECK(dttest::readEle(out + ".ele", 1).size() > 7000);
 }

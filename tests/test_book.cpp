@@ -1,4 +1,4 @@
-/// \file test_book.cpp Static checks of the book's pages (book/*.md): every image, table, snippet and reference resolves, and no formula is left unrendered.
+/// \file test_book.cpp Checks of the book: its pages (book/*.md) resolve every image, table, snippet, reference and cited test, and the book build's own tools (book/book_tool.h) catch raw markup, too-wide tables, broken links and unknown values on deliberately broken pages.
 //
 // The checks read the sources only, so the suite does not need the book (or the chapter
 // programs' outputs) to be built. An embedded figure or table must be either in the
@@ -14,6 +14,8 @@
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include "../book/book_tool.h"
 
 namespace fs = std::filesystem;
 
@@ -107,9 +109,24 @@ bool producedByAProgram(const std::string& name) {
   return false;
 }
 
-// Page ids and anchors defined by the pages: \page, \section, \subsection, \anchor, {#id}.
+// Every TEST_CASE of tests/*.cpp, as the book build reads them.
+std::vector<booktool::TestCase> allTests() {
+  std::vector<booktool::TestCase> out;
+  for (const fs::path& p : filesIn(kRoot / "tests", ".cpp"))
+    for (const auto& t : booktool::testCases(readAll(p), "tests/" + p.filename().string()))
+      out.push_back(t);
+  return out;
+}
+
+// Page ids and anchors defined by the pages: \page, \section, \subsection, \anchor, {#id};
+// also those of the claims index that the book build generates from the tests.
 std::set<std::string> bookLabels() {
-  std::set<std::string> ids;
+  std::set<std::string> ids = {"claims"};
+  const std::string claims = booktool::claimsPage(allTests(), "claims", "Claims");
+  const std::regex section(R"(\{#([A-Za-z0-9_]+)\})");
+  for (auto it = std::sregex_iterator(claims.begin(), claims.end(), section);
+       it != std::sregex_iterator(); ++it)
+    ids.insert((*it)[1]);
   const std::regex def(R"(\\(?:page|section|subsection|subsubsection|anchor)\s+([A-Za-z0-9_]+))");
   const std::regex brace(R"(\{#([A-Za-z0-9_]+)\})");
   for (const fs::path& p : pages()) {
@@ -316,4 +333,171 @@ TEST_CASE("book every test file documents itself with \\file so that \\ref test_
                              << " names another file; write \"/// \\file " << p.filename().string()
                              << " <sentence>\" or \"/// \\file\" alone");
   }
+}
+
+// ---- the book build's own tools (book/book_tool.h), on deliberately broken input -----------
+
+namespace {
+
+// A page as Doxygen 1.9 writes it: header, contents, footer; `body` goes into the contents.
+std::string doxygenPage(const std::string& body) {
+  return "<html><head><script>var x = a*b;</script></head><body><div id=\"top\">menu * here</div>"
+         "<div class=\"header\"><div class=\"headertitle\"><div class=\"title\">A page</div></div></div>"
+         "<div class=\"contents\"><div class=\"textblock\"><div class=\"booknav\">Next</div>" + body +
+         "</div></div><!-- start footer part --><div class=\"footer\">* footer</div></body></html>";
+}
+
+std::vector<std::string> defectsOf(const std::string& body) {
+  std::vector<std::string> out;
+  for (const auto& d : booktool::renderedDefects(doxygenPage(body))) out.push_back(d.what + " | " + d.context);
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("book the rendered check finds every kind of raw markup a reader saw") {
+  // Each body reproduces one defect of issue 14 as Doxygen rendered it (the formula survives
+  // as MathJax source, the markup around it as typed).
+  const std::vector<std::pair<std::string, std::string>> broken = {
+      {"bold around a formula (2.1 corollary)",
+       "<p>**Corollary: \\(|\\partial\\mathscr C| = |\\mathscr C| + 2\\).** \\(U\\) is simple.</p>"},
+      {"emphasis around a quote (2.1 critique)", "<li>*\\(p_3\\), which is the triangle*.</li>"},
+      {"escaped bars in a table (2.3.4)", "<table class=\"markdownTable\"><tr><td>a cavity of size \\|C\\| gives</td></tr></table>"},
+      {"subscript in a caption (Fig. 2.1)", "<div class=\"caption\">the cavity C(DT_n, p_{n+1})</div>"},
+      {"unrendered formula", "<p>the point \\f$p\\f$ here</p>"},
+      {"unprocessed snippet", "<p>\\snippet code/mesh.cpp inCircle</p>"},
+      {"unsubstituted value", "<p>N_search is @{s234.nsearch_ours}.</p>"},
+      {"entity escaped twice (first claims index)", "<td>eq. (2.1): DT&amp;#95;n</td>"}};
+  for (const auto& [what, body] : broken) {
+    INFO(what);
+    CHECK_FALSE(defectsOf(body).empty());
+  }
+  // The same content written correctly is clean: formulas, code and listings may contain any
+  // of these characters, and the page's scripts and footer are not text.
+  const std::string clean =
+      "<p>Corollary: \\(|\\partial\\mathscr C| = |\\mathscr C| + 2\\) and \\[ x_{i+1} = a*b \\]</p>"
+      "<p>Call <code>f(*p, a_{1})</code>.</p><div class=\"fragment\"><div class=\"line\">x = *p; "
+      "// \\f$ a_{2} \\f$</div></div><pre>**bold** in a listing</pre>"
+      "<div class=\"caption\">the cavity C(DT<sub>n</sub>, p<sub>n+1</sub>)</div>"
+      "<table><tr><td>sizeof(Vertex*) = sizeof(Face*)</td></tr></table>";
+  CHECK(defectsOf(clean).empty());
+  const std::vector<std::string> one = defectsOf("<p>**Corollary: \\(k = m + 2\\).**</p>");
+  REQUIRE(one.size() == 2);  // the opening and the closing **
+  CHECK(one[0].find("**") != std::string::npos);
+}
+
+TEST_CASE("book the rendered check finds a table wider than the content column") {
+  std::string wide = "<table class=\"doxtable\"><tr>";
+  for (int c = 0; c < 14; ++c) wide += "<th>column&nbsp;number&nbsp;" + std::to_string(c) + "</th>";
+  wide += "</tr><tr>";
+  for (int c = 0; c < 14; ++c) wide += "<td>0.000123456</td>";
+  wide += "</tr></table>";
+  const auto d = booktool::renderedDefects(doxygenPage(wide));
+  REQUIRE(d.size() == 1);
+  CHECK(d[0].what.find("table") != std::string::npos);
+  // Long prose in few columns wraps: not too wide. Formulas count by their rendered size.
+  std::string words;
+  for (int w = 0; w < 100; ++w) words += "triangle ";
+  const std::string prose = "<table><tr><td>" + words + "</td><td>" + words +
+                            "</td><td>\\(\\lvert\\partial\\mathscr C\\rvert = \\lvert\\mathscr "
+                            "C\\rvert+2\\)</td></tr></table>";
+  CHECK(booktool::renderedDefects(doxygenPage(prose)).empty());
+  CHECK(booktool::tableMinWidth(wide) > booktool::kContentWidth);
+}
+
+TEST_CASE("book an unknown value key or test name stops the page build naming page and line") {
+  const std::map<std::string, std::pair<std::string, std::string>> values = {
+      {"s234.n", {"1000", "values_x.txt"}}};
+  const std::map<std::string, booktool::TestCase> tests = {
+      {"2.1 a claim", {"2.1 a claim", "tests/test_2_1_kernel.cpp", 17}},
+      {"2.1.3 DT_{n+1} is Delaunay", {"2.1.3 DT_{n+1} is Delaunay", "tests/test_2_1_kernel.cpp", 40}}};
+  std::vector<std::string> errors;
+  const std::string ok = booktool::substitute("n = @{s234.n}; see @test{2.1 a claim}.", "book/x.md",
+                                              values, tests, errors);
+  CHECK(errors.empty());
+  CHECK(ok.find("n = 1000;") != std::string::npos);
+  CHECK(ok.find("test__2__1__kernel_8cpp_source.html#l00017") != std::string::npos);
+  CHECK(booktool::substitute("@test{2.1.3 DT_{n+1} is Delaunay}", "book/x.md", values, tests, errors)
+            .find("#l00040") != std::string::npos);
+  booktool::substitute("line one\nn = @{s234.m}\n@test{stale marks}\n@{unclosed\n", "book/x.md",
+                       values, tests, errors);
+  REQUIRE(errors.size() == 3);
+  CHECK(errors[0] == "book/x.md:2: unknown value key 's234.m' (no chapter program wrote it)");
+  CHECK(errors[1].find("book/x.md:3:") == 0);
+  CHECK(errors[1].find("stale marks") != std::string::npos);
+  CHECK(errors[2].find("book/x.md:4:") == 0);
+  // A key written twice (by two programs) is refused too.
+  std::map<std::string, std::pair<std::string, std::string>> v2;
+  booktool::readValues("a 1\nb two words\n", "values_p.txt", v2);
+  CHECK(v2.at("b").first == "two words");
+  CHECK_THROWS(booktool::readValues("a 2\n", "values_q.txt", v2));
+}
+
+TEST_CASE("book the claims index lists every test with its source line and command") {
+  const auto tests = booktool::testCases(
+      "/// \\file t.cpp\nTEST_CASE(\"2.3.4 one claim\") {\n}\n  // TEST_CASE(\"not a test\")\n"
+      "TEST_CASE(\"book \\\\page lines\") {}\n",
+      "tests/test_2_3_4_algorithms.cpp");
+  REQUIRE(tests.size() == 2);
+  CHECK(tests[0].line == 2);
+  CHECK(tests[1].name == "book \\page lines");
+  const std::string page = booktool::claimsPage(tests, "claims", "Claims");
+  CHECK(page.find("test__2__3__4__algorithms_8cpp_source.html#l00002") != std::string::npos);
+  CHECK(page.find("-tc=&quot;2.3.4 one claim&quot;") != std::string::npos);
+  CHECK(page.find("# Section 2.3.4") != std::string::npos);
+}
+
+TEST_CASE("book the link check finds a missing page and a missing anchor") {
+  const std::string html = doxygenPage(
+      "<a href=\"a.html#l00010\">ok</a><a href=\"a.html#l00099\">x</a><a href=\"gone.html\">y</a>"
+      "<a href=\"https://example.org/#z\">z</a>");
+  auto exists = [](const std::string& f) { return f == "a.html"; };
+  auto anchors = [](const std::string&) { return std::set<std::string>{"l00010"}; };
+  const auto d = booktool::brokenLinks(html, exists, anchors);
+  REQUIRE(d.size() == 2);
+  CHECK(d[0].context == "a.html#l00099");
+  CHECK(d[1].context == "gone.html");
+}
+
+TEST_CASE("book every test a page cites by @test{name} exists") {
+  std::set<std::string> names;
+  for (const auto& t : allTests()) names.insert(t.name);
+  std::map<std::string, std::pair<std::string, std::string>> noValues;
+  std::map<std::string, booktool::TestCase> byName;
+  for (const auto& t : allTests()) byName[t.name] = t;
+  int cited = 0;
+  for (const fs::path& p : pages()) {
+    std::vector<std::string> errors;
+    const std::string text = readAll(p);
+    booktool::substitute(text, "book/" + p.filename().string(), noValues, byName, errors);
+    for (const std::string& e : errors)
+      if (e.find("unknown value key") == std::string::npos) CHECK_MESSAGE(false, e);
+    for (std::size_t at = text.find("@test{"); at != std::string::npos; at = text.find("@test{", at + 1))
+      ++cited;
+  }
+  CHECK(cited > 50);  // the claims tables and the errata cite tests
+}
+
+TEST_CASE("book every value a page cites by @{key} is written by a chapter program") {
+  // The book build stops on a key that no values file holds; this catches a misspelt key
+  // without running the programs. A key is found if a chapter program names it, or names the
+  // prefix it is built from (e.g. "s236.sizes_naive_fails_" + family).
+  std::string sources;
+  for (const fs::path& p : filesIn(kRoot / "chapters" / "ch2", ".cpp")) sources += readAll(p);
+  const std::regex key(R"(@\{([A-Za-z0-9_.]+)\})");
+  int keys = 0;
+  for (const fs::path& p : pages()) {
+    const std::string text = readAll(p);
+    for (auto it = std::sregex_iterator(text.begin(), text.end(), key); it != std::sregex_iterator(); ++it) {
+      const std::string k = (*it)[1];
+      ++keys;
+      bool found = sources.find("\"" + k + "\"") != std::string::npos;
+      for (std::size_t cut = k.find_last_of("_."); !found && cut != std::string::npos;
+           cut = cut == 0 ? std::string::npos : k.find_last_of("_.", cut - 1))
+        found = sources.find("\"" + k.substr(0, cut + 1) + "\"") != std::string::npos;
+      CHECK_MESSAGE(found, "book/" << p.filename().string() << ": @{" << k
+                                   << "} is named by no chapter program");
+    }
+  }
+  CHECK(keys > 30);
 }

@@ -3,7 +3,9 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
+#include <sstream>
 
 #include "support.h"
 
@@ -114,4 +116,202 @@ TEST_CASE("cli delaunay2d answers bad input with a message naming the problem an
   const dttest::CliResult r = dttest::runCli("'" + dttest::tmpPath("does_not_exist.node") + "' -o x");
   CHECK(r.status == 2);
   CHECK(r.err.find("cannot open") != std::string::npos);
+}
+
+namespace {
+
+// The files of a directory whose name starts with `prefix` (temporaries left behind).
+std::vector<std::string> filesStartingWith(const std::string& dir, const std::string& prefix) {
+  const std::string list = dttest::tmpPath("listing_" + std::to_string(::getpid()));
+  std::system(("ls -a '" + dir + "' > '" + list + "'").c_str());
+  std::istringstream in(dttest::readText(list));
+  std::vector<std::string> found;
+  for (std::string name; std::getline(in, name);)
+    if (name.compare(0, prefix.size(), prefix) == 0) found.push_back(name);
+  return found;
+}
+
+// A directory of its own for each test of the outputs.
+std::string freshDir(const std::string& name) {
+  const std::string d = dttest::tmpPath("outputs_" + name);
+  std::system(("rm -rf '" + d + "' && mkdir -p '" + d + "'").c_str());
+  return d;
+}
+
+const char* kSquare = "0 0\n1 0\n0 1\n1 1\n";
+
+}  // namespace
+
+TEST_CASE("delaunay2d: a failed run leaves every pre-existing output as it was") {
+  const std::string d = freshDir("keep"), in = d + "/in.xy", out = d + "/out";
+  dttest::writeText(in, kSquare);
+  dttest::writeText(out + ".ele", "OLD ELE\n");
+  dttest::writeText(d + "/old.svg", "OLD SVG\n");
+  // The .msh cannot be created: the .ele and the SVG were written, but are not put in place.
+  dttest::CliResult r = dttest::runCli("'" + in + "' -o '" + out + "' --svg '" + d +
+                                       "/old.svg' --msh '" + d + "/no/such/dir.msh'");
+  CHECK(r.status == 1);
+  CHECK_MESSAGE(r.err.find("no/such/dir.msh: cannot open for writing: No such file or directory") !=
+                    std::string::npos, r.err);
+  CHECK(dttest::readText(out + ".ele") == "OLD ELE\n");
+  CHECK(dttest::readText(d + "/old.svg") == "OLD SVG\n");
+  CHECK(filesStartingWith(d, "out.ele.tmp").empty());
+  CHECK(filesStartingWith(d, "old.svg.tmp").empty());
+  // Bad input: exit 2, the old files untouched.
+  dttest::writeText(d + "/bad.xy", "0 0\n1 x\n");
+  r = dttest::runCli("'" + d + "/bad.xy' -o '" + out + "' --svg '" + d + "/old.svg'");
+  CHECK(r.status == 2);
+  CHECK(dttest::readText(out + ".ele") == "OLD ELE\n");
+  CHECK(dttest::readText(d + "/old.svg") == "OLD SVG\n");
+  // A target that is a directory is refused before anything is renamed.
+  std::system(("mkdir -p '" + d + "/adir'").c_str());
+  r = dttest::runCli("'" + in + "' -o '" + out + "' --svg '" + d + "/adir'");
+  CHECK(r.status == 1);
+  CHECK(dttest::readText(out + ".ele") == "OLD ELE\n");
+  // A successful run replaces them.
+  r = dttest::runCli("'" + in + "' -o '" + out + "' --svg '" + d + "/old.svg'");
+  REQUIRE(r.status == 0);
+  CHECK(dttest::readText(out + ".ele").rfind("2 3 0\n", 0) == 0);
+  CHECK(dttest::readText(d + "/old.svg").rfind("<svg", 0) == 0);
+  CHECK(filesStartingWith(d, "out.ele.").empty());
+}
+
+TEST_CASE("delaunay2d: an output that is the input file or another output is refused") {
+  const std::string d = freshDir("same"), in = d + "/in.xy";
+  dttest::writeText(in, kSquare);
+  struct Case {
+    std::string args, expect;
+  };
+  const std::string q = "'" + in + "'";
+  const Case cases[] = {
+      {q + " -o '" + d + "/o' --svg " + q, "--svg: " + in + " is the input file"},
+      {q + " -o '" + d + "/o' --msh " + q, "--msh: " + in + " is the input file"},
+      {q + " -o '" + d + "/o' --msh '" + d + "/o.ele'", "-o " + d + "/o and --msh name the same file"},
+      {q + " -o '" + d + "/o' --svg '" + d + "/f' --msh '" + d + "/./f'", "--svg and --msh name the same file"},
+      // the same file under another name: a hard link (device and inode, not names)
+      {q + " -o '" + d + "/o' --svg '" + d + "/alias.svg'", "--svg: " + d + "/alias.svg is the input file"},
+  };
+  std::system(("ln '" + in + "' '" + d + "/alias.svg'").c_str());
+  for (const Case& c : cases) {
+    CAPTURE(c.args);
+    const dttest::CliResult r = dttest::runCli(c.args);
+    CHECK(r.status == 2);
+    CHECK_MESSAGE(r.err.find("delaunay2d: " + c.expect) != std::string::npos, r.err);
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    CHECK(dttest::readText(in) == kSquare);
+    CHECK_FALSE(dttest::fileExists(d + "/o.ele"));
+    CHECK_FALSE(dttest::fileExists(d + "/f"));
+  }
+  // An "x y" file named pts.ele with -o pts.
+  dttest::writeText(d + "/pts.ele", kSquare);
+  const dttest::CliResult r = dttest::runCli("'" + d + "/pts.ele' -o '" + d + "/pts'");
+  CHECK(r.status == 2);
+  CHECK(r.err.find("is the input file; refusing to overwrite it") != std::string::npos);
+  CHECK(dttest::readText(d + "/pts.ele") == kSquare);
+}
+
+TEST_CASE("delaunay2d: killed while its outputs are written, it leaves no temporary and the old files") {
+  const std::string d = freshDir("killed"), in = d + "/in.xy", out = d + "/out";
+  dttest::writeText(in, kSquare);
+  dttest::writeText(out + ".ele", "OLD ELE\n");
+  // DELAUNAY2D_TEST_HOLD_OUTPUTS: the CLI stops once the temporaries are written, says
+  // "holding", and waits; the signal comes then.
+  const std::string script =
+      "DELAUNAY2D_TEST_HOLD_OUTPUTS=60 " + std::string(DT_CLI) + " '" + in + "' -o '" + out +
+      "' --svg '" + d + "/s.svg' 2> '" + d + "/err' & pid=$!; "
+      "for i in $(seq 300); do grep -q holding '" + d + "/err' && break; sleep 0.1; done; "
+      "ls '" + d + "' > '" + d + "/during'; kill -TERM $pid; wait $pid; echo $? > '" + d + "/status'";
+  dttest::writeText(d + "/kill.sh", script + "\n");
+  REQUIRE(std::system(("sh '" + d + "/kill.sh' 2> /dev/null").c_str()) == 0);
+  const std::string during = dttest::readText(d + "/during");
+  CHECK(during.find("out.ele.tmp") != std::string::npos);  // the signal came while they existed
+  CHECK(during.find("s.svg.tmp") != std::string::npos);
+  CHECK(dttest::readText(d + "/status") == "143\n");  // 128 + SIGTERM: the signal's own status
+  CHECK(filesStartingWith(d, "out.ele.").empty());
+  CHECK(filesStartingWith(d, "s.svg").empty());
+  CHECK(dttest::readText(out + ".ele") == "OLD ELE\n");
+}
+
+TEST_CASE("delaunay2d: the SVG of subnormal or near-overflow coordinates has finite coordinates") {
+  const double tiny = 4.9406564584124654e-324, huge = 1.7976931348623157e308;
+  const std::vector<std::pair<const char*, XY>> sets = {
+      {"subnormal", {0, 0, 3 * tiny, 0, 0, 2 * tiny, 3 * tiny, 5 * tiny, tiny, tiny}},
+      {"near_max", {-huge, -huge, huge, -huge, -huge, huge, huge, huge, 0, 1e300}},
+      {"tiny_span", {1e-310, 1e-310, 1.5e-310, 1e-310, 1e-310, 1.25e-310, 1.2e-310, 1.2e-310}},
+  };
+  for (const auto& [name, p] : sets) {
+    CAPTURE(name);
+    const std::string in = dttest::tmpPath(std::string("svg_") + name + ".node");
+    const std::string svg = dttest::tmpPath(std::string("svg_") + name + ".svg");
+    dttest::writeText(in, dttest::nodeText(p));
+    const dttest::CliResult r =
+        dttest::runCli("'" + in + "' -o '" + dttest::tmpPath("svg_out") + "' --svg '" + svg + "'");
+    REQUIRE_MESSAGE(r.status == 0, r.err);
+    const std::string s = dttest::readText(svg);
+    CHECK(s.rfind("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"800\" height=\"800\">\n", 0) == 0);
+    CHECK(s.size() > 7);
+    CHECK(s.substr(s.size() - 7) == "</svg>\n");
+    // Every polygon: three "x,y" pairs of finite numbers inside the 800-pixel square.
+    std::istringstream lines(s);
+    int polygons = 0;
+    double lo = 1e9, hi = -1e9;
+    for (std::string l; std::getline(lines, l);) {
+      if (l.rfind("<polygon points=\"", 0) != 0) continue;
+      ++polygons;
+      const std::string pts = l.substr(17, l.find('"', 17) - 17);
+      std::istringstream ps(pts);
+      int pairs = 0;
+      for (std::string xy; ps >> xy; ++pairs) {
+        const std::size_t comma = xy.find(',');
+        REQUIRE(comma != std::string::npos);
+        const double x = std::strtod(xy.c_str(), nullptr), y = std::strtod(xy.c_str() + comma + 1, nullptr);
+        CHECK(std::isfinite(x));
+        CHECK(std::isfinite(y));
+        CHECK((x >= 0 && x <= 800 && y >= 0 && y <= 800));
+        lo = std::min({lo, x, y});
+        hi = std::max({hi, x, y});
+      }
+      CHECK(pairs == 3);
+    }
+    CHECK(polygons > 0);
+    CHECK(hi - lo > 700);  // the drawing fills the picture, not collapsed to a point
+  }
+}
+
+TEST_CASE("delaunay2d: one line per error, the error first") {
+  const std::string d = freshDir("messages"), in = d + "/in.xy", out = d + "/o";
+  dttest::writeText(in, kSquare);
+  // A usage error: one line naming the problem and pointing to --help.
+  dttest::CliResult r = dttest::runCli("'" + in + "' -o a -o b");
+  CHECK(r.status == 2);
+  CHECK(r.err == "delaunay2d: option -o given twice (usage: delaunay2d INPUT -o OUT [options]; "
+                 "delaunay2d --help for more)\n");
+  r = dttest::runCli("'" + in + "' -o '" + out + "' --order input --order brio");
+  CHECK(r.status == 2);
+  CHECK(r.err.find("option --order given twice") != std::string::npos);
+  r = dttest::runCli("'" + in + "' -o '" + out + "' --progress --no-progress");
+  CHECK(r.status == 2);
+  CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+  r = dttest::runCli("");
+  CHECK(r.status == 2);
+  CHECK(r.err.find("no input file") != std::string::npos);
+  CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+  // Duplicates and then a failure: the error line first, the notes after it.
+  dttest::writeText(d + "/dups.xy", "0 0\n1 0\n0 1\n1 0\n1 1\n");
+  r = dttest::runCli("'" + d + "/dups.xy' -o '" + out + "' --svg '" + d + "/no/dir.svg'");
+  CHECK(r.status == 1);
+  CHECK_MESSAGE(r.err.rfind("delaunay2d: error: " + d + "/no/dir.svg: cannot open for writing: ", 0) == 0, r.err);
+  CHECK(r.err.find("point 4 duplicates point 2 (line 2); merged") != std::string::npos);
+  // Without a triangulation, the duplicate notes are not shown: one line.
+  dttest::writeText(d + "/two.xy", "0 0\n1 1\n0 0\n1 1\n1 1\n");
+  for (const char* kernel : {"fast", "listings"}) {
+    r = dttest::runCli("'" + d + "/two.xy' -o '" + out + "' --kernel " + kernel);
+    CHECK(r.status == 2);
+    CHECK_MESSAGE(r.err == "delaunay2d: " + d + "/two.xy: fewer than 3 distinct points: no "
+                           "triangulation exists\n", r.err);
+  }
+  // An output that cannot be written gives the system's reason.
+  r = dttest::runCli("'" + in + "' -o '" + d + "/none/o'");
+  CHECK(r.status == 1);
+  CHECK(r.err.find("none/o.ele: cannot open for writing: No such file or directory") != std::string::npos);
 }

@@ -1,8 +1,11 @@
 /// \file test_progress.cpp delaunay2d reports progress on stderr (points inserted, rate, time left) when stderr is a terminal, and is silent otherwise.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cstdlib>
+#include <vector>
 
+#include "fast_delaunay.h"
 #include "support.h"
 
 namespace {
@@ -64,4 +67,67 @@ TEST_CASE("progress on a terminal is rewritten in place") {
   CHECK(t.find(" of 60000 points inserted (") != std::string::npos);
   CHECK(t.find(" s left\033[K") != std::string::npos);  // rewritten, not a new line
   CHECK(t.find("\r\033[Kdelaunay2d: 60000 points triangulated in ") != std::string::npos);
+}
+
+TEST_CASE("delaunay2d: --order input on points sorted along a curve warns once that it is quadratic") {
+  // A parabola in x order: from its vertex on, every new point's cavity (and the walk to it)
+  // holds all the points of the right half inserted before it.
+  dttest::XY p;
+  const int n = 4000;
+  for (int i = 0; i < n; ++i) {
+    const double x = -1 + 2.0 * i / n;
+    p.insert(p.end(), {x, x * x});
+  }
+  const std::string in = dttest::tmpPath("sorted_parabola.node"), out = dttest::tmpPath("sorted_parabola");
+  dttest::writeText(in, dttest::nodeText(p));
+  for (const char* kernel : {"fast", "listings"}) {
+    CAPTURE(kernel);
+    dttest::CliResult r =
+        dttest::runCli("'" + in + "' -o '" + out + "' --order input --kernel " + std::string(kernel));
+    REQUIRE(r.status == 0);
+    const std::string w = "delaunay2d: warning: ";
+    CHECK_MESSAGE(r.err.rfind(w, 0) == 0, r.err);
+    CHECK(r.err.find(w, 1) == std::string::npos);  // once
+    CHECK(r.err.find("--order input on this input (sorted, along a curve, or cocircular) takes "
+                     "quadratic time") != std::string::npos);
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    // The default order on the same file: no warning.
+    r = dttest::runCli("'" + in + "' -o '" + out + "' --kernel " + std::string(kernel));
+    REQUIRE(r.status == 0);
+    CHECK(r.err.empty());
+  }
+}
+
+TEST_CASE("fastDelaunay: the progress hook sees every k-th point and the numbering options agree") {
+  const dttest::XY p = dttest::uniformPoints(10000, 91);
+  dt::FastOptions o;
+  o.progressEvery = 1000;
+  std::vector<std::size_t> seen;
+  std::uint64_t lastInsertions = 0;
+  o.progress = [&](std::size_t done, std::size_t total, const dt::FastStats& st) {
+    seen.push_back(done);
+    CHECK(total == 10000);
+    CHECK(st.insertions >= lastInsertions);
+    CHECK(st.insertions <= done + 2);
+    lastInsertions = st.insertions;
+  };
+  const dt::FastResult a = dt::fastDelaunay(p, o);
+  CHECK(seen == std::vector<std::size_t>{1000, 2000, 3000, 4000, 5000, 6000, 7000, 8000, 9000});
+  // Insertion numbering: the same triangles, indexing the points in insertion order.
+  o.progress = nullptr;
+  o.insertionNumbering = true;
+  const dt::FastResult b = dt::fastDelaunay(p, o);
+  REQUIRE(b.tri.size() == a.tri.size());
+  REQUIRE(b.points.size() == p.size());
+  REQUIRE(b.inserted.size() == p.size() / 2);
+  CHECK(dt::checkDelaunay(b.points, b.tri).ok);
+  bool same = true;
+  for (std::size_t t = 0; t < a.tri.size(); ++t)
+    for (int k = 0; k < 3; ++k) same = same && a.tri[t][k] == b.inserted[std::size_t(b.tri[t][k])];
+  CHECK(same);
+  bool pointsMatch = true;
+  for (std::size_t i = 0; i < b.inserted.size(); ++i)
+    pointsMatch = pointsMatch && b.points[2 * i] == p[2 * std::size_t(b.inserted[i])] &&
+                  b.points[2 * i + 1] == p[2 * std::size_t(b.inserted[i]) + 1];
+  CHECK(pointsMatch);
 }

@@ -219,6 +219,10 @@ int main(int argc, char** argv) {
   t.header = {"points", "n", "kernel", "CPU time (s)", "time ratio", "peak (MB)", "peak ratio",
               "triangles", "same count"};
   const Family families[] = {Family::Uniform, Family::Clustered, Family::Grid, Family::Circle};
+  // For the page's targets: at the largest n, the speed-up on uniform points, the worst time
+  // and peak ratios of the fast kernel, and the listings' worst time ratio (all to CGAL).
+  double uniformSpeedup = 0, worstFast = 0, worstPeak = 0, worstListings = 0;
+  std::string worstListingsFamily, winsOn, losesOn;
   ch::Progress progress("bench_kernels", sizes.size() * 4 * methods.size());
   std::uint64_t done = 0;
   for (std::size_t n : sizes) {
@@ -255,11 +259,48 @@ int main(int argc, char** argv) {
                ch::fmt("%.0f", double(x.peakKB) / 1024),
                base.peakKB > 0 ? ch::fmt("%.2f", double(x.peakKB) / double(base.peakKB)) : "-",
                std::to_string(x.triangles), same ? "yes" : "NO"});
+        if (haveCgal && n == sizes.back() && x.ok && base.ok && k + 1 < methods.size()) {
+          const double tr = x.seconds / base.seconds;
+          if (methods[k] == Method::Fast) {
+            std::string& list = tr < 1.0 ? winsOn : losesOn;
+            list += std::string(list.empty() ? "" : ", ") + familyName(f);
+            if (f == Family::Uniform) uniformSpeedup = base.seconds / x.seconds;
+            worstFast = std::max(worstFast, tr);
+            if (base.peakKB > 0) worstPeak = std::max(worstPeak, double(x.peakKB) / double(base.peakKB));
+          } else if (tr > worstListings) {
+            worstListings = tr;
+            worstListingsFamily = familyName(f);
+          }
+        }
         std::cout << familyName(f) << " n=" << x.points << " " << methodName(methods[k]) << ": "
                   << ch::fmt("%.3f s, %.0f MB", x.seconds, double(x.peakKB) / 1024) << "\n";
       }
     }
   }
   t.emit(o, "table_bench");
+  ch::Values v(o, "bench_kernels");
+  v.set("kernel.n", std::to_string(sizes.back()));
+  if (haveCgal && uniformSpeedup > 0) {
+    v.num("kernel.uniform_speedup", uniformSpeedup, "%.2f");
+    v.verdict("kernel.speed_target", uniformSpeedup >= 2.0, "met", "missed");
+    v.num("kernel.worst_peak", worstPeak, "%.2f");
+    v.verdict("kernel.memory_target", worstPeak <= 0.5, "met", "missed");
+    v.num("kernel.worst_time", worstFast, "%.2f");
+    v.verdict("kernel.family_target", worstFast <= 1.2, "met", "missed");
+    v.num("kernel.worst_listings", worstListings, "%.2f");
+    v.set("kernel.worst_listings_family", worstListingsFamily);
+    v.verdict("kernel.listings_target", worstListings <= 4.0, "met", "missed");
+    v.set("kernel.wins_on", winsOn.empty() ? "none" : winsOn);
+    v.set("kernel.loses_on", losesOn.empty() ? "none" : losesOn);
+  } else {
+    for (const char* k : {"kernel.uniform_speedup", "kernel.worst_peak", "kernel.worst_time",
+                          "kernel.worst_listings", "kernel.worst_listings_family",
+                          "kernel.wins_on", "kernel.loses_on"})
+      v.set(k, "(not measured: CGAL was not found at build time)");
+    for (const char* k : {"kernel.speed_target", "kernel.memory_target", "kernel.family_target",
+                          "kernel.listings_target"})
+      v.set(k, "not measured");
+  }
+  v.write();
   return 0;
 }

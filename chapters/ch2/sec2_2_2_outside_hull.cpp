@@ -17,6 +17,7 @@
 #include "generators.h"
 #include "hilbert.h"
 #include "hull.h"
+#include "figure_data.h"
 #include "predicates.h"
 #include "triangulate.h"
 
@@ -24,15 +25,8 @@ namespace {
 
 using dt::XY;
 
-std::string triData(const std::vector<const dt::Face*>& F) {
-  std::ostringstream s;
-  s.precision(17);
-  for (const dt::Face* f : F) {
-    for (int k = 0; k <= 3; ++k) s << f->V[k % 3]->x << " " << f->V[k % 3]->y << "\n";
-    s << "\n";
-  }
-  return s.str();
-}
+// Each edge once (a closed triangle draws an inner edge twice, darker than a hull edge).
+std::string triData(const std::vector<const dt::Face*>& F) { return ch::gnuplotSegs(ch::faceSegs(F)); }
 
 std::string polygon(int& id, const dt::Face* f, const char* color) {
   std::ostringstream s;
@@ -60,27 +54,26 @@ void panels(const ch::Options& o, const std::string& stem, const XY& base, doubl
     S.push_back(T.addVertex(base[2 * i], base[2 * i + 1], long(i)));
   dt::delaunayTrglHull(T, S, dt::StartRule::LastCavity);
   dt::Vertex* q = T.addVertex(qx, qy, long(S.size()));
-  // Before: the visible hull edges (red) and the finite faces of the cavity (pink).
+  // Before: the visible hull edges and the finite faces of the cavity (the style's conflict and
+  // cavity colours).
   const auto vis = dt::visibleHullEdges(T, q);
   std::string obj;
   int id = 0;
   std::size_t cavityFinite = 0;
   for (const dt::Face* f : T.finiteFaces())
-    if (f->inCircle(q)) obj += polygon(id, f, "#f4b6c2"), ++cavityFinite;
-  for (const auto& h : dt::hullEdges(T)) obj += segment(h.a, h.b, "#333333", 2);
-  for (const auto& e : vis) obj += segment(e.a, e.b, "#c0392b", 4);
+    if (f->inCircle(q)) obj += polygon(id, f, "#f9c58d"), ++cavityFinite;
+  for (const auto& e : vis) obj += segment(e.a, e.b, "#c51b7d", 4);
   for (const auto& e : vis) {  // the ghost faces in conflict: the rays from the edge ends away
     obj += "set arrow from " + ch::fmt("%.17g,%.17g", e.a->x, e.a->y) + " to " +
-           ch::fmt("%.17g,%.17g", q->x, q->y) + " nohead lc rgb \"#c0392b\" lw 1 dt 2 front\n";
+           ch::fmt("%.17g,%.17g", q->x, q->y) + " nohead lc rgb \"#c51b7d\" lw 1.5 dt 2 front\n";
     obj += "set arrow from " + ch::fmt("%.17g,%.17g", e.b->x, e.b->y) + " to " +
-           ch::fmt("%.17g,%.17g", q->x, q->y) + " nohead lc rgb \"#c0392b\" lw 1 dt 2 front\n";
+           ch::fmt("%.17g,%.17g", q->x, q->y) + " nohead lc rgb \"#c51b7d\" lw 1.5 dt 2 front\n";
   }
   auto plural = [](std::size_t k, const char* w) {
     return std::to_string(k) + " " + w + (k == 1 ? "" : "s");
   };
-  obj += "set title \"" + note + plural(vis.size(), "visible hull edge") + " (red); cavity: " +
-         plural(cavityFinite, "triangle") + " (pink) + " + plural(vis.size(), "ghost face") +
-         "\"\n";
+  obj += "ftitle = \"" + note + plural(vis.size(), "visible edge") + ", " + plural(cavityFinite, "triangle") +
+         " in C\"\n";
   ch::writeOut(o, stem + "_before.gp", obj);
   ch::writeOut(o, stem + "_before.dat", triData(T.finiteFaces()));
   // After: insertVertex (the Delaunay kernel with ghost faces), new triangles in blue.
@@ -93,10 +86,13 @@ void panels(const ch::Options& o, const std::string& stem, const XY& base, doubl
   id = 0;
   std::size_t fresh = 0;
   for (const dt::Face* f : T.finiteFaces())
-    if (f->V[0] == q || f->V[1] == q || f->V[2] == q) obj += polygon(id, f, "#b9d7f2"), ++fresh;
-  for (const auto& h : dt::hullEdges(T)) obj += segment(h.a, h.b, "#333333", 2);
-  obj += "set title \"after: " + plural(fresh, "new triangle") + " (blue); the hull is " +
-         "wrapped round p\"\n";
+    if (f->V[0] == q || f->V[1] == q || f->V[2] == q) obj += polygon(id, f, "#b8e0b0"), ++fresh;
+  obj += "ftitle = \"after: " + plural(fresh, "new triangle") + "\"\n";
+  // One view for both panels of the row (the after mesh contains q), so they share a scale.
+  double x0 = q->x, x1 = q->x, y0 = q->y, y1 = q->y;
+  for (const dt::Vertex* v : S) x0 = std::min(x0, v->x), x1 = std::max(x1, v->x), y0 = std::min(y0, v->y), y1 = std::max(y1, v->y);
+  const double m = 0.06 * std::max(x1 - x0, y1 - y0);
+  ch::writeOut(o, stem + "_view.gp", ch::fmt("set xrange [%.17g:%.17g]; set yrange [%.17g:%.17g]\n", x0 - m, x1 + m, y0 - m, y1 + m));
   ch::writeOut(o, stem + "_after.gp", obj);
   ch::writeOut(o, stem + "_after.dat", triData(T.finiteFaces()));
   std::ostringstream pts;
@@ -133,11 +129,12 @@ void figure(const ch::Options& o) {
   dt::Vertex q(qx, qy);
   std::cout << "supporting-line point: orient = " << dt::orientationTest(e.a, e.b, &q)
             << " (0: exactly on the line of the hull edge)\n";
-  panels(o, "outline", base, qx, qy, "p on the line of a hull edge, which it does not see:\\n");
+  panels(o, "outline", base, qx, qy, "on a hull line: ");
   ch::runGnuplot(o, "fig_outside_hull.gp");
 }
 
-void table(const ch::Options& o) {
+void table(const ch::Options& o, ch::Values& v) {
+  double visibleMax = 0;
   const std::size_t n = o.maxN ? std::size_t(o.maxN) : (o.quick ? 5000 : 50000);
   ch::Table t;
   t.caption = "Insertions outside the current hull (2.2.2), n = " + std::to_string(n) +
@@ -175,19 +172,29 @@ void table(const ch::Options& o) {
         if (!vis.empty()) ++outside, visible += vis.size(), cavOut += st.cavityFaces - before;
       }
       const dt::CheckReport r = dt::checkTriangulation(T);
+      const double share = 100.0 * double(outside) / double(inserted);
+      if (outside) visibleMax = std::max(visibleMax, double(visible) / double(outside));
+      if (fam != "circle") {
+        std::string key = fam + "_" + order;
+        for (char& c : key) c = c == ' ' ? '_' : c;
+        v.num("s222.outside_" + key, share, "%.1f%%");
+      }
       t.add({fam, order, ch::fmt("%.2f%%", 100.0 * double(outside) / double(inserted)),
              ch::fmt("%.2f", outside ? double(visible) / double(outside) : 0.0),
              ch::fmt("%.2f", outside ? double(cavOut) / double(outside) : 0.0),
              ch::fmt("%.2f", st.meanCavity()), r.ok && r.nVertices == m ? "yes" : "NO"});
     }
   t.emit(o, "table_outside_hull");
+  v.num("s222.visible_max", visibleMax, "%.2f");
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
   return ch::runMain(argc, argv, "sec2_2_2_outside_hull", [](const ch::Options& o) {
+    ch::Values v(o, "sec2_2_2_outside_hull");
     figure(o);
-    table(o);
+    table(o, v);
+    v.write();
   });
 }

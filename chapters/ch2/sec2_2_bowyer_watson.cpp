@@ -21,6 +21,7 @@
 #include "bowyer_watson.h"
 #include "check.h"
 #include "common.h"
+#include "figure_data.h"
 #include "generators.h"
 #include "predicates.h"
 #include "star.h"
@@ -80,27 +81,30 @@ void figure25(const ch::Options& o) {
   const dt::BowyerWatsonResult all = dt::bowyerWatson(kFig25, kFig25Factor);
   XY xy = all.xy;
   std::vector<dt::Tri> tri = {{0, 1, 2}, {1, 0, 3}};
-  std::string pts, sup;
-  for (std::size_t i = 0; i < all.ids.size(); ++i) {
-    const std::string line = num(xy[2 * i]) + " " + num(xy[2 * i + 1]) + " " + pname(all.ids[i]) + "\n";
-    (all.ids[i] < 0 ? sup : pts) += line;
-  }
-  ch::writeOut(o, "fig2_5_points.dat", pts);
-  ch::writeOut(o, "fig2_5_super.dat", sup);
   ch::Table tab;
   tab.caption = "Figure 2.5: triangles of DT_k after k insertions into the two super-triangles "
                 "(Algorithm 1); each insertion removes the cavity C and adds |C| + 2 triangles";
   tab.header = {"k", "cavity size", "ball size", "triangles"};
   tab.add({"0", "", "", std::to_string(tri.size())});
-  ch::writeOut(o, "fig2_5_0.dat", dt::gnuplotTriangles(xy, tri));
+  ch::writeOut(o, "fig2_5_0.dat", ch::gnuplotEdges(xy, tri));
+  std::vector<std::vector<ch::Seg>> shown = {ch::triangleSegs(xy, tri)};  // the edges of each panel
   // Animation frames: 00 is DT_0; then for each point, the cavity (odd) and the ball (even).
   int frame = 0;
   std::string titles;
   auto writeFrame = [&](const std::vector<dt::Tri>& mesh, const std::vector<dt::Tri>& fill, int ip,
                         const std::string& title) {
     const std::string stem = ch::fmt("fig2_5_anim_%02d", frame);
-    dt::writeFileAtomic(o.out + "/" + stem + "_tri.dat", dt::gnuplotTriangles(xy, mesh));
+    dt::writeFileAtomic(o.out + "/" + stem + "_tri.dat", ch::gnuplotEdges(xy, mesh));
     dt::writeFileAtomic(o.out + "/" + stem + "_fill.dat", fill.empty() ? "" : boundaryPolyline(xy, fill));
+    // The cavity's circumcircles, drawn on the cavity frames (polylines: most centres are
+    // outside the view).
+    std::string circles;
+    if (frame % 2 == 1)
+      for (const dt::Tri& t : fill) {
+        const CircleXY c = circumcircle(xy, t[0], t[1], t[2]);
+        circles += ch::circlePolyline(c.x, c.y, c.r);
+      }
+    dt::writeFileAtomic(o.out + "/" + stem + "_circles.dat", circles.empty() ? "NaN NaN\n" : circles);
     dt::writeFileAtomic(o.out + "/" + stem + "_p.dat",
                         ip < 0 ? "" : num(xy[2 * ip]) + " " + num(xy[2 * ip + 1]) + " " + pname(all.ids[ip]) + "\n");
     titles += title + "\n";
@@ -120,7 +124,31 @@ void figure25(const ch::Options& o) {
     writeFrame(before, cavity, ip, "inserting " + pname(all.ids[ip]) + ": the cavity (" + std::to_string(s.cavity) + " triangles)");
     writeFrame(tri, ball, ip, "inserting " + pname(all.ids[ip]) + ": the ball (" + std::to_string(s.ball) + " triangles)");
     tab.add({std::to_string(k), std::to_string(s.cavity), std::to_string(s.ball), std::to_string(tri.size())});
-    if (k <= 4 || k == 9) ch::writeOut(o, ch::fmt("fig2_5_%d.dat", k), dt::gnuplotTriangles(xy, tri));
+    if (k <= 4 || k == 9) {
+      ch::writeOut(o, ch::fmt("fig2_5_%d.dat", k), ch::gnuplotEdges(xy, tri));
+      shown.push_back(ch::triangleSegs(xy, tri));
+    }
+  }
+  // Points and labels (x y name, then lx ly for each of the six panels, away from its edges;
+  // the animation has its own, the last two).
+  {
+    double x0 = xy[0], x1 = xy[0];
+    for (std::size_t i = 0; i < xy.size(); i += 2) x0 = std::min(x0, xy[i]), x1 = std::max(x1, xy[i]);
+    const double em = 0.045 * (x1 - x0);  // the text em in data units (fig2_5.gp's panels)
+    std::string pts, sup;
+    for (std::size_t i = 0; i < all.ids.size(); ++i) {
+      std::string line = num(xy[2 * i]) + " " + num(xy[2 * i + 1]) + " " + pname(all.ids[i]);
+      for (const std::vector<ch::Seg>& segs : shown) {
+        const auto [lx, ly] = ch::labelSpot(xy[2 * i], xy[2 * i + 1], 0.6 * em, 0.9 * em, 0.45 * em, segs);
+        line += " " + num(lx) + " " + num(ly);
+      }
+      // The animation's frames have a smaller text: one more label place, for its last frame.
+      const auto [ax, ay] = ch::labelSpot(xy[2 * i], xy[2 * i + 1], 0.6 * 0.5 * em, 0.9 * 0.5 * em, 0.45 * 0.5 * em, shown.back());
+      line += " " + num(ax) + " " + num(ay) + "\n";
+      (all.ids[i] < 0 ? sup : pts) += line;
+    }
+    ch::writeOut(o, "fig2_5_points.dat", pts);
+    ch::writeOut(o, "fig2_5_super.dat", sup);
   }
   std::cout << "wrote " << frame << " animation data sets " << o.out << "/fig2_5_anim_NN_*.dat\n";
   ch::writeOut(o, "fig2_5_anim_titles.dat", titles);
@@ -128,15 +156,6 @@ void figure25(const ch::Options& o) {
   tab.emit(o, "table_fig2_5");
   ch::runGnuplot(o, "fig2_5.gp");
   ch::runGnuplot(o, "fig2_5_anim.gp");
-  if (o.plot) {
-    // An animated GIF from the frames, if ImageMagick is installed.
-    const std::string cmd = "command -v convert >/dev/null 2>&1 && convert -delay 90 -loop 0 '" + o.out +
-                            "'/fig2_5_anim_[0-9][0-9].png '" + o.out + "/fig2_5_anim.gif'";
-    if (std::system(cmd.c_str()) == 0)
-      std::cout << "wrote " << o.out << "/fig2_5_anim.gif\n";
-    else
-      std::cout << "no GIF (ImageMagick's convert is missing or failed); the PNG frames are there\n";
-  }
 }
 
 // ---- Figure 2.6 ---------------------------------------------------------------------------
@@ -204,12 +223,10 @@ void figure26(const ch::Options& o) {
             << " random 10-point sets (super-square 1.5 times the box) lose part of the hull; "
                "showing seed " << 2600 + chosenSeed << (chosenLike ? "" : " (not like the notes' figure)") << "\n";
   const int k = mi.k, j = mi.j, l = mi.l, K = k + 4, J = j + 4, L = l + 4;
-  std::string crossing, superLabel;
+  std::string crossing;
   for (const auto& [a, b] : mi.crossing)
     crossing += num(bw.xy[2 * a]) + " " + num(bw.xy[2 * a + 1]) + "\n" + num(bw.xy[2 * b]) + " " +
                 num(bw.xy[2 * b + 1]) + "\n\n";
-  for (int s : mi.superInCircle)
-    superLabel += num(bw.xy[2 * s]) + " " + num(bw.xy[2 * s + 1]) + " " + pname(bw.ids[s]) + "\n";
   std::cout << "Figure 2.6: hull edge " << pname(k) << " " << pname(l) << " is missing; " << pname(k) << " "
             << pname(j) << " " << pname(l) << " is in DT(S), its circle contains " << mi.superInCircle.size()
             << " super-vertices; " << mi.crossing.size() << " edge(s) of DT(S0 ∪ S) cross " << pname(k) << " "
@@ -218,13 +235,51 @@ void figure26(const ch::Options& o) {
   for (const dt::Tri& t : bw.tri)
     if (bw.ids[t[0]] >= 0 && bw.ids[t[1]] >= 0 && bw.ids[t[2]] >= 0) kept.push_back(t);
   const CircleXY c = circumcircle(p, k, j, l);
+  // The views: (a) every point and the circle of p_k p_j p_l; (b) the hull of S. Labels are
+  // placed off the edges of the panel they are in (em: 4.5% of the view).
+  double ax0 = c.x - c.r, ax1 = c.x + c.r, ay0 = c.y - c.r, ay1 = c.y + c.r;
+  for (std::size_t i = 0; i < bw.xy.size(); i += 2)
+    ax0 = std::min(ax0, bw.xy[i]), ax1 = std::max(ax1, bw.xy[i]), ay0 = std::min(ay0, bw.xy[i + 1]), ay1 = std::max(ay1, bw.xy[i + 1]);
+  double bx0 = p[0], bx1 = p[0], by0 = p[1], by1 = p[1];
+  for (std::size_t i = 0; i < p.size(); i += 2)
+    bx0 = std::min(bx0, p[i]), bx1 = std::max(bx1, p[i]), by0 = std::min(by0, p[i + 1]), by1 = std::max(by1, p[i + 1]);
+  const double am = 0.1 * std::max(ax1 - ax0, ay1 - ay0), bm = 0.1 * std::max(bx1 - bx0, by1 - by0);  // room for labels
+  ax0 -= am, ax1 += am, ay0 -= am, ay1 += am, bx0 -= bm, bx1 += bm, by0 -= bm, by1 += bm;
+  const double aem = 0.045 * std::max(ax1 - ax0, ay1 - ay0), bem = 0.045 * std::max(bx1 - bx0, by1 - by0);
+  const std::vector<ch::Seg> allSegs = ch::triangleSegs(bw.xy, bw.tri), keptSegs = ch::triangleSegs(bw.xy, kept);
+  std::vector<ch::Seg> bSegs = keptSegs;
+  for (const auto& [a, b] : mi.crossing) bSegs.push_back({bw.xy[2 * a], bw.xy[2 * a + 1], bw.xy[2 * b], bw.xy[2 * b + 1]});
+  bSegs.push_back({p[2 * k], p[2 * k + 1], p[2 * l], p[2 * l + 1]});
+  bSegs.push_back({p[2 * k], p[2 * k + 1], p[2 * j], p[2 * j + 1]});
+  bSegs.push_back({p[2 * j], p[2 * j + 1], p[2 * l], p[2 * l + 1]});
   std::string labels;
-  for (const auto& [idx, name] : std::vector<std::pair<int, std::string>>{{K, "p_k"}, {J, "p_j"}, {L, "p_l"}})
-    labels += num(bw.xy[2 * idx]) + " " + num(bw.xy[2 * idx + 1]) + " " + name + "\n";
+  for (const auto& [idx, name] : std::vector<std::pair<int, std::string>>{{K, "p_k"}, {J, "p_j"}, {L, "p_l"}}) {
+    const auto [lx, ly] = ch::labelSpot(bw.xy[2 * idx], bw.xy[2 * idx + 1], 0.6 * bem, 0.5 * bem, 0.45 * bem, bSegs);
+    labels += num(lx) + " " + num(ly) + " " + name + "\n";
+  }
+  // Super-vertex labels of (a); in (b), p_{-1} is named where its crossing edge leaves the view.
+  std::string superLabel, exitLabel;
+  for (int s = 0; s < 4; ++s) {
+    const auto [lx, ly] = ch::labelSpot(bw.xy[2 * s], bw.xy[2 * s + 1], 0.6 * aem, 0.9 * aem, 0.45 * aem, allSegs);
+    superLabel += num(bw.xy[2 * s]) + " " + num(bw.xy[2 * s + 1]) + " " + pname(bw.ids[s]) + " " + num(lx) + " " + num(ly) + " " +
+                  (std::count(mi.superInCircle.begin(), mi.superInCircle.end(), s) ? "1" : "0") + "\n";
+  }
+  for (const auto& [a, b] : mi.crossing) {
+    const int sv = a < 4 ? a : b, other = a < 4 ? b : a;
+    ch::Seg cl;
+    if (!ch::clipLine(bw.xy[2 * other], bw.xy[2 * other + 1], bw.xy[2 * sv] - bw.xy[2 * other],
+                      bw.xy[2 * sv + 1] - bw.xy[2 * other + 1], bx0, bx1, by0, by1, cl))
+      continue;
+    // cl runs along the line; its end towards the super-vertex is where the edge leaves the view.
+    const double ex = cl.x1, ey = cl.y1;
+    exitLabel += num(ex) + " " + num(ey) + " " + num(ex + 0.9 * bem * (ex < 0.5 * (bx0 + bx1) ? 1 : -1)) + " " +
+                 num(ey + 0.9 * bem * (ey < 0.5 * (by0 + by1) ? 1 : -1)) + " \"to " + pname(bw.ids[sv]) + "\"\n";
+  }
   std::string pts;
   for (std::size_t i = 0; i < p.size() / 2; ++i) pts += num(p[2 * i]) + " " + num(p[2 * i + 1]) + "\n";
-  ch::writeOut(o, "fig2_6_all.dat", dt::gnuplotTriangles(bw.xy, bw.tri));
+  ch::writeOut(o, "fig2_6_all.dat", ch::gnuplotSegs(allSegs));
   ch::writeOut(o, "fig2_6_kept.dat", dt::gnuplotTriangles(bw.xy, kept));
+  ch::writeOut(o, "fig2_6_kept_edges.dat", ch::gnuplotSegs(keptSegs));
   ch::writeOut(o, "fig2_6_hull.dat", boundaryPolyline(p, dt::bruteForceDelaunay(p)));
   ch::writeOut(o, "fig2_6_points.dat", pts);
   ch::writeOut(o, "fig2_6_missing.dat", num(p[2 * k]) + " " + num(p[2 * k + 1]) + "\n" + num(p[2 * j]) + " " +
@@ -233,7 +288,10 @@ void figure26(const ch::Options& o) {
   ch::writeOut(o, "fig2_6_circle.dat", num(c.x) + " " + num(c.y) + " " + num(c.r) + "\n");
   ch::writeOut(o, "fig2_6_labels.dat", labels);
   ch::writeOut(o, "fig2_6_super.dat", superLabel);
+  ch::writeOut(o, "fig2_6_exit.dat", exitLabel.empty() ? "NaN NaN NaN NaN x\n" : exitLabel);
   ch::writeOut(o, "fig2_6_crossing.dat", crossing);
+  ch::writeOut(o, "fig2_6_view.gp", ch::fmt("ax0 = %.10g; ax1 = %.10g; ay0 = %.10g; ay1 = %.10g\n", ax0, ax1, ay0, ay1) +
+                                       ch::fmt("bx0 = %.10g; bx1 = %.10g; by0 = %.10g; by1 = %.10g\n", bx0, bx1, by0, by1));
   ch::runGnuplot(o, "fig2_6.gp");
   // How often it happens, for growing super-triangles (same 500 seeds).
   ch::Table tab;

@@ -21,6 +21,7 @@
 #include "cavity.h"
 #include "check.h"
 #include "common.h"
+#include "figure_data.h"
 #include "generators.h"
 #include "predicates.h"
 #include "search.h"
@@ -58,26 +59,30 @@ std::string linkArrows(const dt::Face* f, const dt::Face* g) {
 }
 
 void figure210(const ch::Options& o) {
-  // 18 random points in the unit square; the new point p is the grid position whose cavity is
-  // the largest with at most 6 faces, none of them on the hull (so every neighbour is a triangle).
+  // 18 random points in the unit square; the new point p is a grid position whose cavity has 4
+  // to 6 faces, none of them on the hull (so every neighbour is a triangle), and which is far
+  // from the cavity's vertices (so the ball has no slivers and its links stay readable).
   const std::vector<double> xy = dt::uniformPoints(18, 2010u);
   dt::Triangulation T;
   std::vector<dt::Vertex*> S = dt::addVertices(T, xy);
   dt::delaunayTrglHull(T, S, dt::StartRule::LastCavity);
-  double bx = 0.5, by = 0.5;
-  std::size_t best = 0;
+  double bx = 0.5, by = 0.5, best = -1;
   for (int i = 0; i <= 40; ++i)
     for (int j = 0; j <= 40; ++j) {
       const dt::Vertex q(0.2 + 0.015 * i, 0.2 + 0.015 * j);
       std::size_t size = 0;
       bool interior = true;
+      double near = 1e300;  // the distance from q to the nearest cavity vertex
       for (const dt::Face& f : T.faces())
         if (!f.deleted && f.inCircle(&q)) {
           ++size;
           interior = interior && !f.isGhost();
+          for (const dt::Vertex* v : f.V)
+            if (v) near = std::min(near, std::hypot(v->x - q.x, v->y - q.y));
         }
-      if (interior && size <= 6 && size > best) {
-        best = size;
+      const double score = double(size) + 20 * near;
+      if (interior && size >= 4 && size <= 6 && score > best) {
+        best = score;
         bx = q.x;
         by = q.y;
       }
@@ -87,13 +92,17 @@ void figure210(const ch::Options& o) {
   // faces across its boundary; then the real insertion, whose result we compare with them.
   std::set<const dt::Face*> cavity, outer;
   std::string before, cav;
+  // Each edge once (a closed triangle draws an inner edge twice, darker than a hull edge).
+  auto edgesOf = [](const auto& faces) { return ch::gnuplotSegs(ch::faceSegs(faces)); };
+  std::vector<const dt::Face*> beforeFaces;
   for (const dt::Face* f : T.finiteFaces()) {
-    before += triangleBlock(f);
+    beforeFaces.push_back(f);
     if (f->inCircle(p)) {
       cavity.insert(f);
       cav += triangleBlock(f);
     }
   }
+  before = edgesOf(beforeFaces);  // now: the insertion reuses the cavity's faces
   for (const dt::Face* f : cavity)
     for (const dt::Face* g : f->F)
       if (g != nullptr && !g->isGhost() && cavity.count(g) == 0) outer.insert(g);
@@ -104,7 +113,6 @@ void figure210(const ch::Options& o) {
   std::string after, ball, out, arrowsNew, arrowsOut;
   std::vector<const dt::Face*> ballFaces;
   for (const dt::Face* f : T.finiteFaces()) {
-    after += triangleBlock(f);
     if (f->V[0] == p || f->V[1] == p || f->V[2] == p) {
       ball += triangleBlock(f);
       ballFaces.push_back(f);
@@ -120,6 +128,7 @@ void figure210(const ch::Options& o) {
       if (isNew && g < f) continue;  // each new-new link once
       (isNew ? arrowsNew : arrowsOut) += linkArrows(f, g);
     }
+  after = edgesOf(T.finiteFaces());
   ch::writeOut(o, "fig2_10_before.dat", before);
   ch::writeOut(o, "fig2_10_cavity.dat", cav);
   ch::writeOut(o, "fig2_10_after.dat", after);
@@ -143,10 +152,11 @@ struct Run {
 // Listing 2.7 on n random points (random order) in the super-triangles, the walk always starting
 // at the first face T[0]. delaunayTrgl is called on slices of S so that progress can be shown;
 // with StartRule::FirstFace this is the same computation as one call.
-Run table21Run(long n, bool check) {
+// `factor`: the super-square's width over the points' box (the library's default is 10).
+Run table21Run(long n, bool check, double factor = 10.0, unsigned seed = 21u) {
   dt::Triangulation T;
-  std::vector<dt::Vertex*> S = dt::addVertices(T, dt::uniformPoints(std::size_t(n), 21u));
-  dt::initSuperTriangles(T, 0, 0, 1, 1);
+  std::vector<dt::Vertex*> S = dt::addVertices(T, dt::uniformPoints(std::size_t(n), seed));
+  dt::initSuperTriangles(T, 0, 0, 1, 1, factor);
   dt::InsertionStats st;
   ch::Progress prog(ch::fmt("Table 2.1, n = %ld", n), std::uint64_t(n));
   const std::size_t slice = std::max<std::size_t>(1000, std::size_t(n) / 200);
@@ -166,7 +176,7 @@ Run table21Run(long n, bool check) {
   return r;
 }
 
-void table21(const ch::Options& o) {
+void table21(const ch::Options& o, ch::Values& v) {
   const long maxN = o.maxN > 0 ? o.maxN : (o.quick ? 10000 : 1000000);
   // The notes' Table 2.1, for comparison.
   const std::map<long, std::array<double, 3>> notes = {{1000, {19.8, 3.85, 0.012}},
@@ -205,6 +215,23 @@ void table21(const ch::Options& o) {
                    hasNotes ? it->second[0] : NAN);
   }
   t.emit(o, "table2_1");
+  {
+    // The largest n that the notes also measured: how far our N_search is from theirs.
+    const Run* last = nullptr;
+    for (const Run& r : runs)
+      if (notes.count(r.n)) last = &r;
+    if (last != nullptr) {
+      const double theirs = notes.at(last->n)[0];
+      const double rel = (last->nSearch - theirs) / theirs;
+      v.set("s234.nsearch_cmp_n", std::to_string(last->n));
+      v.num("s234.nsearch_ours", last->nSearch, "%.1f");
+      v.num("s234.nsearch_notes", theirs, "%.3g");
+      v.num("s234.nsearch_gap", 100 * std::fabs(rel), "%.0f%%");
+      v.verdict("s234.nsearch_side", rel < 0, "below", "above");
+    }
+    v.num("s234.ncavity_last", runs.back().nCavity, "%.3f");
+    v.set("s234.n_last", std::to_string(runs.back().n));
+  }
   // Growth exponents of N_search and of t (least squares in logs), ours and the notes'.
   if (runs.size() >= 2) {
     auto slope = [](const std::vector<std::array<double, 2>>& pts) {
@@ -235,6 +262,14 @@ void table21(const ch::Options& o) {
                 "the notes say"};
     e.add({"N_search", ch::fmt("%.3f", slope(search)), ch::fmt("%.3f", slope(nSearch)),
            "sqrt(n): 0.5"});
+    v.num("s234.exp_search", slope(search), "%.2f");
+    v.num("s234.exp_time", slope(time), "%.2f");
+    const bool faster = slope(time) > 1.0 + slope(search);
+    v.verdict("s234.exp_time_vs_steps", faster, "faster", "no faster");
+    v.verdict("s234.exp_time_comment", faster,
+              "Once the mesh no longer fits in the cache, almost every step of the walk misses it, "
+              "because the faces it visits are scattered in memory, and each step costs more",
+              "Up to this run's largest n the steps cost about the same whatever n");
     e.add({"time", ch::fmt("%.3f", slope(time)), ch::fmt("%.3f", slope(nTime)), "n^{3/2}: 1.5"});
     e.emit(o, "table2_1_growth");
   }
@@ -247,11 +282,62 @@ void table21(const ch::Options& o) {
   ch::runGnuplot(o, "fig_table2_1_search.gp");
 }
 
+// What makes our N_search differ from the notes'? The notes give neither the size of their
+// super-triangles nor whether the face their walk returns is counted. Table 2.1's run at one
+// size, varied one thing at a time: the super-square factor, the count without the returned
+// face, and another point set (seed).
+void nsearchVariants(const ch::Options& o, ch::Values& v) {
+  const long n = std::min<long>(o.maxN > 0 ? o.maxN : 100000, o.quick ? 10000 : 100000);
+  const std::map<long, double> notes = {{1000, 19.8}, {10000, 56.8}, {100000, 161}, {1000000, 503}};
+  ch::Table t;
+  t.caption = ch::fmt("What N_search counts: Table 2.1's run at n = %ld (first-face walk), one thing "
+                      "changed at a time. Notes: %s.", n,
+                      notes.count(n) ? ch::fmt("%.3g", notes.at(n)).c_str() : "not measured at this n");
+  t.header = {"variant", "N_search", "vs the notes"};
+  auto row = [&](const std::string& what, double ns) {
+    t.add({what, ch::fmt("%.1f", ns),
+           notes.count(n) ? ch::fmt("%+.0f%%", 100 * (ns - notes.at(n)) / notes.at(n)) : "-"});
+  };
+  const Run base = table21Run(n, false);
+  row("Table 2.1's setting: super-square 10 x the box, returned face counted", base.nSearch);
+  row("returned face not counted", base.nSearch - 1.0);
+  double lo = base.nSearch, hi = base.nSearch;
+  for (double f : {1.5, 3.0, 100.0, 1000.0}) {
+    const Run r = table21Run(n, false, f);
+    row(ch::fmt("super-square %g x the box", f), r.nSearch);
+    lo = std::min(lo, r.nSearch);
+    hi = std::max(hi, r.nSearch);
+  }
+  const Run other = table21Run(n, false, 10.0, 7u);
+  row("another point set (seed 7)", other.nSearch);
+  t.emit(o, "table2_1_nsearch_variants");
+  v.set("s234.var_n", std::to_string(n));
+  v.num("s234.var_base", base.nSearch, "%.1f");
+  v.num("s234.var_factor_lo", lo, "%.1f");
+  v.num("s234.var_factor_hi", hi, "%.1f");
+  v.num("s234.var_seed", other.nSearch, "%.1f");
+  if (notes.count(n)) {
+    const double theirs = notes.at(n);
+    v.num("s234.var_notes", theirs, "%.3g");
+    const bool covers = lo <= theirs && theirs <= hi;
+    v.verdict("s234.var_factor_reaches", covers, "covers", "does not reach");
+    v.verdict("s234.var_conclusion", covers,
+              "The size of the super-triangles, which the notes do not give, can therefore account "
+              "for the whole gap",
+              "The size of the super-triangles alone therefore does not explain the gap");
+  } else {
+    v.set("s234.var_notes", "(not measured by the notes at this n)");
+    v.set("s234.var_factor_reaches", "cannot be compared with");
+    v.set("s234.var_conclusion", "The notes did not measure this size, so no conclusion is drawn");
+  }
+}
+
 // ---- share of time in the orientation predicate --------------------------------------------
 
 // Where the CPU time of one Table 2.1 run goes, sampled by perf (if available): self time per
-// function, grouped. Returns false if perf could not be run.
-bool perfProfile(const ch::Options& o, long n) {
+// function, grouped. Returns false if perf could not be run; `orientShare` gets the fraction
+// of the samples in the orientation predicate.
+bool perfProfile(const ch::Options& o, long n, double& orientShare) {
   char self[4096] = {0};
   if (readlink("/proc/self/exe", self, sizeof self - 1) <= 0) return false;
   const std::string data = o.out + "/perf_2_3_4.data", rep = o.out + "/perf_2_3_4.txt";
@@ -296,13 +382,15 @@ bool perfProfile(const ch::Options& o, long n) {
   std::sort(rows.rbegin(), rows.rend());
   for (const auto& [pc, g] : rows) t.add({g, ch::fmt("%.1f%%", pc)});
   t.emit(o, "table_orient_share_perf");
+  orientShare = group["orientation: orient2d, orientationTest"] / 100.0;
   std::remove(data.c_str());
   return true;
 }
 
 // The counting estimate (no profiler needed): number of calls of each predicate in the run,
 // times its cost per call measured on the same kind of arguments, over the run's CPU time.
-void countingEstimate(ch::Table& t, long n) {
+// Returns the orientation predicate's share.
+double countingEstimate(ch::Table& t, long n) {
   // Timings are the minimum over repetitions (the usual defence against other jobs): the
   // triangulation is repeated when it is short, each timed loop five times.
   const std::vector<double> xy = dt::uniformPoints(std::size_t(n), 21u);
@@ -357,19 +445,42 @@ void countingEstimate(ch::Table& t, long n) {
          std::to_string(c.incircleExact), ch::fmt("%.1f", 1e9 * tIncircle), ch::fmt("%.3g", total),
          ch::fmt("%.1f%%", 100 * shareI)});
   if (sink == 42) std::cout << " ";  // keeps the timed loops from being optimised away
+  return shareO;
 }
 
-void predicateShare(const ch::Options& o, bool profile) {
+void predicateShare(const ch::Options& o, bool profile, ch::Values& v) {
   const long n = o.quick ? 10000 : 100000;
   ch::Table t;
   t.caption = "Share of time in the predicates by counting: Listing 2.7 on n random points; calls "
               "x cost per call (measured on arguments already in cache) / the run's CPU time";
   t.header = {"n", "predicate", "calls per insertion", "exact fallbacks", "ns per call",
               "run (s CPU)", "share of the time"};
-  countingEstimate(t, n / 10);
-  countingEstimate(t, n);
+  const double small = countingEstimate(t, n / 10), large = countingEstimate(t, n);
   t.emit(o, "table_orient_share_count");
-  if (!profile || !perfProfile(o, n)) {
+  // The page's sentences about the claim follow from these values.
+  v.set("s234.share_n_small", std::to_string(n / 10));
+  v.set("s234.share_n_large", std::to_string(n));
+  v.num("s234.orient_count_small", 100 * small, "%.1f%%");
+  v.num("s234.orient_count_large", 100 * large, "%.1f%%");
+  v.verdict("s234.orient_count_trend", large > small, "rises", "falls");
+  double perf = -1;
+  const bool profiled = profile && perfProfile(o, n, perf);
+  v.set("s234.orient_perf", profiled ? ch::fmt("%.1f%%", 100 * perf) : "not measured (no perf profile)");
+  const bool countBelow = small < 0.5 && large < 0.5, perfBelow = perf < 0.5;
+  std::string verdict;
+  if (!profiled)
+    verdict = countBelow ? "The count puts it below 50%: the claim is not confirmed on this machine"
+                         : "The count puts it at 50% or more: the claim holds on this machine";
+  else if (countBelow && perfBelow)
+    verdict = "Both measurements put it below 50%: the claim is not confirmed on this machine";
+  else if (!countBelow && !perfBelow)
+    verdict = "Both measurements put it at 50% or more: the claim holds on this machine";
+  else
+    verdict = "The two measurements fall on different sides of 50%: the claim is undecided here";
+  v.set("s234.orient_verdict", verdict);
+  v.verdict("s234.count_vs_perf", !profiled || std::abs(perf - large) < 0.25 * std::max(perf, large),
+            "are of the same size", "differ widely");
+  if (!profiled) {
     // The book includes this table: say why it has no numbers rather than leave it missing.
     ch::Table none;
     none.caption = "No perf profile in this run";
@@ -477,9 +588,12 @@ int main(int argc, char** argv) {
         std::cerr << "sec2_3_4_algorithms: ignoring option " << a << "\n";
       }
     }
+    ch::Values v(o, "sec2_3_4_algorithms");
     figure210(o);
-    table21(o);
-    predicateShare(o, profile);
+    table21(o, v);
+    nsearchVariants(o, v);
+    predicateShare(o, profile, v);
     parabola(o);
+    v.write();
   });
 }

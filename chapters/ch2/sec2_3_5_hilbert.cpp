@@ -130,10 +130,21 @@ void figure211(const ch::Options& o) {
 
 // ---- Figure 2.12 ---------------------------------------------------------------------------
 
-void figure212(const ch::Options& o) {
+void figure212(const ch::Options& o, ch::Values& v) {
   for (std::size_t n : {std::size_t(1000), std::size_t(10000)}) {
     const XY p = dt::uniformPoints(n, 2012 + n);
     const std::vector<std::size_t> idx = dt::hilbertOrder(p);
+    // Tour lengths, sorted and in input order, for the page's sentence on Figure 2.12.
+    double sorted = 0, input = 0;
+    for (std::size_t r = 1; r < n; ++r) {
+      sorted += std::hypot(p[2 * idx[r]] - p[2 * idx[r - 1]], p[2 * idx[r] + 1] - p[2 * idx[r - 1] + 1]);
+      input += std::hypot(p[2 * r] - p[2 * r - 2], p[2 * r + 1] - p[2 * r - 1]);
+    }
+    if (n == 10000) {
+      v.num("s235.tour_sqrt", sorted / std::sqrt(double(n)), "%.2f");
+      v.num("s235.tour_input", input / double(n), "%.2f");
+      v.set("s235.tour_n", sci(n));
+    }
     std::ostringstream s;
     s << "# x y rank: " << n << " random points in Hilbert order (depth "
       << dt::hilbertAutoDepth(n) << ")\n";
@@ -147,7 +158,9 @@ void figure212(const ch::Options& o) {
 // ---- Table 2.2 -----------------------------------------------------------------------------
 
 void table22(const ch::Options& o, const std::vector<std::size_t>& sizes,
-             std::size_t checkLimit) {
+             std::size_t checkLimit, ch::Values& v) {
+  double nsLo = 1e300, nsHi = 0;
+  std::vector<std::pair<std::size_t, double>> cav;
   struct NotesRow { double ns, nc, t; };
   const NotesRow notes[] = {{2.34, 4.06, 0.0097}, {2.46, 4.13, 0.090}, {2.50, 4.16, 0.92},
                             {2.50, 4.17, 9.2}};
@@ -181,7 +194,22 @@ void table22(const ch::Options& o, const std::vector<std::size_t>& sizes,
     tab.add(row);
     dat << n << " " << r.nSearch << " " << r.nCavity << " " << r.tTotal << " " << r.tSort << " "
         << 1e6 * r.tTotal / double(n) << "\n";
+    nsLo = std::min(nsLo, r.nSearch);
+    nsHi = std::max(nsHi, r.nSearch);
+    cav.push_back({n, r.nCavity});
     prog.update(++done);
+  }
+  if (!cav.empty()) {
+    v.num("s235.t22_ns_lo", nsLo, "%.2f");
+    v.num("s235.t22_ns_hi", nsHi, "%.2f");
+    v.verdict("s235.t22_ns_verdict", nsHi < 1.5 * nsLo, "stays about constant", "grows");
+    v.set("s235.t22_n_first", sci(cav.front().first));
+    v.set("s235.t22_n_last", sci(cav.back().first));
+    v.num("s235.t22_cav_first", cav.front().second, "%.2f");
+    v.num("s235.t22_cav_last", cav.back().second, "%.2f");
+    const double decades = std::log10(double(cav.back().first) / double(cav.front().first));
+    v.num("s235.t22_cav_per_decade", decades > 0 ? (cav.back().second - cav.front().second) / decades : 0.0, "%.2f");
+    v.verdict("s235.t22_cav_verdict", cav.front().second > 4.3, "does not stay", "stays");
   }
   tab.emit(o, "table2_2");
   ch::writeOut(o, "table2_2.dat", dat.str());
@@ -224,43 +252,62 @@ void depthTable(const ch::Options& o, std::size_t n) {
 
 // ---- keys against sort -----------------------------------------------------------------------
 
-void keysVersusSort(const ch::Options& o, std::size_t n) {
+// The parts are those of hilbertOrder itself (its keys are hilbertKeysFast's; the rest is the
+// packing and the radix sort), so keys + rest = the whole; the other key and sort methods are
+// timed as alternatives to the part they would replace.
+void keysVersusSort(const ch::Options& o, std::size_t n, ch::Values& v) {
   const XY p = dt::uniformPoints(n, 44);
   const int depth = dt::hilbertAutoDepth(n);
-  const int reps = 3;  // best of 3: the machine is shared
-  double tInt = 1e30, tList = 1e30, tSort = 1e30, tOrder = 1e30;
+  const int reps = 5;  // best of 5: the machine is shared
+  double tFast = 1e30, tInt = 1e30, tList = 1e30, tSort = 1e30, tOrder = 1e30;
   std::size_t differ = 0;
   for (int r = 0; r < reps; ++r) {
     auto t0 = Clock::now();
+    const std::vector<std::size_t> idx = dt::hilbertOrder(p, depth);
+    tOrder = std::min(tOrder, ch::secondsSince(t0));
+    t0 = Clock::now();
+    const std::vector<std::uint64_t> k0 = dt::hilbertKeysFast(p, depth);
+    tFast = std::min(tFast, ch::secondsSince(t0));
+    t0 = Clock::now();
     const std::vector<std::uint64_t> k1 = dt::hilbertKeys(p, depth);
     tInt = std::min(tInt, ch::secondsSince(t0));
     t0 = Clock::now();
     const std::vector<std::uint64_t> k2 = dt::hilbertKeysListing(p, depth);
     tList = std::min(tList, ch::secondsSince(t0));
     differ = 0;
-    for (std::size_t i = 0; i < n; ++i) differ += k1[i] != k2[i];
+    for (std::size_t i = 0; i < n; ++i) differ += (k1[i] != k2[i]) + (k0[i] != k1[i]);
     std::vector<std::pair<std::uint64_t, std::size_t>> kv(n);
     for (std::size_t i = 0; i < n; ++i) kv[i] = {k1[i], i};
     t0 = Clock::now();
     std::sort(kv.begin(), kv.end());
     tSort = std::min(tSort, ch::secondsSince(t0));
-    t0 = Clock::now();
-    const std::vector<std::size_t> idx = dt::hilbertOrder(p, depth);
-    tOrder = std::min(tOrder, ch::secondsSince(t0));
   }
+  // Each minimum is taken separately, so the rest is clamped at 0 if noise makes keys > whole.
+  const double tRest = std::max(0.0, tOrder - tFast);
+  auto share = [&](double t) { return ch::fmt("%.0f%%", 100 * t / tOrder); };
+  auto times = [&](double t, double part) { return ch::fmt("%.1f x", t / part); };
   ch::Table tab;
   tab.caption = "The cost of the keys against the cost of the sort, n = " + sci(n) +
                 " uniform points, depth " + std::to_string(depth) +
-                " (best of 3). The notes: \"the main cost of sorting points is on the sorting "
+                " (best of 5 each). The notes: \"the main cost of sorting points is on the sorting "
                 "algorithm itself and not on the computation of the Hilbert curve "
                 "coordinates\".";
-  tab.header = {"step", "t (s)", "share of hilbertOrder"};
-  tab.add({"keys, hilbertIndex (integer)", ch::fmt("%.3g", tInt), ch::fmt("%.0f%%", 100 * tInt / tOrder)});
-  tab.add({"keys, Listing 2.8 (HilbertCoord)", ch::fmt("%.3g", tList), ch::fmt("%.0f%%", 100 * tList / tOrder)});
-  tab.add({"std::sort of (key, index) pairs", ch::fmt("%.3g", tSort), ch::fmt("%.0f%%", 100 * tSort / tOrder)});
-  tab.add({"hilbertOrder (box + keys + sort)", ch::fmt("%.3g", tOrder), "100%"});
-  tab.add({"keys that differ between the two", std::to_string(differ), ""});
+  tab.header = {"step", "t (s)", "share of hilbertOrder", "alternative / the part it replaces"};
+  tab.add({"hilbertOrder (box + keys + sort)", ch::fmt("%.3g", tOrder), "100%", ""});
+  tab.add({"its keys: hilbertKeysFast (4 levels per look-up)", ch::fmt("%.3g", tFast), share(tFast), ""});
+  tab.add({"the rest: packing, radix sort, unpacking", ch::fmt("%.3g", tRest), share(tRest), ""});
+  tab.add({"alternative keys: hilbertIndex (1 level per step)", ch::fmt("%.3g", tInt), "", times(tInt, tFast)});
+  tab.add({"alternative keys: Listing 2.8 (HilbertCoord)", ch::fmt("%.3g", tList), "", times(tList, tFast)});
+  tab.add({"alternative sort: std::sort of (key, index) pairs", ch::fmt("%.3g", tSort), "", times(tSort, std::max(tRest, 1e-9))});
+  tab.add({"keys that differ between the three methods", std::to_string(differ), "", ""});
   tab.emit(o, "table_hilbert_keys");
+  v.set("s235.keys_n", sci(n));
+  v.num("s235.keys_share", 100 * tFast / tOrder, "%.0f%%");
+  v.num("s235.sort_share", 100 * tRest / tOrder, "%.0f%%");
+  v.verdict("s235.sort_vs_keys", tRest > tFast, "more", "less");
+  v.verdict("s235.notes_keys_claim", tRest > tFast, "holds for hilbertOrder", "does not hold for hilbertOrder");
+  v.num("s235.listing_keys_x", tList / tFast, "%.1f");
+  v.num("s235.stdsort_x", tSort / std::max(tRest, 1e-9), "%.1f");
 }
 
 // ---- BRIO --------------------------------------------------------------------------------------
@@ -288,7 +335,13 @@ void brioFigure(const ch::Options& o) {
 }
 
 void brioComparison(const ch::Options& o, const std::vector<std::size_t>& sizes,
-                    std::size_t randomMax, std::size_t checkLimit) {
+                    std::size_t randomMax, std::size_t checkLimit, ch::Values& v) {
+  // For the page: cavities and walks of Hilbert-only and BRIO on the spread-out inputs (all
+  // sizes), and the parabola's Hilbert-only cavities.
+  double hilCavLo = 1e300, hilCavHi = 0, brioCavLo = 1e300, brioCavHi = 0, brioParabola = 0;
+  double walkDiffSum = 0, cavDiffSum = 0;
+  int pairs = 0;
+  std::string parabolaHilbert;
   struct Input { const char* name; XY (*make)(std::size_t, std::uint64_t); };
   const Input inputs[] = {
       {"uniform", [](std::size_t n, std::uint64_t s) { return dt::uniformPoints(n, s); }},
@@ -301,41 +354,76 @@ void brioComparison(const ch::Options& o, const std::vector<std::size_t>& sizes,
                 "to n = " + sci(randomMax) + ": its walks grow like sqrt(n).";
   tab.header = {"input", "n", "order", "N_search", "N_cavity", "t (s)", "t/n (us)", "checked"};
   // One block of rows per (input, order), so that gnuplot joins each series.
-  std::ostringstream dat[4][3];
+  std::ostringstream dat[4][3], stops;
   std::size_t total = 0, done = 0;
   for (std::size_t n : sizes) total += 4 * (n <= randomMax ? 3 : 2);
   ch::Progress prog("BRIO comparison", total);
   for (int in = 0; in < 4; ++in) {
     // A series stops once N_search + N_cavity exceeds 200: the work per point grows like n
     // there (quadratic total), and the next size would take about 100 times longer.
-    bool quadratic[3] = {false, false, false};
+    bool quadratic[3] = {false, false, false}, stopped[3] = {false, false, false};
+    std::string lastRow[3];
     for (std::size_t n : sizes) {
+      Run hilbertRun;  // the Hilbert-only run of the same points, for the BRIO comparison
       const XY p = inputs[in].make(n, 1000 + 10 * n + std::size_t(in));
       for (Order ord : {Order::Random, Order::Hilbert, Order::Brio}) {
         if (ord == Order::Random && n > randomMax) continue;
         const int k = int(ord);
         if (quadratic[k]) {
           tab.add({inputs[in].name, sci(n), orderName(ord), "", "", "skipped: quadratic", "", ""});
+          if (!stopped[k]) stops << lastRow[k];  // the last size run
+          stopped[k] = true;
           prog.update(++done);
           continue;
         }
         const Run r = triangulate(p, ord, 0, n <= checkLimit);
         quadratic[k] = r.nSearch + r.nCavity > 200;
+        const bool spread = in != 2;
+        if (ord == Order::Hilbert) {
+          if (spread) hilCavLo = std::min(hilCavLo, r.nCavity), hilCavHi = std::max(hilCavHi, r.nCavity);
+          else parabolaHilbert += (parabolaHilbert.empty() ? "" : ", ") + ch::fmt("%.0f at \\f$n = ", r.nCavity) + sci(n) + "\\f$";
+          hilbertRun = r;
+        } else if (ord == Order::Brio) {
+          if (spread) {
+            brioCavLo = std::min(brioCavLo, r.nCavity), brioCavHi = std::max(brioCavHi, r.nCavity);
+            if (hilbertRun.nCavity > 0) {  // the Hilbert-only run was not skipped
+              walkDiffSum += r.nSearch - hilbertRun.nSearch;
+              cavDiffSum += hilbertRun.nCavity - r.nCavity;
+              ++pairs;
+            }
+          } else {
+            brioParabola = std::max(brioParabola, r.nCavity);
+          }
+        }
         tab.add({inputs[in].name, sci(n), orderName(ord), ch::fmt("%.2f", r.nSearch),
                  ch::fmt("%.2f", r.nCavity), ch::fmt("%.3g", r.tTotal),
                  ch::fmt("%.2f", 1e6 * r.tTotal / double(n)), r.checked ? "exact" : "no"});
-        dat[in][k] << in << " " << n << " " << k << " " << r.nSearch << " " << r.nCavity << " "
-                   << r.tTotal << " " << 1e6 * r.tTotal / double(n) << "\n";
+        std::ostringstream row;
+        row << in << " " << n << " " << k << " " << r.nSearch << " " << r.nCavity << " " << r.tTotal
+            << " " << 1e6 * r.tTotal / double(n) << "\n";
+        dat[in][k] << row.str();
+        lastRow[k] = row.str();
         prog.update(++done);
       }
     }
   }
   tab.emit(o, "table_brio");
+  v.num("s235.brio_cav_lo", brioCavLo, "%.1f");
+  v.num("s235.brio_cav_hi", brioCavHi, "%.1f");
+  v.num("s235.hil_cav_lo", hilCavLo, "%.1f");
+  v.num("s235.hil_cav_hi", hilCavHi, "%.1f");
+  v.num("s235.brio_walk_extra", pairs ? walkDiffSum / pairs : 0.0, "%.1f");
+  v.num("s235.brio_cav_less", pairs ? cavDiffSum / pairs : 0.0, "%.1f");
+  v.set("s235.parabola_hilbert", parabolaHilbert.empty() ? "not measured" : parabolaHilbert);
+  v.num("s235.parabola_brio", brioParabola, "%.1f");
   std::string all = "# input(0 uniform,1 clustered,2 parabola,3 jittered grid) n "
                     "order(0 random,1 Hilbert,2 BRIO) nsearch ncavity t us_per_point\n";
   for (auto& byInput : dat)
     for (auto& series : byInput) all += series.str();
   ch::writeOut(o, "brio_compare.dat", all);
+  // The last row of each series stopped as quadratic (columns of brio_compare.dat), marked in
+  // the figure.
+  ch::writeOut(o, "brio_compare_stops.dat", stops.str().empty() ? "NaN NaN NaN NaN NaN NaN NaN\n" : stops.str());
   ch::runGnuplot(o, "fig_brio_compare.gp");
 }
 
@@ -361,14 +449,16 @@ int main(int argc, char** argv) {
               v.end());
       return v;
     };
+    ch::Values values(o, "sec2_3_5_hilbert");
     figure211(o);
-    figure212(o);
+    figure212(o, values);
     // Every triangulation is checked exactly, outside the timings (about 2 s at 10^6).
-    table22(o, upTo({1000, 10000, 100000, 1000000, 10000000}), 10000000);
+    table22(o, upTo({1000, 10000, 100000, 1000000, 10000000}), 10000000, values);
     depthTable(o, std::min<std::size_t>(maxN, o.quick ? 10000 : 100000));
-    keysVersusSort(o, std::min<std::size_t>(maxN, o.quick ? 100000 : 1000000));
+    keysVersusSort(o, std::min<std::size_t>(maxN, o.quick ? 100000 : 1000000), values);
     brioFigure(o);
-    brioComparison(o, upTo({1000, 10000, 100000, 1000000}), o.quick ? 10000 : 30000, 1000000);
+    brioComparison(o, upTo({1000, 10000, 100000, 1000000}), o.quick ? 10000 : 30000, 1000000, values);
+    values.write();
     return 0;
   });
 }

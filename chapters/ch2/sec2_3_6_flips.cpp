@@ -9,6 +9,7 @@
 //   table_recovery_sizes.*          super-triangle size vs. naive removal, 2.2.1's flips, full rule
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <map>
 #include <random>
 #include <set>
@@ -16,6 +17,7 @@
 
 #include "check.h"
 #include "common.h"
+#include "figure_data.h"
 #include "flip.h"
 #include "generators.h"
 #include "hilbert.h"
@@ -48,15 +50,7 @@ bool meshIsDT(const dt::Triangulation& T, std::size_t n) {
 }
 
 // gnuplot helpers: triangles as closed polylines, filled polygons and labels as "set object".
-std::string triData(const std::vector<const dt::Face*>& F) {
-  std::ostringstream s;
-  s.precision(17);
-  for (const dt::Face* f : F) {
-    for (int k = 0; k <= 3; ++k) s << f->V[k % 3]->x << " " << f->V[k % 3]->y << "\n";
-    s << "\n";
-  }
-  return s.str();
-}
+std::string triData(const std::vector<const dt::Face*>& F) { return ch::gnuplotSegs(ch::faceSegs(F)); }
 std::string polygon(int& id, const std::vector<const dt::Vertex*>& P, const char* color) {
   std::ostringstream s;
   s.precision(17);
@@ -74,11 +68,15 @@ std::string segment(const dt::Vertex* a, const dt::Vertex* b, const char* color,
     << " nohead lc rgb \"" << color << "\" lw " << lw << " dt " << dash << " front\n";
   return s.str();
 }
-std::string label(const dt::Vertex* v, const std::string& text, double dx, double dy) {
+// A label beside v where no segment of `segs` crosses it (em: the text height in data units).
+// `taken`: points to keep clear (other vertices, labels placed before); this one is added.
+std::string label(const dt::Vertex* v, const std::string& text, const std::vector<ch::Seg>& segs,
+                  double em, std::size_t chars, std::vector<double>& taken) {
+  const auto [x, y] = ch::labelSpot(v->x, v->y, 0.65 * em, 0.3 * em * double(chars), 0.45 * em, segs, taken);
+  taken.insert(taken.end(), {x, y});
   std::ostringstream s;
   s.precision(17);
-  s << "set label \"" << text << "\" at " << v->x + dx << "," << v->y + dy
-    << " center front font \",13\"\n";
+  s << "set label \"" << text << "\" at " << x << "," << y << " center front\n";
   return s.str();
 }
 
@@ -127,22 +125,23 @@ void figureFlip(const ch::Options& o) {
     // The two faces of the flip, and the four faces around them.
     const dt::Face* g = f->F[k];
     for (const dt::Face* h : {static_cast<const dt::Face*>(f), g}) {
-      obj += polygon(id, {h->V[0], h->V[1], h->V[2]}, "#f4b6c2");
+      // The style's colours: the two faces replaced (cavity), the two made (ball), neighbours.
+      obj += polygon(id, {h->V[0], h->V[1], h->V[2]}, after ? "#b8e0b0" : "#f9c58d");
       for (int j = 0; j < 3; ++j) {
         const dt::Face* n = h->F[j];
         if (n != nullptr && n != f && n != g && !n->isGhost())
-          obj += polygon(id, {n->V[0], n->V[1], n->V[2]}, "#cfe3f7");
+          obj += polygon(id, {n->V[0], n->V[1], n->V[2]}, "#c6dbef");
       }
     }
-    obj += segment(e0, e1, after ? "#1f5fbf" : "#c0392b", 3.5);
+    obj += segment(e0, e1, after ? "#2e7d32" : "#c51b7d", 3.5);
+    const std::vector<ch::Seg> segs = ch::faceSegs(T.finiteFaces());
+    std::vector<double> taken;
     for (int i = 0; i < 4; ++i) {
       const dt::Vertex* v = S[std::size_t(i)];
       const int before = d0.at(v), now = d1.at(v);
-      std::string t = std::string(names[i]) + ": " + std::to_string(before);
-      if (after) t += " → " + std::to_string(now) + " (" + (now > before ? "+" : "") +
-                      std::to_string(now - before) + ")";
-      const double dy = (i == 3) ? -0.45 : 0.45;
-      obj += label(v, t, 0, dy);
+      std::string t = std::string(names[i]) + ": " + std::to_string(after ? now : before);
+      if (after) t += std::string(" (") + (now > before ? "+" : "") + std::to_string(now - before) + ")";
+      obj += label(v, t, segs, 0.45, after ? 9 : 4, taken);
     }
     ch::writeOut(o, stem + ".gp", obj);
     ch::writeOut(o, stem + "_tri.dat", triData(T.finiteFaces()));
@@ -249,25 +248,42 @@ void figureRecovery(const ch::Options& o) {
   std::vector<const dt::Vertex*> hull;
   for (dt::Vertex* v : dt::convexHull(H)) hull.push_back(byId(v->id));
   std::vector<std::string> titles;
+  double vx0, vy0, vx1, vy1;  // the view's side (as in rec_frames.gp), for the label size
+  bbox(p, vx0, vy0, vx1, vy1);
+  const double viewSide = 2 * factor * 0.5 * std::max(vx1 - vx0, vy1 - vy0) * 1.08;
   auto frame = [&](int k, const std::string& title, const dt::Vertex* e0, const dt::Vertex* e1,
                    const dt::Vertex* n0, const dt::Vertex* n1, bool dropSuper) {
     std::string obj;
     int id = 0;
     // conv(S) in pink, the triangles of S in grey on top: pink shows what they miss.
-    obj += polygon(id, hull, "#f2a7a7");
+    // (the style's colours: uncovered hull pink, covered hull pale blue, the removed edge in the
+    // conflict colour, the new one in the ball's)
+    obj += polygon(id, hull, "#f4b6d2");
     for (const dt::Face* f : R.finiteFaces())
       if (f->V[0]->id >= 0 && f->V[1]->id >= 0 && f->V[2]->id >= 0)
-        obj += polygon(id, {f->V[0], f->V[1], f->V[2]}, "#dddddd");
-    if (e0) obj += segment(e0, e1, "#c0392b", 2.5, "2");
-    if (n0) obj += segment(n0, n1, "#1f5fbf", 3);
-    obj += "set title \"" + title + "\"\n";
+        obj += polygon(id, {f->V[0], f->V[1], f->V[2]}, "#dde6f0");
+    if (e0) obj += segment(e0, e1, "#c51b7d", 2.5, "2");
+    if (n0) obj += segment(n0, n1, "#2e7d32", 3);
+    obj += "ftitle = \"" + title + "\"\n";
     std::vector<const dt::Face*> F;
     for (const dt::Face* f : R.finiteFaces())
       if (!dropSuper || (f->V[0]->id >= 0 && f->V[1]->id >= 0 && f->V[2]->id >= 0)) F.push_back(f);
+    // The super-vertices and the four vertices of the frame's flip (its title names them) are
+    // labelled, off this frame's edges; the text em is about 6% of the view. (All nine points
+    // would not fit: some lie closer together than a label is wide.)
+    std::vector<ch::Seg> segs = ch::faceSegs(F);
+    if (e0) segs.push_back({e0->x, e0->y, e1->x, e1->y});
+    std::vector<double> taken;
+    for (const dt::Vertex& v : R.vertices()) taken.insert(taken.end(), {v.x, v.y});
+    for (const dt::Vertex& v : R.vertices()) {
+      if ((dropSuper && v.id < 0) || (v.id >= 0 && &v != e0 && &v != e1 && &v != n0 && &v != n1)) continue;
+      const std::string nm = v.id < 0 ? "p_{" + std::to_string(v.id) + "}" : "p_{" + std::to_string(v.id + 1) + "}";
+      obj += label(&v, nm, segs, 0.06 * viewSide, 3, taken);
+    }
     ch::writeOut(o, "rec_frame_" + std::to_string(k) + ".gp", obj);
     ch::writeOut(o, "rec_frame_" + std::to_string(k) + ".dat", triData(F));
   };
-  frame(0, "DT(S_0 ∪ S): pink = conv(S) not covered", nullptr, nullptr, nullptr, nullptr, false);
+  frame(0, "DT(S_0 ∪ S)", nullptr, nullptr, nullptr, nullptr, false);
   int k = 1;
   for (const auto& e : log) {
     const dt::Vertex *a = byId(e[0]->id), *b = byId(e[1]->id);
@@ -280,14 +296,10 @@ void figureRecovery(const ch::Options& o) {
     auto nm = [](const dt::Vertex* v) {
       return v->id < 0 ? "p_{" + std::to_string(v->id) + "}" : "p_{" + std::to_string(v->id + 1) + "}";
     };
-    const bool notesKind = (e[0]->id < 0) != (e[1]->id < 0) && e[2]->id >= 0 && e[3]->id >= 0;
-    frame(k, "flip " + std::to_string(k) + ": " + nm(a) + nm(b) + " → " + nm(e[2]) + nm(e[3]) +
-                 (notesKind ? " (2.2.1's rule)"
-                  : ((e[0]->id < 0) == (e[1]->id < 0) ? " (other)" : " (super opposite)")), a,
-          b, byId(e[2]->id), byId(e[3]->id), false);
+    frame(k, nm(a) + nm(b) + " → " + nm(e[2]) + nm(e[3]), a, b, byId(e[2]->id), byId(e[3]->id), false);
     ++k;
   }
-  frame(k, "super faces removed: DT(S)", nullptr, nullptr, nullptr, nullptr, true);
+  frame(k, "DT(S)", nullptr, nullptr, nullptr, nullptr, true);
   ++k;
   double x0, y0, x1, y1;
   bbox(p, x0, y0, x1, y1);
@@ -340,17 +352,42 @@ XY hilbertSorted(const XY& p) {
   return q;
 }
 
-void tableMethods(const ch::Options& o) {
+// A list of names as prose: "a", "a and b", "a, b and c" ("none" if empty).
+std::string listing(const std::vector<std::string>& v) {
+  if (v.empty()) return "none";
+  std::string s;
+  for (std::size_t i = 0; i < v.size(); ++i)
+    s += (i == 0 ? "" : (i + 1 == v.size() ? " and " : ", ")) + v[i];
+  return s;
+}
+
+// How many of `sizes` sizes something held for, as prose.
+std::string howMany(int k, int sizes) {
+  if (k == sizes) return "for every size tried";
+  if (k == 0) return "for no size tried";
+  return ch::fmt("for %d of the %d sizes tried", k, sizes);
+}
+
+void tableMethods(const ch::Options& o, ch::Values& v) {
   const std::size_t maxN = o.maxN ? std::size_t(o.maxN) : (o.quick ? 20000 : 200000);
   const std::vector<std::string> fams = {"uniform square", "grid", "circle", "bent line",
                                          "huge circle arc"};
   ch::Table t;
+  // Two tables of the same runs (one would be wider than the book's page): times, then flips
+  // and correctness.
   t.caption = "Two ways to DT(S) on the same points (Hilbert order, walk from the last cavity): "
-              "time ratios to the hull method measured in the same run, and flips";
-  t.header = {"family", "n", "n_h", "hull method (s)", "super + recovery / hull",
-              "of which recovery", "recovery flips", "flips / n_h", "2.2.1-kind flips",
+              "times as ratios to the hull method measured in the same run";
+  t.header = {"family", "n", "hull method (s)", "super-triangles + recovery / hull",
+              "of which recovery / hull", "Lawson from the sweep / hull"};
+  ch::Table f;
+  f.caption = "The same runs: flips, and which method gives DT(S) (super-triangles 10 times the "
+              "box; n_h: hull vertices)";
+  f.header = {"family", "n", "n_h", "recovery flips", "flips / n_h", "2.2.1-kind flips",
               "naive removal is DT(S)", "2.2.1's flips alone give DT(S)", "both exact",
-              "Lawson from sweep / hull", "Lawson flips / n"};
+              "Lawson flips / n"};
+  std::vector<std::string> naiveFail, naiveOk, notesFail;
+  bool allExact = true;
+  double maxFlipsPerHull = 0;
   std::vector<std::size_t> sizes;
   for (std::size_t n = 1000; n <= maxN; n *= 10) sizes.push_back(n);
   ch::Progress prog("2.3.6 methods", fams.size() * sizes.size());
@@ -402,25 +439,46 @@ void tableMethods(const ch::Options& o) {
       const bool naive = meshIsDT(N, np);
       dt::recoverDelaunay(N, dt::RecoveryRule::NotesOnly);
       const bool notes = meshIsDT(N, np);
-      t.add({fam, std::to_string(np), std::to_string(nh), ch::fmt("%.4f", h),
-             ch::fmt("%.2f", s / h), ch::fmt("%.3f", rc / h), std::to_string(fs.flips),
+      t.add({fam, std::to_string(np), ch::fmt("%.4f", h), ch::fmt("%.2f", s / h),
+             ch::fmt("%.3f", rc / h), ch::fmt("%.2f", l / h)});
+      f.add({fam, std::to_string(np), std::to_string(nh), std::to_string(fs.flips),
              ch::fmt("%.2f", double(fs.flips) / double(nh)), std::to_string(fs.notesFlips),
              naive ? "yes" : "no", notes ? "yes" : "no", exact ? "yes" : "NO",
-             ch::fmt("%.2f", l / h), ch::fmt("%.2f", double(ls.flips) / double(np))});
+             ch::fmt("%.2f", double(ls.flips) / double(np))});
+      auto note = [&](std::vector<std::string>& list) {
+        if (std::find(list.begin(), list.end(), fam) == list.end()) list.push_back(fam);
+      };
+      note(naive ? naiveOk : naiveFail);
+      if (!notes) note(notesFail);
+      allExact = allExact && exact;
+      if (fam != "bent line") maxFlipsPerHull = std::max(maxFlipsPerHull, double(fs.flips) / double(nh));
       prog.update(++done);
     }
   t.emit(o, "table_recovery_methods");
+  f.emit(o, "table_recovery_flips");
+  // A family is listed as working only if no size failed.
+  std::vector<std::string> ok;
+  for (const std::string& fam : naiveOk)
+    if (std::find(naiveFail.begin(), naiveFail.end(), fam) == naiveFail.end()) ok.push_back(fam);
+  v.set("s236.methods_naive_fail", listing(naiveFail));
+  v.set("s236.methods_naive_ok", listing(ok));
+  v.set("s236.methods_notes_fail", listing(notesFail));
+  v.verdict("s236.methods_full_exact", allExact, "exact on every input", "NOT exact on some input");
+  v.num("s236.methods_flips_per_hull_max", maxFlipsPerHull, "%.1f");
 }
 
-void tableSizes(const ch::Options& o) {
+void tableSizes(const ch::Options& o, ch::Values& v) {
   ch::Table t;
   t.caption = "Super-triangle size (factor x the bounding box) vs. what recovers DT(S); "
               "n = 2000 points per family";
   t.header = {"family", "factor", "naive removal is DT(S)", "2.2.1's flips alone",
               "full rule: flips", "of 2.2.1's kind", "super opposite", "super-super",
               "S-S", "full rule exact"};
-  for (const std::string fam : {"uniform square", "bent line", "huge circle arc", "circle"})
-    for (double factor : {1.001, 1.1, 2.0, 10.0, 1e3, 1e6}) {
+  const std::vector<double> factors = {1.001, 1.1, 2.0, 10.0, 1e3, 1e6};
+  int allExact = 0, rows = 0;
+  for (const std::string fam : {"uniform square", "bent line", "huge circle arc", "circle"}) {
+    int naiveFails = 0, notesFails = 0;
+    for (double factor : factors) {
       const XY p = hilbertSorted(family(fam, 2000, 37));
       const std::size_t np = p.size() / 2;
       dt::Triangulation N;
@@ -436,7 +494,21 @@ void tableSizes(const ch::Options& o) {
              std::to_string(fs.flips), std::to_string(fs.notesFlips),
              std::to_string(fs.superOpposite), std::to_string(fs.superSuper),
              std::to_string(fs.realReal), c.ok && c.nVertices == np ? "yes" : "NO"});
+      naiveFails += !naive;
+      notesFails += !notes;
+      allExact += c.ok && c.nVertices == np;
+      ++rows;
     }
+    std::string key = fam;
+    for (char& ch : key) ch = ch == ' ' ? '_' : ch;
+    v.set("s236.sizes_naive_fails_" + key, howMany(naiveFails, int(factors.size())));
+    v.set("s236.sizes_notes_fails_" + key, howMany(notesFails, int(factors.size())));
+  }
+  const double big = factors.back();
+  v.set("s236.sizes_factors", ch::fmt("%g", factors.front()) + " to " +
+                                  (big >= 1000 ? ch::fmt("10^%.0f", std::log10(big)) : ch::fmt("%g", big)));
+  v.verdict("s236.sizes_full_exact", allExact == rows, "exact for every size and family tried",
+            "NOT exact on some rows (see the table)");
   t.emit(o, "table_recovery_sizes");
 }
 
@@ -447,7 +519,9 @@ int main(int argc, char** argv) {
     figureFlip(o);
     tableDegrees(o);
     figureRecovery(o);
-    tableSizes(o);
-    tableMethods(o);
+    ch::Values v(o, "sec2_3_6_flips");
+    tableSizes(o, v);
+    tableMethods(o, v);
+    v.write();
   });
 }

@@ -1,36 +1,28 @@
-# Figure 2.1: the Delaunay triangulation DT_n of 15 points (left) and the Delaunay cavity
-# C(DT_n, p_{n+1}) (right): the triangles whose circumcircles contain p_{n+1}, shaded, with
-# those circles dashed. Data (sec2_1_kernel): fig2_1_dtn.dat (triangles), fig2_1_points.dat,
-# fig2_1_p.dat (p_{n+1}), fig2_1_cavity.dat (cavity boundary), fig2_1_circles.dat (x y r).
-if (!exists("datadir")) datadir = "."
-if (!exists("outdir")) outdir = "."
-set size ratio -1
-unset key
-unset border
-unset tics
-set xrange [-0.08:1.08]
-set yrange [-0.08:1.08]
+# Figure 2.1: the Delaunay triangulation DT_n of 15 points (a) and the Delaunay cavity
+# C(DT_n, p_{n+1}) (b): the triangles whose circumcircles (dashed) contain p_{n+1}.
+# Data (sec2_1_kernel): fig2_1_dtn.dat (triangles), fig2_1_points.dat, fig2_1_p.dat
+# (p_{n+1}; columns 3-4: its label's place), fig2_1_cavity.dat (boundary), fig2_1_circles.dat.
+load system("dirname '".ARG0."'")."/style.gp"
+stats datadir."/fig2_1_points.dat" using 1:2 nooutput
+m = 0.06 * (STATS_max_x - STATS_min_x)
+set xrange [STATS_min_x - m:STATS_max_x + m]
+set yrange [STATS_min_y - m:STATS_max_y + m]
 do for [term in "png svg"] {
-  if (term eq "png") {
-    set terminal pngcairo size 1300,680 enhanced font "Sans,14"
-    set output outdir."/fig2_1.png"
-  } else {
-    set terminal svg size 1300,680 enhanced font "Sans,14" background rgb "white"
-    set output outdir."/fig2_1.svg"
-  }
-  set multiplot layout 1,2
-  set title "DT_n: the Delaunay triangulation of n = 15 points"
-  plot datadir."/fig2_1_dtn.dat" with lines lw 1.5 lc rgb "#303030", \
-       datadir."/fig2_1_points.dat" with points pt 7 ps 0.9 lc rgb "black", \
-       datadir."/fig2_1_p.dat" with points pt 7 ps 1.4 lc rgb "#d02020", \
-       datadir."/fig2_1_p.dat" using 1:2:("p_{n+1}") with labels offset 2.2,0.9 tc rgb "#d02020" font ",16"
-  set title "the cavity C(DT_n, p_{n+1}) and its circumcircles"
-  plot datadir."/fig2_1_cavity.dat" with filledcurves closed fc rgb "#f6c88f" fs solid 1.0, \
-       datadir."/fig2_1_dtn.dat" with lines lw 1.5 lc rgb "#303030", \
-       datadir."/fig2_1_cavity.dat" with lines lw 3 lc rgb "#b05a00", \
-       datadir."/fig2_1_circles.dat" using 1:2:3 with circles lw 1.5 dt 2 lc rgb "#2050c0" fs empty, \
-       datadir."/fig2_1_points.dat" with points pt 7 ps 0.9 lc rgb "black", \
-       datadir."/fig2_1_p.dat" with points pt 7 ps 1.4 lc rgb "#d02020", \
-       datadir."/fig2_1_p.dat" using 1:2:("p_{n+1}") with labels offset 2.2,0.9 tc rgb "#d02020" font ",16"
+  eval fig_open(term, "fig2_1")
+  set output (term eq "png" ? outdir."/fig2_1.png" : outdir."/fig2_1.svg")
+  eval layout(1, 2)
+  eval panel(1, "DT_n")
+  plot datadir."/fig2_1_dtn.dat" with lines lw 1.5 lc rgb C_TRI, \
+       datadir."/fig2_1_points.dat" with points pt 7 ps (1.0*PS) lc rgb C_POINT, \
+       datadir."/fig2_1_p.dat" using 1:2 with points pt 7 ps (1.6*PS) lc rgb C_NEW, \
+       datadir."/fig2_1_p.dat" using 3:4:("p_{n+1}") with labels tc rgb C_NEW
+  eval panel(2, "the cavity C(DT_n, p_{n+1})")
+  plot datadir."/fig2_1_cavity.dat" with filledcurves closed fc rgb C_CAVITY fs solid 1.0, \
+       datadir."/fig2_1_circles.dat" using 1:2:3 with circles lw 1.5 dt 2 lc rgb C_CIRCLE fs empty, \
+       datadir."/fig2_1_dtn.dat" with lines lw 1.5 lc rgb C_TRI, \
+       datadir."/fig2_1_cavity.dat" with lines lw 3 lc rgb C_CAVITY_EDGE, \
+       datadir."/fig2_1_points.dat" with points pt 7 ps (1.0*PS) lc rgb C_POINT, \
+       datadir."/fig2_1_p.dat" using 1:2 with points pt 7 ps (1.6*PS) lc rgb C_NEW, \
+       datadir."/fig2_1_p.dat" using 3:4:("p_{n+1}") with labels tc rgb C_NEW
   unset multiplot
 }

@@ -1,69 +1,46 @@
-# Figure 2.3: the Delaunay cavity is star-shaped (the proof of Proposition 2.1.1).
-# Left: the segment from a point q of a cavity triangle Δ_1 to p_{n+1} crosses the triangles
-# Δ_1, ..., Δ_k, all in the cavity (shaded darker); Δ_k contains p_{n+1}.
-# Right: one step. p_{n+1} is inside C_1 (circle of Δ_1) and beyond the edge e_1; the part of
-# C_1 beyond e_1 (shaded) lies inside C_2 (circle of Δ_2), so C_2 contains p_{n+1} too.
+# Figure 2.3: the Delaunay cavity is star-shaped (the proof of Proposition 2.1.1, in the notes'
+# names). (a) The segment from p3 to p_{n+1} crosses the triangles p2p3p4, p2p4p5, p2p5p1 and
+# p1p5p6 (shaded darker), all in the cavity; p1p5p6 contains p_{n+1}.
+# (b) The first step: p_{n+1} is in C_I (circle of p2p3p4) and beyond the line p2p4 (dotted);
+# the part of C_I beyond p2p4 (shaded) lies inside C_J (circle of p2p4p5), so C_J contains
+# p_{n+1} too and p2p4p5 is in the cavity.
 # Data (sec2_1_kernel): fig2_1_dtn.dat, fig2_1_cavity.dat, fig2_3_chain.dat (one index per
-# triangle), fig2_3_labels.dat, fig2_3_segment.dat (q, p), fig2_3_circles.dat (C_1, C_2: x y r),
-# fig2_3_edge.dat (index 0: e_1; index 1: its line), fig2_3_cap.dat.
-if (!exists("datadir")) datadir = "."
-if (!exists("outdir")) outdir = "."
-set size ratio -1
-set style textbox opaque noborder
-unset key
-unset border
-unset tics
+# triangle), fig2_3_names.dat, fig2_3_segment.dat (p3, p_{n+1}), fig2_3_plabel.dat,
+# fig2_3_circles.dat (C_I, C_J: x y r), fig2_3_edge.dat (index 0: p2p4; index 1: its line,
+# clipped to the view of (b)), fig2_3_cap.dat, fig2_3_steptri.dat, fig2_3_steplabels.dat,
+# fig2_3_view.gp (the view of (b)).
+load system("dirname '".ARG0."'")."/style.gp"
+load datadir."/fig2_3_view.gp"
 stats datadir."/fig2_3_chain.dat" nooutput
 nchain = STATS_blocks
-stats datadir."/fig2_1_cavity.dat" using 1 nooutput
-cx0 = STATS_min; cx1 = STATS_max
-stats datadir."/fig2_1_cavity.dat" using 2 nooutput
-cy0 = STATS_min; cy1 = STATS_max
-m = 0.08 * (cx1 - cx0 > cy1 - cy0 ? cx1 - cx0 : cy1 - cy0)
-stats datadir."/fig2_3_circles.dat" using ($1-$3) nooutput
-zx0 = STATS_min
-stats datadir."/fig2_3_circles.dat" using ($2-$3) nooutput
-zy0 = STATS_min
-stats datadir."/fig2_3_circles.dat" using ($1+$3) nooutput
-zx1 = STATS_max
-stats datadir."/fig2_3_circles.dat" using ($2+$3) nooutput
-zy1 = STATS_max
-zm = 0.05 * (zx1 - zx0)
 do for [term in "png svg"] {
-  if (term eq "png") {
-    set terminal pngcairo size 1400,720 enhanced font "Sans,14"
-    set output outdir."/fig2_3.png"
-  } else {
-    set terminal svg size 1400,720 enhanced font "Sans,14" background rgb "white"
-    set output outdir."/fig2_3.svg"
-  }
-  set multiplot layout 1,2
-  set title "the segment q p_{n+1} crosses Δ_1, ..., Δ_k: all in the cavity"
-  set xrange [cx0-m:cx1+m]
-  set yrange [cy0-m:cy1+m]
-  plot datadir."/fig2_1_cavity.dat" with filledcurves closed fc rgb "#fbe3c4" fs solid 1.0, \
-       for [i=0:nchain-1] datadir."/fig2_3_chain.dat" index i with filledcurves closed fc rgb "#f2a65a" fs solid 1.0, \
-       datadir."/fig2_1_dtn.dat" with lines lw 1.2 lc rgb "#505050", \
-       datadir."/fig2_1_cavity.dat" with lines lw 3 lc rgb "#b05a00", \
-       datadir."/fig2_3_segment.dat" with lines lw 2.5 lc rgb "#d02020", \
-       datadir."/fig2_3_segment.dat" with points pt 7 ps 1.3 lc rgb "#d02020", \
-       datadir."/fig2_3_segment.dat" every ::0::0 using 1:2:("q") with labels boxed offset 0,-1.1 font ",16" tc rgb "#d02020", \
-       datadir."/fig2_3_segment.dat" every ::1::1 using 1:2:("p_{n+1}") with labels boxed offset 0,-1.2 font ",16" tc rgb "#d02020", \
-       datadir."/fig2_3_labels.dat" using 1:2:3 with labels offset -1.5,0 font ",15" tc rgb "#402000"
-  set title "one step: the part of C_i beyond e_i lies inside C_{i+1}, so p_{n+1} ∈ C_{i+1}"
-  set xrange [zx0-zm:zx1+zm]
-  set yrange [zy0-zm:zy1+zm]
-  plot datadir."/fig2_3_cap.dat" with filledcurves closed fc rgb "#f7c0c0" fs solid 1.0, \
-       datadir."/fig2_3_steptri.dat" with lines lw 2 lc rgb "#404040", \
-       datadir."/fig2_3_edge.dat" index 1 with lines lw 1 dt 2 lc rgb "#808080", \
-       datadir."/fig2_3_edge.dat" index 0 with lines lw 4 lc rgb "#b05a00", \
-       datadir."/fig2_3_circles.dat" every ::0::0 using 1:2:3 with circles lw 2 lc rgb "#2050c0" fs empty, \
-       datadir."/fig2_3_circles.dat" every ::1::1 using 1:2:3 with circles lw 2 lc rgb "#2e8b57" fs empty, \
-       datadir."/fig2_3_steplabels.dat" every ::0::1 using 1:2:3 with labels font ",16" tc rgb "#402000", \
-       datadir."/fig2_3_steplabels.dat" every ::2::2 using 1:2:3 with labels offset -1.2,0.6 font ",16" tc rgb "#2050c0", \
-       datadir."/fig2_3_steplabels.dat" every ::3::3 using 1:2:3 with labels offset 1.8,0.6 font ",16" tc rgb "#2e8b57", \
-       datadir."/fig2_3_steplabels.dat" every ::4::4 using 1:2:3 with labels boxed offset 1.5,0 font ",16" tc rgb "#b05a00", \
-       datadir."/fig2_3_segment.dat" every ::1::1 with points pt 7 ps 1.4 lc rgb "#d02020", \
-       datadir."/fig2_3_segment.dat" every ::1::1 using 1:2:("p_{n+1}") with labels boxed offset 0,1.2 font ",16" tc rgb "#d02020"
+  eval fig_open(term, "fig2_3")
+  set output (term eq "png" ? outdir."/fig2_3.png" : outdir."/fig2_3.svg")
+  eval layout(1, 2)
+  eval panel(1, "the segment p_3 p_{n+1}")
+  set xrange [cx0:cx1]
+  set yrange [cy0:cy1]
+  plot datadir."/fig2_1_cavity.dat" with filledcurves closed fc rgb C_CAVITY fs transparent solid 0.45, \
+       for [i=0:nchain-1] datadir."/fig2_3_chain.dat" index i with filledcurves closed fc rgb C_CAVITY fs solid 1.0, \
+       datadir."/fig2_1_dtn.dat" with lines lw 1.2 lc rgb C_TRI, \
+       datadir."/fig2_1_cavity.dat" with lines lw 3 lc rgb C_CAVITY_EDGE, \
+       datadir."/fig2_3_segment.dat" with lines lw 2.5 lc rgb C_NEW, \
+       datadir."/fig2_3_segment.dat" every ::1::1 with points pt 7 ps (1.5*PS) lc rgb C_NEW, \
+       datadir."/fig2_3_plabel.dat" using 1:2:("p_{n+1}") with labels tc rgb C_NEW, \
+       datadir."/fig2_3_names.dat" using 1:2:3 with labels tc rgb C_TRI
+  eval panel(2, "one step: C_I beyond p_2p_4 lies in C_J")
+  set xrange [zx0:zx1]
+  set yrange [zy0:zy1]
+  plot datadir."/fig2_3_cap.dat" with filledcurves closed fc rgb C_CAVITY fs solid 1.0, \
+       datadir."/fig2_3_steptri.dat" with lines lw 2 lc rgb C_TRI, \
+       datadir."/fig2_3_edge.dat" index 1 with lines lw 1.5 dt 3 lc rgb C_CONSTRUCT, \
+       datadir."/fig2_3_edge.dat" index 0 with lines lw 4 lc rgb C_CAVITY_EDGE, \
+       datadir."/fig2_3_segment.dat" with lines lw 2 lc rgb C_NEW, \
+       datadir."/fig2_3_circles.dat" every ::0::0 using 1:2:3 with circles lw 2 lc rgb C_CIRCLE fs empty, \
+       datadir."/fig2_3_circles.dat" every ::1::1 using 1:2:3 with circles lw 2 dt 2 lc rgb C_BALL_EDGE fs empty, \
+       datadir."/fig2_3_steplabels.dat" every ::0::0 using 1:2:3 with labels tc rgb C_CIRCLE, \
+       datadir."/fig2_3_steplabels.dat" every ::1::1 using 1:2:3 with labels tc rgb C_BALL_EDGE, \
+       datadir."/fig2_3_steplabels.dat" every ::2 using 1:2:3 with labels tc rgb C_TRI, \
+       datadir."/fig2_3_segment.dat" every ::1::1 with points pt 7 ps (1.5*PS) lc rgb C_NEW
   unset multiplot
 }

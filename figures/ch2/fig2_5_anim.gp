@@ -1,36 +1,58 @@
 # Animation of Figure 2.5's insertions: frame 00 is DT_0; then, for each point p_i, the cavity
-# C(DT_{i-1}, p_i) (shaded orange, in DT_{i-1}) and the ball B(DT_{i-1}, p_i) (shaded green, in
-# DT_i). PNG frames fig2_5_anim_NN.png; sec2_2_bowyer_watson joins them into fig2_5_anim.gif.
-# Data (sec2_2_bowyer_watson): fig2_5_anim_NN_{tri,fill,p}.dat, fig2_5_anim_{titles,count}.dat,
-# fig2_5_super.dat, fig2_5_points.dat.
-if (!exists("datadir")) datadir = "."
-if (!exists("outdir")) outdir = "."
-set size ratio -1
-set style textbox opaque noborder
-unset key
-unset border
-unset tics
+# C(DT_{i-1}, p_i) (shaded, in DT_{i-1}, with the circumcircles that contain p_i) and the ball
+# B(DT_{i-1}, p_i) (shaded, in DT_i). Every inserted point is labelled. PNG frames
+# fig2_5_anim_NN.png, and the animated GIF fig2_5_anim.gif written by gnuplot's own gif terminal
+# (libgd; no other program needed), which holds the last frame longer.
+# Data (sec2_2_bowyer_watson): fig2_5_anim_NN_{tri,fill,p,circles}.dat,
+# fig2_5_anim_{titles,count}.dat, fig2_5_super.dat, fig2_5_points.dat.
+load system("dirname '".ARG0."'")."/style.gp"
 stats datadir."/fig2_5_anim_count.dat" using 1 nooutput
 nframes = int(STATS_max)
-stats datadir."/fig2_5_super.dat" using 1 nooutput
-x0 = STATS_min; x1 = STATS_max
-stats datadir."/fig2_5_super.dat" using 2 nooutput
-y0 = STATS_min; y1 = STATS_max
-m = 0.09 * (x1 - x0)
-set xrange [x0-m:x1+m]
-set yrange [y0-m:y1+m]
-set terminal pngcairo size 700,720 enhanced font "Sans,14"
-do for [f=0:nframes-1] {
-  set output outdir.sprintf("/fig2_5_anim_%02d.png", f)
+stats datadir."/fig2_5_super.dat" using 1:2 nooutput
+m = 0.08 * (STATS_max_x - STATS_min_x)
+set xrange [STATS_min_x-m:STATS_max_x+m]
+set yrange [STATS_min_y-m:STATS_max_y+m]
+# The legend: colour boxes below the picture.
+set key outside bottom center horizontal samplen 1.5 width 1
+set tmargin 2.5
+W = figw("fig2_5_anim"); H = figh("fig2_5_anim")
+# Pass 0 writes one PNG per frame; pass 1 writes the same frames into one animated GIF (the last
+# one three more times, so the finished triangulation stays on screen before the loop restarts).
+do for [pass=0:1] {
+  if (pass == 1) {
+    # libgd's fonts are in points at 96 dpi like pngcairo's.
+    eval sprintf("set terminal gif animate delay 90 loop 0 size %d,%d enhanced font 'DejaVuSans,%.1f' background rgb 'white'", W, H, fig_font("png", W))
+    set output outdir."/fig2_5_anim.gif"
+  }
+  do for [g=0:nframes-1+3*pass] {
+  f = (g < nframes) ? g : nframes - 1
+  if (pass == 0) {
+    eval fig_open("png", "fig2_5_anim")
+    set output outdir.sprintf("/fig2_5_anim_%02d.png", f)
+  }
   set title system(sprintf("sed -n '%dp' '%s/fig2_5_anim_titles.dat'", f + 1, datadir))
   stem = datadir.sprintf("/fig2_5_anim_%02d", f)
-  fillc = (f % 2 == 1) ? "#f6c88f" : "#b7e1b5"
+  # Cavity frames are odd, ball frames even (frame 0: DT_0). Each colour is its own plot
+  # element, filtered by the frame's parity: gnuplot's gif terminal keeps the first colour an
+  # element had through the whole animation.
+  cav = (f % 2 == 1); bal = (f > 0 && f % 2 == 0)
   npoints = (f + 1) / 2
-  plot (f == 0 ? stem."_tri.dat" : stem."_fill.dat") using 1:2 with filledcurves closed fc rgb (f == 0 ? "white" : fillc) fs solid 1.0, \
-       stem."_tri.dat" with lines lw 1.5 lc rgb "#303030", \
-       datadir."/fig2_5_super.dat" using 1:($2 > 0.5 ? $2 + 0.5 * m : $2 - 0.5 * m):3 with labels boxed font ",13" tc rgb "#2050c0", \
-       datadir."/fig2_5_points.dat" using 1:2 with points pt 6 ps 1.1 lc rgb "#909090", \
-       datadir."/fig2_5_points.dat" using 1:($0 < npoints ? $2 : NaN) with points pt 7 ps 1.1 lc rgb "#303030", \
-       (f == 0 ? datadir."/fig2_5_super.dat" : stem."_p.dat") using 1:(f == 0 ? NaN : $2) with points pt 7 ps 1.8 lc rgb "#d02020", \
-       (f == 0 ? datadir."/fig2_5_super.dat" : stem."_p.dat") using 1:(f == 0 ? NaN : $2):3 with labels boxed offset 1.8,0.9 font ",15" tc rgb "#d02020"
+  plot (f == 0 ? datadir."/fig2_5_super.dat" : stem."_fill.dat") using 1:(cav ? $2 : NaN) with filledcurves closed fc rgb C_CAVITY fs solid 1.0 notitle, \
+       (f == 0 ? datadir."/fig2_5_super.dat" : stem."_fill.dat") using 1:(bal ? $2 : NaN) with filledcurves closed fc rgb C_BALL fs solid 1.0 notitle, \
+       stem."_circles.dat" using 1:2 with lines lw 1.5 dt 2 lc rgb C_CIRCLE notitle, \
+       stem."_tri.dat" with lines lw 1.5 lc rgb C_TRI notitle, \
+       (f == 0 ? datadir."/fig2_5_super.dat" : stem."_fill.dat") using 1:(cav ? $2 : NaN) with lines lw 2.5 lc rgb C_CAVITY_EDGE notitle, \
+       (f == 0 ? datadir."/fig2_5_super.dat" : stem."_fill.dat") using 1:(bal ? $2 : NaN) with lines lw 2.5 lc rgb C_BALL_EDGE notitle, \
+       datadir."/fig2_5_super.dat" using 1:2 with points pt 5 ps (1.2*PS) lc rgb C_SUPER notitle, \
+       datadir."/fig2_5_super.dat" using 16:17:3 with labels tc rgb C_SUPER notitle, \
+       datadir."/fig2_5_points.dat" using 1:2 with points pt 6 ps (1.2*PS) lc rgb "#808080" notitle, \
+       datadir."/fig2_5_points.dat" using 1:($0 < npoints ? $2 : NaN) with points pt 7 ps (1.2*PS) lc rgb C_POINT notitle, \
+       datadir."/fig2_5_points.dat" using 16:($0 < npoints ? $17 : NaN):3 with labels tc rgb C_TRI notitle, \
+       (f == 0 ? datadir."/fig2_5_super.dat" : stem."_p.dat") using 1:(f == 0 ? NaN : $2) with points pt 7 ps (1.8*PS) lc rgb C_NEW notitle, \
+       NaN with boxes fs solid 1.0 fc rgb C_CAVITY title "cavity", \
+       NaN with boxes fs solid 1.0 fc rgb C_BALL title "ball", \
+       NaN with lines lw 1.5 dt 2 lc rgb C_CIRCLE title "circumcircles", \
+       NaN with points pt 7 ps (1.8*PS) lc rgb C_NEW title "new point"
+  }
+  set output
 }

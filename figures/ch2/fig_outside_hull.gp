@@ -1,27 +1,24 @@
-# Section 2.2.2: a point outside the current hull. Data from sec2_2_2_outside_hull:
-# out{hull,line}_{before,after}.{gp,dat}, *_points.dat, *_q.dat.
-# Top: a point seeing several hull edges. Bottom: a point on the line of a hull edge.
-set encoding utf8
+# Section 2.2.2: a point p outside the current hull, before (cavity) and after (new triangles).
+# Data from sec2_2_2_outside_hull: out{hull,line}_{before,after}.{gp,dat}, *_view.gp (one view
+# per row: before and after share a scale), *_points.dat, *_q.dat.
+# (a)-(b): a point seeing hull edges; (c)-(d): a point on the line of a hull edge.
+load system("dirname '".ARG0."'")."/style.gp"
 do for [t in "png svg"] {
-  if (t eq "png") {
-    set terminal pngcairo size 1300,1150 font "Sans,11"
-    set output outdir.'/fig_outside_hull.png'
-  } else {
-    set terminal svg size 1300,1150 font "Sans,11"
-    set output outdir.'/fig_outside_hull.svg'
-  }
-  set multiplot layout 2,2
-  unset key; unset border; unset xtics; unset ytics
-  set size ratio -1
-  set offsets graph 0.05, graph 0.05, graph 0.05, graph 0.05
+  eval fig_open(t, "fig_outside_hull")
+  set output (t eq "png" ? outdir.'/fig_outside_hull.png' : outdir.'/fig_outside_hull.svg')
+  eval layout(2, 2)
+  k = 0
   do for [s in "outhull outline"] {
+    load datadir.'/'.s.'_view.gp'
     do for [w in "before after"] {
+      k = k + 1
       load datadir.'/'.s.'_'.w.'.gp'
-      plot datadir.'/'.s.'_'.w.'.dat' with lines lc rgb "#777777" lw 1, \
-           datadir.'/'.s.'_points.dat' with points pt 7 ps 0.7 lc rgb "black", \
-           datadir.'/'.s.'_q.dat' with points pt 7 ps 1.6 lc rgb "#c0392b", \
-           datadir.'/'.s.'_q.dat' using 1:2:("p") with labels offset 1.2,0.6 font ",13"
-      unset object; unset label; unset arrow
+      eval panel(k, ftitle)
+      plot datadir.'/'.s.'_'.w.'.dat' with lines lc rgb C_TRI lw 1.2, \
+           datadir.'/'.s.'_points.dat' with points pt 7 ps (0.8*PS) lc rgb C_POINT, \
+           datadir.'/'.s.'_q.dat' with points pt 7 ps (1.6*PS) lc rgb C_NEW, \
+           datadir.'/'.s.'_q.dat' using 1:2:("p") with labels offset 1.0,0.8 tc rgb C_NEW
+      unset object; unset arrow
     }
   }
   unset multiplot

@@ -192,14 +192,14 @@ inline std::string checkParse(const std::uint8_t* data, std::size_t size) {
         return path + ": message does not start with the file name: " + m;
       continue;
     }
-    if (ps.xy.size() != 2 * ps.size() || ps.line.size() != ps.size())
+    if (ps.xy.size() % 2 != 0 || (ps.size() > 0 && ps.lineRuns.empty()))
       return path + ": inconsistent sizes";
     if (ps.firstIndex != 0 && ps.firstIndex != 1) return path + ": bad numbering base";
     for (std::size_t i = 0; i < ps.size(); ++i) {
       if (!std::isfinite(ps.xy[2 * i]) || !std::isfinite(ps.xy[2 * i + 1]))
         return path + ": a parsed coordinate is not finite";
-      if (ps.number[i] != ps.firstIndex + long(i)) return path + ": point numbers do not follow on";
-      if (i > 0 && ps.line[i] <= ps.line[i - 1]) return path + ": line numbers do not increase";
+      if (ps.number(i) != ps.firstIndex + long(i)) return path + ": point numbers do not follow on";
+      if (i > 0 && ps.line(i) <= ps.line(i - 1)) return path + ": line numbers do not increase";
     }
     if (ps.size() <= 40) {
       const std::string e = checkPointSet(ps.xy);

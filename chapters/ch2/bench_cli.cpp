@@ -1,0 +1,181 @@
+// bench_cli: the command line end to end (issue 18). `delaunay2d` reads a .node file of
+// uniform points, triangulates, checks the result exactly and writes the .ele; beside it, when
+// CGAL is installed, a CGAL program reads the same file with iostreams and triangulates it
+// (Delaunay_triangulation_2, range insertion). Runs alternate (CLI, CGAL, CLI, CGAL, ...), each
+// a child process: wall time, CPU time (user + system) and peak resident memory (ru_maxrss,
+// from wait4) are its own. Writes table_bench_cli.{md,csv,html}; the ratios are to CGAL.
+//
+//   bench_cli [--out DIR] [--quick] [--max-n N] [--reps R]
+//     --quick     10^5 points, one repetition
+//     --max-n N   the number of points (default 10^6)
+//     --reps R    runs of each program, alternating; the median is kept (default 5)
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "common.h"
+#include "generators.h"
+
+#ifdef DT_HAVE_CGAL
+#include <CGAL/Delaunay_triangulation_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#endif
+
+namespace {
+
+#ifdef DT_HAVE_CGAL
+// The CGAL reference, run as `bench_cli --cgal-read FILE`: the .node file read with iostreams
+// (header, then number x y [attributes] [marker]), the points triangulated by range insertion.
+int cgalReadAndTriangulate(const char* path) {
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  std::ifstream in(path);
+  long n = 0, dim = 0, nattr = 0, nmark = 0;
+  if (!(in >> n >> dim >> nattr >> nmark) || dim != 2) return 2;
+  std::vector<K::Point_2> pts;
+  pts.reserve(std::size_t(n));
+  for (long i = 0; i < n; ++i) {
+    long num;
+    double x, y, skip;
+    if (!(in >> num >> x >> y)) return 2;
+    for (long k = 0; k < nattr + nmark; ++k) in >> skip;
+    pts.emplace_back(x, y);
+  }
+  CGAL::Delaunay_triangulation_2<K> dt;
+  dt.insert(pts.begin(), pts.end());
+  std::printf("%zu faces\n", std::size_t(dt.number_of_faces()));
+  return 0;
+}
+#endif
+
+struct Run {
+  bool ok = false;
+  double wall = 0, cpu = 0;
+  double peakMB = 0;
+};
+
+// Runs argv as a child process, its output to /dev/null; measures it.
+Run runChild(const std::vector<std::string>& args) {
+  std::vector<char*> argv;
+  for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  std::cout.flush();
+  const auto t0 = std::chrono::steady_clock::now();
+  const pid_t pid = fork();
+  if (pid < 0) return {};
+  if (pid == 0) {
+    if (!std::freopen("/dev/null", "w", stdout)) _exit(127);
+    execv(argv[0], argv.data());
+    _exit(127);
+  }
+  int status = 0;
+  struct rusage ru;
+  std::memset(&ru, 0, sizeof ru);
+  wait4(pid, &status, 0, &ru);
+  Run r;
+  r.wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  r.cpu = double(ru.ru_utime.tv_sec + ru.ru_stime.tv_sec) +
+          1e-6 * double(ru.ru_utime.tv_usec + ru.ru_stime.tv_usec);
+  r.peakMB = double(ru.ru_maxrss) / 1024.0;
+  r.ok = WIFEXITED(status) && WEXITSTATUS(status) == 0;
+  return r;
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v.empty() ? 0 : v[v.size() / 2];
+}
+
+std::string selfDir() {
+  char buf[4096];
+  const ssize_t k = readlink("/proc/self/exe", buf, sizeof buf - 1);
+  if (k <= 0) return ".";
+  std::string s(buf, std::size_t(k));
+  return s.substr(0, s.rfind('/'));
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+#ifdef DT_HAVE_CGAL
+  if (argc == 3 && std::strcmp(argv[1], "--cgal-read") == 0) return cgalReadAndTriangulate(argv[2]);
+  const bool haveCgal = true;
+#else
+  const bool haveCgal = false;
+#endif
+  return ch::runMain(argc, argv, "bench_cli", [&](const ch::Options& o) {
+    int reps = o.quick ? 1 : 5;
+    for (std::size_t i = 0; i < o.rest.size(); ++i) {
+      if (o.rest[i] == "--reps" && i + 1 < o.rest.size()) {
+        reps = std::max(1, std::atoi(o.rest[++i].c_str()));
+      } else {
+        std::cerr << "bench_cli: unknown option " << o.rest[i] << "\n";
+        return 2;
+      }
+    }
+    const std::size_t n = o.maxN > 0 ? std::size_t(o.maxN) : (o.quick ? 100000 : 1000000);
+    const std::string cli = selfDir() + "/delaunay2d";
+    const std::string input = o.out + "/bench_cli_points.node", out = o.out + "/bench_cli_out";
+    {
+      // The file a user would have: numbered points, coordinates written in full (%.17g).
+      const std::vector<double> xy = dt::uniformPoints(n, 18);
+      dt::OutputFiles f;
+      dt::Writer& w = f.open(input);
+      w.put(long(n)).put(" 2 0 0\n");
+      for (std::size_t i = 0; i < n; ++i)
+        w.put(long(i) + 1).put(' ').put(xy[2 * i], 17).put(' ').put(xy[2 * i + 1], 17).put('\n');
+      f.commit();
+    }
+    struct Program {
+      std::string name;
+      std::vector<std::string> args;
+      std::vector<Run> runs;
+    };
+    std::vector<Program> progs = {
+        {"delaunay2d (exact check, .ele written)", {cli, input, "-o", out, "--no-progress"}, {}},
+        {"delaunay2d --no-check", {cli, input, "-o", out, "--no-progress", "--no-check"}, {}}};
+    if (haveCgal)
+      progs.push_back({"CGAL: iostreams + Delaunay_triangulation_2",
+                       {selfDir() + "/bench_cli", "--cgal-read", input}, {}});
+    std::cout << "bench_cli: " << n << " uniform points, " << reps << " alternating runs of "
+              << progs.size() << " programs\n";
+    for (int r = 0; r < reps; ++r)
+      for (Program& p : progs) {
+        const Run x = runChild(p.args);
+        if (!x.ok) throw std::runtime_error(p.name + " failed");
+        p.runs.push_back(x);
+      }
+    std::remove(input.c_str());
+    std::remove((out + ".ele").c_str());
+    auto med = [](const Program& p, double Run::*field) {
+      std::vector<double> v;
+      for (const Run& r : p.runs) v.push_back(r.*field);
+      return median(v);
+    };
+    ch::Table t;
+    t.caption = "The command line end to end, " + std::to_string(n) +
+                " uniform points (.node file, medians of " + std::to_string(reps) +
+                " alternating runs" + (haveCgal ? "; ratios to CGAL)" : "; CGAL not found)");
+    t.header = {"Program", "Wall s", "CPU s", "Peak RSS MB", "Wall / CGAL", "CPU / CGAL",
+                "RSS / CGAL"};
+    const Program* ref = haveCgal ? &progs.back() : nullptr;
+    for (const Program& p : progs) {
+      const double w = med(p, &Run::wall), c = med(p, &Run::cpu), m = med(p, &Run::peakMB);
+      auto ratio = [&](double v, double Run::*field) {
+        return ref ? ch::fmt("%.2f", v / med(*ref, field)) : std::string("-");
+      };
+      t.add({p.name, ch::fmt("%.3f", w), ch::fmt("%.3f", c), ch::fmt("%.1f", m),
+             ratio(w, &Run::wall), ratio(c, &Run::cpu), ratio(m, &Run::peakMB)});
+    }
+    t.emit(o, "table_bench_cli");
+    return 0;
+  });
+}

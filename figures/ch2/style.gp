@@ -1,0 +1,105 @@
+# The figure style of the book (its page: book/figure_style.md). Every script of figures/ch2
+# loads it first:   load dir."/style.gp"   (dir = the script's directory, see below).
+#
+# Sizes: every figure has one fixed size in pixels, in the table FIGSIZES; tests/test_figures.cpp
+# reads the same table and checks every PNG against it. A new figure adds a line here.
+# Fonts: the reference print width is 15 cm; the text em is W/50 px, which is 8.5 pt at
+# 15 cm for any width W (15 cm = 425 pt, so W px -> 425 pt and W/50 px -> 8.5 pt).
+# pngcairo renders 1 pt as 4/3 px (96 dpi) and svg 1 pt as 1 px, hence the two factors below.
+
+if (!exists("datadir")) datadir = "."
+if (!exists("outdir")) outdir = "."
+set encoding utf8
+
+# ---- sizes (name width height) -----------------------------------------------------------
+FIGSIZES = " fig2_1 1400 780" . \
+           " fig2_2 800 840" . \
+           " fig2_3 1400 800" . \
+           " fig2_4 800 840" . \
+           " fig2_5 1500 1080" . \
+           " fig2_5_anim 760 800" . \
+           " fig2_6 1400 780" . \
+           " fig2_7 1400 800" . \
+           " fig2_7_errors 1500 800" . \
+           " fig2_8 1400 800" . \
+           " fig2_9 900 800" . \
+           " fig2_10 1400 780" . \
+           " fig2_11 1400 800" . \
+           " fig2_12 1400 780" . \
+           " fig_brio_compare 1500 900" . \
+           " fig_brio_rounds 1500 640" . \
+           " fig_flip 1400 760" . \
+           " fig_incircle_naive 1400 800" . \
+           " fig_incircle_robust 1400 800" . \
+           " fig_ladder_time 1000 700" . \
+           " fig_outside_hull 1200 1200" . \
+           " fig_parabola_cavity 900 640" . \
+           " fig_recovery_frames 1500 1100" . \
+           " fig_table2_1_search 900 640 "
+
+fig_known(n) = strstrt(FIGSIZES, " ".n." ") > 0
+fig_word(n, k) = int(word(FIGSIZES, words(substr(FIGSIZES, 1, strstrt(FIGSIZES, " ".n." "))) + k))
+figw(n) = fig_word(n, 2)
+figh(n) = fig_word(n, 3)
+# The font size in the terminal's own unit for a figure of width w (see the header).
+fig_font(t, w) = (t eq "svg" ? w / 50.0 : w / 66.6)
+
+# Points: scripts write "ps (1.5*PS)". PS makes a point of size 1 a disc of radius W/233 px
+# (0.65 mm at 15 cm) on both terminals: pngcairo draws size 1 with a radius of 3.15 px whatever
+# the font, the svg terminal with a radius of 0.375 x its font size.
+fig_points(t, w) = (t eq "svg" ? (w / 233.0) / (0.375 * fig_font("svg", w)) : (w / 233.0) / 3.15)
+
+# The command that opens figure `n` on terminal `t` ("png" or "svg"): white background, the
+# style's size and font. The script then sets the output with the file name written out,
+#   set output (term eq "png" ? outdir."/n.png" : outdir."/n.svg")
+# so that chapters/common.h (gnuplotOutputs) knows which files it promises. It sets FS (the font size) for scripts that
+# need a label font relative to the text, e.g. font sprintf(",%g", 1.2 * FS), and FW, FH (the
+# size in pixels).
+fig_open(t, n) = (fig_known(n) ? "" : "print 'style.gp: figure ".n." has no size in FIGSIZES'; exit status 1;") . \
+  sprintf("set terminal %s size %d,%d enhanced font 'Sans,%.1f' background rgb 'white' linewidth %.2f; ", \
+          (t eq "svg" ? "svg" : "pngcairo"), figw(n), figh(n), fig_font(t, figw(n)), figw(n) / 1000.0) . \
+  sprintf("PS = %.3f; ", fig_points(t, figw(n))) . \
+  sprintf("FS = %.1f; FW = %d; FH = %d", fig_font(t, figw(n)), figw(n), figh(n))
+
+# ---- colours: one meaning each, in every figure -------------------------------------------
+C_TRI = "#3c3c3c"            # edges of the triangulation
+C_POINT = "black"            # the points of S
+C_NEW = "#d62728"            # the point being inserted (p_{n+1}, p)
+C_CAVITY = "#f9c58d"         # fill of the Delaunay cavity C
+C_CAVITY_EDGE = "#c65a00"    # its boundary
+C_BALL = "#b8e0b0"           # fill of the Delaunay ball B (the new triangles)
+C_BALL_EDGE = "#2e7d32"      # its boundary / new edges
+C_NEIGH = "#c6dbef"          # fill of the neighbours (outside triangles adjacent to C or B)
+C_NEIGH_EDGE = "#2b63a8"     # their edges, links to them
+C_CONFLICT = "#c51b7d"       # conflicts: wrong signs, crossing edges, removed edges
+C_UNCOVERED = "#f4b6d2"      # the part of the convex hull that no triangle covers
+C_HULL = "#dde6f0"           # a convex hull or polygon, shaded as background
+C_CIRCLE = "#1a3f8f"         # circumcircles (dashed)
+C_SUPER = "#7b3294"          # super-vertices p_{-1}, p_{-2}, ...
+C_CONSTRUCT = "#8c8c8c"      # construction lines (dotted)
+# Sign maps (the notes' colours, 2.3.1): -1 green, 0 yellow, +1 red.
+C_MINUS = "#1a9641"
+C_ZERO = "#ffd700"
+C_PLUS = "#d7191c"
+# Series of charts, in order.
+C_SERIES = "#1f77b4 #d62728 #2ca02c #9467bd #ff7f0e #8c564b"
+
+# ---- geometry panels: equal aspect, no axes ------------------------------------------------
+# (charts undo this with  set border; set tics; set size noratio)
+set size ratio -1
+unset key
+unset border
+unset tics
+set style textbox transparent noborder
+
+# Labels: no box over the geometry; a label sits beside its object, offset by about one
+# character (offset 0.8,0.8 and the like), on the side away from the edges.
+# Panel tags: each panel's title is "(a) short words"; the prose is in the caption. The titles
+# of one row sit at one height (a screen label at the top of the panel's cell), whatever the
+# aspect of each panel:   eval layout(rows, cols)  ...  eval panel(k, "words")  plot ...
+NROWS = 1; NCOLS = 1
+layout(r, c) = sprintf("NROWS = %d; NCOLS = %d; set multiplot layout %d,%d; set tmargin 2.5", r, c, r, c)
+panel(k, text) = sprintf("unset title; set label 100 \"(%s) %s\" at screen %.4f, %.4f center front",   word("a b c d e f g h i j k l", k), text, ((k - 1) % NCOLS + 0.5) / NCOLS, 1 - (int((k - 1) / NCOLS) + 0.0) / NROWS - FW / (50.0 * FH))
+
+# A sign map's colour bar: three boxes with the ticks -1, 0, +1 at their centres.
+sign_bar = "set palette defined (-1.5 '".C_MINUS."', -0.5 '".C_MINUS."', -0.5 '".C_ZERO."', 0.5 '".C_ZERO."', 0.5 '".C_PLUS."', 1.5 '".C_PLUS."'); set cbrange [-1.5:1.5]; set cbtics ('-1' -1, '0' 0, '+1' 1) scale 0; set colorbox"
