@@ -190,7 +190,7 @@ TEST_CASE("bad input usage errors and unwritable output give an exit status and 
   CHECK_FALSE(dttest::fileExists(out + ".ele"));
 }
 
-TEST_CASE("bad input: devices are refused, named pipes are read") {
+TEST_CASE("bad input devices are refused and named pipes are read") {
   dttest::CliResult r = dttest::runCli("/dev/zero -o '" + dttest::tmpPath("zero_out") + "'");
   CHECK(r.status == 2);
   CHECK(r.err == "delaunay2d: /dev/zero: is a character device, not a point file (a regular file "
@@ -207,7 +207,7 @@ TEST_CASE("bad input: devices are refused, named pipes are read") {
   std::remove(fifo.c_str());
 }
 
-TEST_CASE("bad input: binary data in the first block is named before any field is parsed") {
+TEST_CASE("bad input binary data in the first block is named before any field is parsed") {
   // Line 2 is not a number, but line 3 shows the file is not text: the binary data is reported.
   std::string text = "0 0\nPNG IHDR\n";
   text += '\0';
@@ -216,7 +216,7 @@ TEST_CASE("bad input: binary data in the first block is named before any field i
   expectRefused(b);
 }
 
-TEST_CASE("bad input: peak memory does not grow with the attributes of a line") {
+TEST_CASE("bad input peak memory does not grow with the attributes of a line") {
   // 4000 points with 1000 attributes each (8 MB of text): held one line at a time.
   std::string text = "4000 2 1000 0\n";
   std::string attrs;

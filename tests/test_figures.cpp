@@ -290,7 +290,7 @@ std::vector<fs::path> outputs(const fs::path& dir, const std::string& ext) {
 
 // ---- the checkers can fail -----------------------------------------------------------------
 
-TEST_CASE("figures: the UTF-8 check rejects a raw Latin-1 byte and accepts UTF-8") {
+TEST_CASE("figures the UTF-8 check rejects a raw Latin-1 byte and accepts UTF-8") {
   CHECK(utf8Error("N \xe2\x88\x9d n") == "");          // ∝
   CHECK(utf8Error("N {/Symbol \xb5} n") != "");        // what the Symbol font escape wrote
   CHECK(utf8Error("\xc0\xaf") != "");                  // overlong '/'
@@ -298,7 +298,7 @@ TEST_CASE("figures: the UTF-8 check rejects a raw Latin-1 byte and accepts UTF-8
   CHECK(utf8Error("\xe2\x88") != "");                  // truncated
 }
 
-TEST_CASE("figures: the XML check rejects what is not well formed") {
+TEST_CASE("figures the XML check rejects what is not well formed") {
   CHECK(xmlError("<?xml version=\"1.0\"?>\n<svg a=\"1\"><g><text>x &amp; y</text></g><!-- c --></svg>\n") == "");
   CHECK(xmlError("<svg><g></svg></g>") != "");              // crossed
   CHECK(xmlError("<svg><g></g>") != "");                    // not closed
@@ -309,12 +309,12 @@ TEST_CASE("figures: the XML check rejects what is not well formed") {
   CHECK(xmlError("") != "");                                // no root
 }
 
-TEST_CASE("figures: the background check tells a white SVG from a transparent one") {
+TEST_CASE("figures the background check tells a white SVG from a transparent one") {
   CHECK(whiteBackground("<svg>\n<g id=\"gnuplot_canvas\">\n<rect x=\"0\" y=\"0\" width=\"200\" height=\"100\" fill=\"#ffffff\"/>"));
   CHECK_FALSE(whiteBackground("<svg>\n<g id=\"gnuplot_canvas\">\n<rect x=\"0\" y=\"0\" width=\"200\" height=\"100\" fill=\"none\"/>"));
 }
 
-TEST_CASE("figures: the PNG and GIF size readers read the header and reject other files") {
+TEST_CASE("figures the PNG and GIF size readers read the header and reject other files") {
   std::string png("\x89PNG\r\n\x1a\n\0\0\0\x0dIHDR\0\0\x05\x78\0\0\x03\x20", 24);
   CHECK(pngSize(png) == std::make_pair(1400, 800));
   png[13] = 'X';
@@ -326,7 +326,7 @@ TEST_CASE("figures: the PNG and GIF size readers read the header and reject othe
   CHECK(styleName("fig2_10.png", sizes) == "fig2_10");
 }
 
-TEST_CASE("figures: style.gp gives a size to every figure the book embeds") {
+TEST_CASE("figures style.gp gives a size to every figure the book embeds") {
   const auto sizes = styleSizes();
   REQUIRE(sizes.size() >= 20);
   for (const std::string& name : embeddedFigures())
@@ -335,7 +335,7 @@ TEST_CASE("figures: style.gp gives a size to every figure the book embeds") {
 
 // ---- the outputs of a run ------------------------------------------------------------------
 
-TEST_CASE("figures: every figure the book embeds is written by the chapter programs") {
+TEST_CASE("figures every figure the book embeds is written by the chapter programs") {
   const Run& run = figureRun();
   for (const std::string& f : run.failures) FAIL_CHECK("chapter program failed: " << f);
   const auto names = embeddedFigures();
@@ -347,7 +347,7 @@ TEST_CASE("figures: every figure the book embeds is written by the chapter progr
   }
 }
 
-TEST_CASE("figures: every SVG is well-formed XML in UTF-8 with a white background") {
+TEST_CASE("figures every SVG is well-formed XML in UTF-8 with a white background") {
   const Run& run = figureRun();
   const auto svgs = outputs(run.dir, ".svg");
   REQUIRE(svgs.size() >= 20);
@@ -362,7 +362,7 @@ TEST_CASE("figures: every SVG is well-formed XML in UTF-8 with a white backgroun
   }
 }
 
-TEST_CASE("figures: every PNG and the GIF have the size figures/ch2/style.gp gives") {
+TEST_CASE("figures every PNG and the GIF have the size figures/ch2/style.gp gives") {
   const Run& run = figureRun();
   const auto sizes = styleSizes();
   REQUIRE(sizes.size() >= 20);
