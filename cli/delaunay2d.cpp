@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <iostream>
 #include <cmath>
@@ -26,6 +27,7 @@
 #include "io.h"
 #include "predicates.h"
 #include "fast_delaunay.h"
+#include "fast_parallel.h"
 #include "flip.h"
 #include "hilbert.h"
 #include "triangulate.h"
@@ -53,6 +55,8 @@ const char* kUsage =
     "  --kernel K     'fast' (default: code/fast_delaunay.h, index arrays, inlined filters,\n"
     "                 its own BRIO/Hilbert order) or 'listings' (the corrected Listings 2.4-2.7);\n"
     "                 both give the exact DT(S); --method super always uses the listings\n"
+    "  --threads N    threads of the fast kernel with --order brio (default: all cores;\n"
+    "                 1: the sequential kernel); the same exact DT(S), see the parallel page\n"
     "  --progress     report progress on stderr (default: only when stderr is a terminal)\n"
     "  --no-progress  never report progress\n"
     "  -h, --help     this help\n"
@@ -69,6 +73,7 @@ struct Options {
   // parabola) cost O(n) per insertion, BRIO's random rounds do not (sec2_3_5_hilbert).
   std::string order = "brio";
   int progress = -1;         // --progress 1, --no-progress 0, default -1: if stderr is a tty
+  int threads = dt::defaultThreadCount();  // --threads N (fast kernel, BRIO order)
 };
 
 [[noreturn]] void usageError(const std::string& why) {
@@ -114,6 +119,14 @@ const OptionSpec kOptions[] = {
      [](Options& o, const std::string&) { o.progress = 1; }},
     {"--no-progress", nullptr, false, "--progress",
      [](Options& o, const std::string&) { o.progress = 0; }},
+    {"--threads", nullptr, true, "--threads",
+     [](Options& o, const std::string& v) {
+       char* end = nullptr;
+       const long t = std::strtol(v.c_str(), &end, 10);
+       if (v.empty() || *end != '\0' || t < 1 || t > 1024)
+         usageError("--threads must be an integer from 1 to 1024, not '" + v + "'");
+       o.threads = int(t);
+     }},
 };
 
 // Progress on stderr for long runs: the phase, and while the listings insert, the points
@@ -379,7 +392,8 @@ int main(int argc, char** argv) {
       progress.phase("triangulating " + std::to_string(n) + " points (fast kernel)");
       progress.startInsertion();
       const auto t0 = std::chrono::steady_clock::now();
-      dt::FastResult fr = dt::fastDelaunay(ps.xy, fo);
+      dt::FastResult fr = dt::fastDelaunayParallel(
+          ps.xy, fo.order == dt::FastOrder::RadixBrio ? opt.threads : 1, fo);
       seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       std::vector<double>().swap(ps.xy);  // fr.points holds them, in insertion order
       tri = std::move(fr.tri);

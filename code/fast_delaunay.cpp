@@ -26,12 +26,14 @@ struct InlinePredicates {
     int stage = pred::kFilter;
     const int s = pred::orient2d(a[0], a[1], b[0], b[1], c[0], c[1], stage);
     if (__builtin_expect(stage == pred::kExact, 0)) ++st->exactOrient;
+    if (__builtin_expect(stage == pred::kExtended, 0)) ++st->extendedOrient;
     return s;
   }
   int incircle(const double* a, const double* b, const double* c, const double* d) const {
     int stage = pred::kFilter;
     const int s = pred::incircle(a[0], a[1], b[0], b[1], c[0], c[1], d[0], d[1], stage);
     if (__builtin_expect(stage == pred::kExact, 0)) ++st->exactIncircle;
+    if (__builtin_expect(stage == pred::kExtended, 0)) ++st->extendedIncircle;
     return s;
   }
 };
@@ -458,11 +460,13 @@ FastResult fastDelaunay(const std::vector<double>& xy, const FastOptions& opt) {
       run<CalledPredicates, false, true>(P, orig, res, pred, opt);
     else
       run<CalledPredicates, false, false>(P, orig, res, pred, opt);
-    const PredicateCounters after = predicateCounters();  // GMP calls: exact - small-multiple
-    res.stats.exactOrient = (after.orientExact - after.orientSmallInt) -
-                            (before.orientExact - before.orientSmallInt);
-    res.stats.exactIncircle = (after.incircleExact - after.incircleSmallInt) -
-                              (before.incircleExact - before.incircleSmallInt);
+    const PredicateCounters a = predicateCounters(), &b = before;  // GMP: the rest of exact
+    res.stats.exactOrient = (a.orientExact - a.orientSmallInt - a.orientExtended) -
+                            (b.orientExact - b.orientSmallInt - b.orientExtended);
+    res.stats.exactIncircle = (a.incircleExact - a.incircleSmallInt - a.incircleExtended) -
+                              (b.incircleExact - b.incircleSmallInt - b.incircleExtended);
+    res.stats.extendedOrient = a.orientExtended - b.orientExtended;
+    res.stats.extendedIncircle = a.incircleExtended - b.incircleExtended;
   } else {
     run<InlinePredicates, false, false>(P, orig, res, InlinePredicates{&res.stats}, opt);
   }

@@ -53,6 +53,8 @@ struct FastStats {
   std::uint64_t cavityFaces = 0;  ///< triangles of the cavities, summed
   std::uint64_t exactOrient = 0;  ///< orientation tests that needed GMP (the last stage)
   std::uint64_t exactIncircle = 0;///< incircle tests that needed GMP (the last stage)
+  std::uint64_t extendedOrient = 0;   ///< orientation tests decided by the extended-exponent
+  std::uint64_t extendedIncircle = 0; ///< filter (pred::kExtended), and incircle tests
   double sortSeconds = 0;         ///< computing the insertion order
   double insertSeconds = 0;       ///< the insertions (and the output)
 };

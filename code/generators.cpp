@@ -131,6 +131,60 @@ XY parabolaPoints(std::size_t n, std::uint64_t seed) {
   return p;
 }
 
+XY outlierPoints(std::size_t n, std::uint64_t seed, double far) {
+  if (n == 0) return {};
+  XY p = uniformPoints(n - 1, seed);
+  const std::size_t at = std::size_t(std::mt19937_64(seed + 1)() % n);
+  p.insert(p.begin() + std::ptrdiff_t(2 * at), {far, far});
+  return p;
+}
+
+XY clusterBesideUniform(std::size_t n, std::uint64_t seed, double width) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0, 1);
+  const std::size_t inCluster = n / 10;
+  XY p;
+  p.reserve(2 * n);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (i < inCluster) {
+      p.push_back(0.3 + width * (u(rng) - 0.5));
+      p.push_back(0.7 + width * (u(rng) - 0.5));
+    } else {
+      p.push_back(u(rng));
+      p.push_back(u(rng));
+    }
+  }
+  shufflePoints(p, seed + 1);
+  return p;
+}
+
+XY logRadiusPoints(std::size_t n, std::uint64_t seed, double rmin, double rmax) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0, 1);
+  const double l0 = std::log(rmin), l1 = std::log(rmax);
+  XY p;
+  p.reserve(2 * n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double r = std::exp(l0 + (l1 - l0) * u(rng)), t = 2 * M_PI * u(rng);
+    p.push_back(r * std::cos(t));
+    p.push_back(r * std::sin(t));
+  }
+  return p;
+}
+
+XY exponentSpreadPoints(std::size_t n, std::uint64_t seed, int kmin, int kmax) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::uniform_int_distribution<int> k(kmin, kmax);
+  XY p(2 * n);
+  for (double& v : p) {
+    const int e = k(rng);
+    const double x = std::ldexp(0.5 + u(rng), e);
+    v = rng() & 1 ? x : -x;
+  }
+  return p;
+}
+
 void shufflePoints(XY& p, std::uint64_t seed) {
   std::mt19937_64 rng(seed);
   for (std::size_t i = p.size() / 2; i > 1; --i) {

@@ -52,6 +52,24 @@ XY circlePoints(std::size_t n, double r = 1, std::size_t stride = 1);
 /// n points (x, x^2) with x uniform in [-1, 1): every point is on the hull of the others.
 XY parabolaPoints(std::size_t n, std::uint64_t seed);
 
+/// n - 1 points uniform in [0, 1)^2 and, at a seeded random position of the input, one far
+/// outlier (far, far): the case that leaves a fixed-grid Hilbert order with one crowded cell
+/// (issue 19, section 2.3.5).
+XY outlierPoints(std::size_t n, std::uint64_t seed, double far = 1e12);
+
+/// n points: 90 % uniform in [0, 1)^2, 10 % uniform in a square of side `width` about
+/// (0.3, 0.7), in seeded random order (a dense cluster beside sparse data, 2.3.5).
+XY clusterBesideUniform(std::size_t n, std::uint64_t seed, double width = 1e-9);
+
+/// n points at uniform angles and radii log-uniform in [rmin, rmax] (radius drawn first):
+/// densities over 24 orders of magnitude for the defaults (2.3.5).
+XY logRadiusPoints(std::size_t n, std::uint64_t seed, double rmin = 1e-6, double rmax = 1e6);
+
+/// n points whose coordinates are each +-(1/2 + U[0, 1)) 2^k, k uniform in [kmin, kmax], drawn
+/// x then y as (k, U, sign): exponents spread over the whole double range for the defaults, the
+/// inputs on which the filters overflow or underflow (2.3.1, the extended-exponent stage).
+XY exponentSpreadPoints(std::size_t n, std::uint64_t seed, int kmin = -1070, int kmax = 1019);
+
 /// Shuffles the points (not the coordinates) uniformly: Fisher-Yates, seeded.
 void shufflePoints(XY& p, std::uint64_t seed);
 

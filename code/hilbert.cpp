@@ -233,9 +233,8 @@ struct HilbertTables {
   }
 };
 
-std::uint64_t hilbertIndexByTable(std::uint32_t i, std::uint32_t j, int depth) {
+std::uint64_t hilbertIndexByTable(std::uint32_t i, std::uint32_t j, int depth, int& s) {
   static const HilbertTables T;
-  int s = 0;  // red = +x, blue = +y
   std::uint64_t key = 0;
   int l = depth;
   for (; l % 4 != 0; --l) {
@@ -251,20 +250,35 @@ std::uint64_t hilbertIndexByTable(std::uint32_t i, std::uint32_t j, int depth) {
   return key;
 }
 
+// The cells of one box: cellOf with its powers of two computed once (t 2^depth is exact, so the
+// cells are equal to cellOf's).
+struct BoxCells {
+  HilbertBox box;
+  int depth;
+  double scale, top;
+  BoxCells(const HilbertBox& b, int d)
+      : box(b), depth(d), scale(std::ldexp(1.0, d)), top(std::ldexp(1.0, d) - 1) {}
+  std::uint32_t cell(double v, double lo) const {
+    if (!(box.halfSide > 0)) return 0;
+    const double c = std::floor((v / 2 - lo / 2) / box.halfSide * scale);
+    return std::uint32_t(c < top ? c : top);
+  }
+  // The key of point k on the curve that starts in `state`; `state` becomes the cell's state.
+  std::uint64_t key(const std::vector<double>& xy, std::size_t k, int& state) const {
+    return hilbertIndexByTable(cell(xy[2 * k], box.xmin), cell(xy[2 * k + 1], box.ymin), depth,
+                               state);
+  }
+};
+
 // Calls f(k, key of point k) for every point, keys equal to hilbertKeys'.
 template <class F>
 void forEachKey(const std::vector<double>& xy, int depth, F f) {
-  const HilbertBox box = hilbertBox(xy);  // also refuses NaN and infinities
+  const BoxCells cells(hilbertBox(xy), depth);  // the box also refuses NaN and infinities
   const std::size_t n = xy.size() / 2;
-  // cellOf with its powers of two computed once: t 2^depth is exact, so the cells are equal.
-  const double scale = std::ldexp(1.0, depth), top = scale - 1;
-  const bool flat = !(box.halfSide > 0);
-  auto cell = [&](double v, double lo) {
-    const double c = std::floor((v / 2 - lo / 2) / box.halfSide * scale);
-    return flat ? 0u : std::uint32_t(c < top ? c : top);
-  };
-  for (std::size_t k = 0; k < n; ++k)
-    f(k, hilbertIndexByTable(cell(xy[2 * k], box.xmin), cell(xy[2 * k + 1], box.ymin), depth));
+  for (std::size_t k = 0; k < n; ++k) {
+    int state = 0;  // red = +x, blue = +y
+    f(k, cells.key(xy, k, state));
+  }
 }
 
 int bitsFor(std::size_t n) {  // smallest b with n <= 2^b
@@ -295,13 +309,97 @@ void radixSort(std::vector<std::uint64_t>& a, int lo, int hi) {
   }
 }
 
+//! [adaptiveHilbert]
+// The adaptive refinement. A fixed grid over the bounding box puts a dense cluster, or all the
+// points but one far outlier, into a single cell, and a cell's points come in input order: a
+// random order, for which walks are long. So every cell that holds more than a few points is
+// ordered again, by the same curve over the bounding box of its own points, started in the state
+// in which the curve enters the cell (so that it still enters and leaves on the right sides),
+// and so on recursively: in effect, the keys are refined wherever points are dense.
+// Termination: a refined cell's points span at most one cell, 2^-depth (depth >= 9) of the box
+// they were sorted in, so every level shrinks the box by at least 2^8, and after a few hundred
+// levels (the ratio of the largest to the smallest double, 2^2098) the box is flat: equal
+// points, which keep their input order. Uniform data has almost no shared cells: it costs a scan.
+// A cell of at most this many points keeps their input order: they are neighbours anyway, and
+// points on a curve share cells two by two, where refining them would cost more than it saves.
+constexpr std::size_t kSmallCell = 4;
+
+// Orders idx[0..len) (one cell's points, curve state `state`) along the curve over their box.
+void sortRun(const std::vector<double>& xy, std::size_t* idx, std::size_t len, int state) {
+  HilbertBox b{xy[2 * idx[0]], xy[2 * idx[0] + 1], 0};
+  double xmax = b.xmin, ymax = b.ymin;
+  for (std::size_t k = 1; k < len; ++k) {
+    const double x = xy[2 * idx[k]], y = xy[2 * idx[k] + 1];
+    b.xmin = std::min(b.xmin, x); xmax = std::max(xmax, x);
+    b.ymin = std::min(b.ymin, y); ymax = std::max(ymax, y);
+  }
+  b.halfSide = std::max(xmax / 2 - b.xmin / 2, ymax / 2 - b.ymin / 2);
+  if (!(b.halfSide > 0)) return;  // all equal: input order
+  const BoxCells cells(b, hilbertAutoDepth(len));
+  std::vector<std::pair<std::size_t, std::size_t>> runs;  // [begin, end) of shared cells
+  {  // scoped: the keys are freed before the recursion, which may go a few hundred levels deep
+    // (key, position): stable. Most shared cells hold two or three points (points on a curve,
+    // clusters): those stay on the stack.
+    std::pair<std::uint64_t, std::size_t> kvSmall[16];
+    std::size_t oldSmall[16];
+    std::vector<std::pair<std::uint64_t, std::size_t>> kvBig(len <= 16 ? 0 : len);
+    std::vector<std::size_t> oldBig(len <= 16 ? 0 : len);
+    std::pair<std::uint64_t, std::size_t>* const kv = len <= 16 ? kvSmall : kvBig.data();
+    const int posBits = bitsFor(len), keyBits = 2 * cells.depth;
+    if (len >= 4096 && keyBits + posBits <= 64) {  // large runs (an outlier's): the radix sort
+      std::vector<std::uint64_t> w(len);
+      for (std::size_t k = 0; k < len; ++k) {
+        int s = state;
+        w[k] = cells.key(xy, idx[k], s) << posBits | k;
+      }
+      radixSort(w, posBits, posBits + keyBits);
+      const std::uint64_t mask = (std::uint64_t{1} << posBits) - 1;
+      for (std::size_t k = 0; k < len; ++k) kv[k] = {w[k] >> posBits, std::size_t(w[k] & mask)};
+    } else {
+      for (std::size_t k = 0; k < len; ++k) {
+        int s = state;
+        kv[k] = {cells.key(xy, idx[k], s), k};
+      }
+      std::sort(kv, kv + len);
+    }
+    std::size_t* const old = len <= 16 ? oldSmall : oldBig.data();
+    std::copy(idx, idx + len, old);
+    for (std::size_t k = 0; k < len; ++k) idx[k] = old[kv[k].second];
+    if (kv[0].first == kv[len - 1].first) return;  // no split (cannot happen: safety)
+    for (std::size_t a = 0, e; a < len; a = e) {
+      for (e = a + 1; e < len && kv[e].first == kv[a].first;) ++e;
+      if (e - a > kSmallCell) runs.emplace_back(a, e);
+    }
+  }
+  for (const auto& r : runs) {
+    int s = state;
+    cells.key(xy, idx[r.first], s);  // the state of this cell
+    sortRun(xy, idx + r.first, r.second - r.first, s);
+  }
+}
+
+// Refines the runs of equal words (same cell of the grid of `cells`, same group) of a sorted
+// order: `same(a, b)` says whether positions a and b of the order share a cell.
+template <class Same>
+void refineSorted(const std::vector<double>& xy, const BoxCells& cells, std::size_t* order,
+                  std::size_t n, Same same) {
+  for (std::size_t a = 0, e; a < n; a = e) {
+    for (e = a + 1; e < n && same(a, e);) ++e;
+    if (e - a <= kSmallCell) continue;
+    int s = 0;
+    cells.key(xy, order[a], s);
+    sortRun(xy, order + a, e - a, s);
+  }
+}
+//! [adaptiveHilbert]
+
 // Sorts the points by (group, key, index), group[k] < 2^groupBits (none if groupBits = 0),
 // with one radix sort of (group, key, index) packed in 64 bits when they fit, else std::sort.
 // With `coarsen`, levels of the curve are dropped until they fit: the key of a coarser curve,
-// the same order up to more ties (broken by index).
+// the same order up to more ties (broken by index, or by the refinement when `adaptive`).
 std::vector<std::size_t> sortByGroupKeyIndex(const std::vector<double>& xy, int depth,
                                              const std::vector<std::uint32_t>& group,
-                                             int groupBits, bool coarsen = false) {
+                                             int groupBits, bool adaptive, bool coarsen = false) {
   const std::size_t n = xy.size() / 2;
   const int idxBits = bitsFor(n);
   if (coarsen) depth = std::max(1, std::min(depth, (64 - groupBits - idxBits) / 2));
@@ -317,6 +415,9 @@ std::vector<std::size_t> sortByGroupKeyIndex(const std::vector<double>& xy, int 
     radixSort(w, idxBits, idxBits + keyBits + groupBits);
     const std::uint64_t idxMask = (std::uint64_t{1} << idxBits) - 1;
     for (std::size_t k = 0; k < n; ++k) order[k] = std::size_t(w[k] & idxMask);
+    if (adaptive)
+      refineSorted(xy, BoxCells(hilbertBox(xy), depth), order.data(), n,
+                   [&](std::size_t a, std::size_t b) { return (w[a] >> idxBits) == (w[b] >> idxBits); });
     return order;
   }
   // More than 2^64 combinations (n beyond 2^24 or so at the auto depth): a comparison sort.
@@ -334,6 +435,11 @@ std::vector<std::size_t> sortByGroupKeyIndex(const std::vector<double>& xy, int 
   });
   std::sort(items.begin(), items.end());
   for (std::size_t k = 0; k < n; ++k) order[k] = items[k].k;
+  if (adaptive)
+    refineSorted(xy, BoxCells(hilbertBox(xy), depth), order.data(), n,
+                 [&](std::size_t a, std::size_t b) {
+                   return items[a].g == items[b].g && items[a].key == items[b].key;
+                 });
   return order;
 }
 
@@ -355,9 +461,9 @@ std::vector<std::uint64_t> hilbertKeysFast(const std::vector<double>& xy, int de
   return keys;
 }
 
-std::vector<std::size_t> hilbertOrder(const std::vector<double>& xy, int depth) {
+std::vector<std::size_t> hilbertOrder(const std::vector<double>& xy, int depth, bool adaptive) {
   if (xy.size() % 2 != 0) throw std::invalid_argument("hilbertBox: odd number of coordinates");
-  return sortByGroupKeyIndex(xy, checkedDepth(depth, xy.size() / 2), {}, 0);
+  return sortByGroupKeyIndex(xy, checkedDepth(depth, xy.size() / 2), {}, 0, adaptive);
 }
 
 std::vector<std::size_t> brioRoundSizes(std::size_t n, std::size_t firstRound) {
@@ -375,7 +481,7 @@ std::vector<std::size_t> brioRoundSizes(std::size_t n, std::size_t firstRound) {
 
 //! [brioOrder]
 std::vector<std::size_t> brioOrder(const std::vector<double>& xy, std::uint64_t seed, int depth,
-                                   std::vector<std::size_t>* roundStart) {
+                                   std::vector<std::size_t>* roundStart, bool adaptive) {
   if (xy.size() % 2 != 0) throw std::invalid_argument("hilbertBox: odd number of coordinates");
   const std::size_t n = xy.size() / 2;
   depth = checkedDepth(depth, n);
@@ -400,26 +506,29 @@ std::vector<std::size_t> brioOrder(const std::vector<double>& xy, std::uint64_t 
     start += size;
     ++r;
   }
-  return sortByGroupKeyIndex(xy, depth, round, bitsFor(r));
+  return sortByGroupKeyIndex(xy, depth, round, bitsFor(r), adaptive);
 }
 //! [brioOrder]
 
+int brioCoinRound(std::size_t i, std::uint64_t seed, int rounds) {
+  // Pairs of zero bits of a hashed word: none w.p. 3/4 (last round), one w.p. 3/16, ...
+  std::uint64_t s = seed ^ (0x632be59bd9b4e019ULL * (i + 1));
+  const std::uint64_t h = splitmix(s);
+  int z = 0;
+  while (z < rounds - 1 && ((h >> (2 * z)) & 3) == 0) ++z;
+  return rounds - 1 - z;
+}
+
 std::vector<std::size_t> brioCoinOrder(const std::vector<double>& xy, std::uint64_t seed,
-                                       int rounds) {
+                                       int rounds, bool adaptive) {
   if (xy.size() % 2 != 0) throw std::invalid_argument("hilbertBox: odd number of coordinates");
   if (rounds < 1 || rounds > 32) throw std::invalid_argument("brioCoinOrder: rounds out of 1..32");
   const std::size_t n = xy.size() / 2;
   std::vector<std::uint32_t> round(n, 0);
-  for (std::size_t i = 0; i < n && rounds > 1; ++i) {
-    // Pairs of zero bits of a hashed word: none w.p. 3/4 (last round), one w.p. 3/16, ...
-    std::uint64_t s = seed ^ (0x632be59bd9b4e019ULL * (i + 1));
-    const std::uint64_t h = splitmix(s);
-    int z = 0;
-    while (z < rounds - 1 && ((h >> (2 * z)) & 3) == 0) ++z;
-    round[i] = std::uint32_t(rounds - 1 - z);
-  }
+  for (std::size_t i = 0; i < n && rounds > 1; ++i)
+    round[i] = std::uint32_t(brioCoinRound(i, seed, rounds));
   return sortByGroupKeyIndex(xy, checkedDepth(0, n), round, rounds > 1 ? bitsFor(rounds) : 0,
-                             true);
+                             adaptive, true);
 }
 
 }  // namespace dt

@@ -62,11 +62,16 @@ std::vector<std::uint64_t> hilbertKeysListing(const std::vector<double>& xy, int
 /// below use (the tests check that they are equal).
 std::vector<std::uint64_t> hilbertKeysFast(const std::vector<double>& xy, int depth = 0);
 
-/// The Hilbert sort of 2.3.5: indices of the points ordered by Hilbert key; equal keys
-/// (duplicates, or points sharing a deepest cell) keep their input order, so the result is
-/// deterministic. depth = 0 chooses hilbertAutoDepth(n). One radix sort of (key, index) packed
-/// in 64 bits (a comparison sort when they do not fit, beyond about 2^24 points).
-std::vector<std::size_t> hilbertOrder(const std::vector<double>& xy, int depth = 0);
+/// The Hilbert sort of 2.3.5: indices of the points ordered by Hilbert key. depth = 0 chooses
+/// hilbertAutoDepth(n). One radix sort of (key, index) packed in 64 bits (a comparison sort when
+/// they do not fit, beyond about 2^24 points). With `adaptive` (the default), the points
+/// of a cell holding more than four are ordered again along the curve over their own bounding box,
+/// recursively (keys refined where points are dense, so that a cluster or a far outlier does not
+/// leave thousands of points in input order); equal points keep their input order. With
+/// adaptive = false, the fixed grid of the notes: equal keys keep their input order.
+/// Deterministic either way.
+std::vector<std::size_t> hilbertOrder(const std::vector<double>& xy, int depth = 0,
+                                      bool adaptive = true);
 
 /// Sizes of the BRIO rounds for n points, first round first: the last round holds the larger
 /// half of the points, the one before half of the rest, and so on down to a first round of at
@@ -77,17 +82,24 @@ std::vector<std::size_t> brioRoundSizes(std::size_t n, std::size_t firstRound = 
 /// BRIO: a random permutation (seeded, reproducible) cut into rounds of sizes brioRoundSizes(n),
 /// each round then Hilbert-sorted on keys over the whole data box (equal keys by index). Returns
 /// the insertion order; if roundStart is given it receives the index in that order where each
-/// round starts. Sorted as hilbertOrder, on (round, key, index).
+/// round starts. Sorted as hilbertOrder, on (round, key, index), adaptive (the points of one
+/// round sharing a cell refined) unless adaptive = false.
 std::vector<std::size_t> brioOrder(const std::vector<double>& xy, std::uint64_t seed,
                                    int depth = 0,
-                                   std::vector<std::size_t>* roundStart = nullptr);
+                                   std::vector<std::size_t>* roundStart = nullptr,
+                                   bool adaptive = true);
 
 /// BRIO with rounds drawn by biased coins (the fast kernel's default order): point i goes to the
 /// last of `rounds` rounds with probability 3/4, to the one before with probability 3/16, and
 /// so on (the ratio of CGAL's spatial sort; a hash of i and the seed plays the coin, so the
-/// order is reproducible); each round in Hilbert order, equal keys by index. When (round, key,
-/// index) do not fit in 64 bits (about 10^7 points) the curve is taken a few levels coarser.
+/// order is reproducible); each round in Hilbert order, adaptive as hilbertOrder unless
+/// adaptive = false (then equal keys by index). When (round, key, index) do not fit in 64 bits
+/// (about 10^7 points) the curve is taken a few levels coarser (the refinement makes up for it).
 std::vector<std::size_t> brioCoinOrder(const std::vector<double>& xy, std::uint64_t seed,
-                                       int rounds = 8);
+                                       int rounds = 8, bool adaptive = true);
+
+/// The round (0 = first, rounds - 1 = last) that brioCoinOrder(xy, seed, rounds) gives to point
+/// i: the parallel kernel (fast_parallel.h) finds the rounds' boundaries in the order with it.
+int brioCoinRound(std::size_t i, std::uint64_t seed, int rounds);
 
 }  // namespace dt

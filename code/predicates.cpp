@@ -329,7 +329,7 @@ int incircleNotesAbs(double ax, double ay, double bx, double by, double cx, doub
 
 // ---------------------------------------------------------------------------------------------
 // Robust predicates: the core of predicates_inline.h (filter with a proved bound, the
-// small-multiple stage, GMP), plus the counters and the last stage for the chapter programs.
+// small-multiple, wide and extended-exponent stages, GMP), plus the counters and the last stage for the chapter programs.
 int orient2d(double ax, double ay, double bx, double by, double cx, double cy) {
   ++g_counters.orient;
   int stage = pred::kFilter;
@@ -337,6 +337,7 @@ int orient2d(double ax, double ay, double bx, double by, double cx, double cy) {
   g_lastStage = stage;
   g_counters.orientExact += stage != pred::kFilter;
   g_counters.orientSmallInt += stage == pred::kSmallInt || stage == pred::kWide;
+  g_counters.orientExtended += stage == pred::kExtended;
   return s;
 }
 
@@ -348,6 +349,7 @@ int incircle(double ax, double ay, double bx, double by, double cx, double cy, d
   g_lastStage = stage;
   g_counters.incircleExact += stage != pred::kFilter;
   g_counters.incircleSmallInt += stage == pred::kSmallInt || stage == pred::kWide;
+  g_counters.incircleExtended += stage == pred::kExtended;
   return s;
 }
 

@@ -25,8 +25,9 @@ struct PredicateCounters {
   std::uint64_t incircle = 0;     ///< calls of incircle (robust)
   std::uint64_t incircleExact = 0;///< of which the filter failed: an exact stage decided
   std::uint64_t orientSmallInt = 0;   ///< of orientExact, decided in machine arithmetic
-  std::uint64_t incircleSmallInt = 0; ///< (stages 2 and 3, see lastPredicateStage); the rest
-                                      ///< of orientExact / incircleExact went to GMP
+  std::uint64_t incircleSmallInt = 0; ///< (stages 2 and 3, see lastPredicateStage)
+  std::uint64_t orientExtended = 0;   ///< of orientExact, decided by the extended-exponent
+  std::uint64_t incircleExtended = 0; ///< filter (stage 4); the rest went to GMP
   void reset() { *this = PredicateCounters{}; }
 };
 PredicateCounters& predicateCounters();
@@ -84,8 +85,9 @@ int incircle(double ax, double ay, double bx, double by, double cx, double cy, d
 
 /// Stage that decided the last robust call (for tests and the 2.3.1 program): 0 = filter,
 /// 1 = exact (GMP), 2 = small multiples of a power of two, evaluated exactly in doubles,
-/// 3 = multiples of up to 62 bits, in 128/256-bit integers (predicates_inline.h, where the
-/// stages are defined and proved).
+/// 3 = multiples of up to 62 bits, in 128/256-bit integers, 4 = the filter evaluated with a
+/// separate integer exponent (no overflow or underflow) (predicates_inline.h, where the stages
+/// are defined and proved).
 int lastPredicateStage();
 
 }  // namespace dt

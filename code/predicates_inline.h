@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
+#include <utility>
 
 #include "predicates.h"
 
@@ -19,6 +21,8 @@ enum Stage : int {
   kExact = 1,     ///< exact GMP integers (orient2dExact / incircleExact)
   kSmallInt = 2,  ///< the floating-point value itself, proved exact (small multiples of 2^k)
   kWide = 3,      ///< the same integers, up to 62 bits, evaluated in 128- and 256-bit integers
+  kExtended = 4,  ///< the filter again, in floating point with a separate integer exponent
+  kStageCount = 5 ///< the number of stages (tests/stage_tally.h reads it)
 };
 
 constexpr double kU = 0x1p-53;  // unit roundoff of binary64, round to nearest
@@ -130,6 +134,134 @@ inline int signOfLiftedSum(const Int128 (&lift)[3], const Int128 (&minor)[3]) {
 }
 
 // ---------------------------------------------------------------------------------------------
+// The extended-exponent stage, for what the filters leave only because of overflow or underflow:
+// coordinates whose exponents spread over the whole double range (2^-1074 beside 2^1023), where
+// products overflow or vanish, differences are inexact (so the integer stages cannot start), and
+// GMP would work on integers of some 2100 bits (8400 in incircle's products).
+//
+//! [extendedExponent]
+// An Xf is m 2^e with m a double, 1/2 <= |m| < 1 or m = 0, and e an int: the exponent has its own
+// integer, so nothing the predicates compute (exponents within +-4400) can overflow or underflow.
+// Claim. Each operation below returns (exact result)(1 + d) with |d| <= u = 2^-53:
+//  - product: m1 m2 has magnitude in [1/4, 1), far from the subnormals: one rounding to nearest;
+//    renormalising (a power of two) is exact.
+//  - sum, exponents e1 >= e2, gap g = e1 - e2: if g <= 60, m2 2^-g (|.| >= 2^-61) is exact (a
+//    power of two times a double, far from the subnormals; so a fused multiply-add would give
+//    the same sum), and the exact sum of m1 and it, a multiple of 2^-113, is either 0 or far
+//    above the subnormals: one rounding to nearest. If g > 60 the result is x1 itself:
+//    |x2| < 2^e2 <= 2^(e1-61) <= 2^-60 |x1|, so |d| = |x2| / |x1 + x2| <= 1 / (2^60 - 1) < u.
+//  - the constants 5u and 12u are powers of two times small integers: xf() holds them exactly.
+// So the Xf evaluation obeys the rounding model on which the two filters' error bounds below
+// are proved (every operation exact times (1 + d), |d| <= u), without their two caveats: there is
+// no underflow and no overflow. The same expressions and the same bounds (5u detsum, 12u
+// permanent), evaluated in Xf, therefore decide the sign whenever |det| exceeds the bound, for
+// every input of finite doubles. Exact zeros and near-degenerate inputs still go to GMP.
+struct Xf {
+  double m;
+  int e;
+};
+
+/// m 2^e normalised (m finite): the exponent field of m moves into e, bit by bit (no frexp call).
+inline Xf xfNorm(double m, int e) {
+  std::uint64_t b;
+  std::memcpy(&b, &m, sizeof b);
+  int be = int((b >> 52) & 0x7ff);
+  if (be == 0) {  // zero or subnormal (only the inputs can be)
+    if (m == 0) return {0.0, 0};
+    m *= 0x1p64;
+    e -= 64;
+    std::memcpy(&b, &m, sizeof b);
+    be = int((b >> 52) & 0x7ff);
+  }
+  b = (b & ~(std::uint64_t{0x7ff} << 52)) | (std::uint64_t{1022} << 52);  // |m| in [1/2, 1)
+  std::memcpy(&m, &b, sizeof m);
+  return {m, e + be - 1022};
+}
+inline Xf xf(double v) { return xfNorm(v, 0); }
+inline Xf operator*(Xf a, Xf b) { return xfNorm(a.m * b.m, a.e + b.e); }
+inline Xf operator+(Xf a, Xf b) {
+  if (a.m == 0) return b;
+  if (b.m == 0) return a;
+  if (a.e < b.e) std::swap(a, b);
+  const int g = a.e - b.e;
+  if (g > 60) return a;
+  std::uint64_t pb = std::uint64_t(1023 - g) << 52;  // 2^-g, a normal double
+  double p;
+  std::memcpy(&p, &pb, sizeof p);
+  return xfNorm(a.m + b.m * p, a.e);
+}
+inline Xf operator-(Xf a) { return {-a.m, a.e}; }
+inline Xf operator-(Xf a, Xf b) { return a + (-b); }
+inline Xf xfAbs(Xf a) { return {std::fabs(a.m), a.e}; }
+/// |a| > b for b >= 0 (both normalised: compare exponents, then mantissas).
+inline bool xfAbsAbove(Xf a, Xf b) {
+  if (a.m == 0) return false;
+  if (b.m == 0) return true;
+  return a.e != b.e ? a.e > b.e : std::fabs(a.m) > b.m;
+}
+//! [extendedExponent]
+
+/// The orientation filter in Xf: the sign if |det| > 5u detsum, else 2 (undecided).
+inline int orient2dExtendedPivot(double ax, double ay, double bx, double by, double cx,
+                                 double cy) {
+  const Xf l = (xf(ax) - xf(cx)) * (xf(by) - xf(cy));
+  const Xf r = (xf(ay) - xf(cy)) * (xf(bx) - xf(cx));
+  const Xf det = l - r;
+  const Xf bound = xf(5 * kU) * (xfAbs(l) + xfAbs(r));
+  return xfAbsAbove(det, bound) ? (det.m > 0 ? 1 : -1) : 2;
+}
+
+/// The incircle filter (permanent bound) in Xf, pivot d: the sign if |det| > 12u permanent,
+/// else 2.
+inline int incircleExtendedPivot(double ax, double ay, double bx, double by, double cx,
+                                 double cy, double dx, double dy) {
+  const Xf adx = xf(ax) - xf(dx), ady = xf(ay) - xf(dy);
+  const Xf bdx = xf(bx) - xf(dx), bdy = xf(by) - xf(dy);
+  const Xf cdx = xf(cx) - xf(dx), cdy = xf(cy) - xf(dy);
+  const Xf bdxcdy = bdx * cdy, cdxbdy = cdx * bdy;
+  const Xf cdxady = cdx * ady, adxcdy = adx * cdy;
+  const Xf adxbdy = adx * bdy, bdxady = bdx * ady;
+  const Xf alift = adx * adx + ady * ady;
+  const Xf blift = bdx * bdx + bdy * bdy;
+  const Xf clift = cdx * cdx + cdy * cdy;
+  const Xf det = alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy) +
+                 clift * (adxbdy - bdxady);
+  const Xf permanent = (xfAbs(bdxcdy) + xfAbs(cdxbdy)) * alift +
+                       (xfAbs(cdxady) + xfAbs(adxcdy)) * blift +
+                       (xfAbs(adxbdy) + xfAbs(bdxady)) * clift;
+  const Xf bound = xf(12 * kU) * permanent;
+  return xfAbsAbove(det, bound) ? (det.m > 0 ? 1 : -1) : 2;
+}
+
+// The pivot. A difference of two points of very different sizes rounds to the larger one and
+// loses the smaller; taking the differences to the smallest point keeps the small points'
+// differences among themselves accurate, which is what a tiny minor beside a huge lift needs.
+// The determinants are the same: orient2d is invariant under cyclic shifts of its points, and
+// the 4 x 4 incircle determinant (rows x, y, x^2 + y^2, 1) changes sign under a cyclic shift of
+// its four rows, an odd permutation.
+inline double xfSize(double x, double y) { return std::max(std::fabs(x), std::fabs(y)); }
+
+/// orient2dExtendedPivot with the smallest point as pivot.
+inline int orient2dExtended(double ax, double ay, double bx, double by, double cx, double cy) {
+  const double a = xfSize(ax, ay), b = xfSize(bx, by), c = xfSize(cx, cy);
+  if (a < b && a < c) return orient2dExtendedPivot(bx, by, cx, cy, ax, ay);
+  if (b < c) return orient2dExtendedPivot(cx, cy, ax, ay, bx, by);
+  return orient2dExtendedPivot(ax, ay, bx, by, cx, cy);
+}
+
+/// incircleExtendedPivot with the smallest point as pivot.
+inline int incircleExtended(double ax, double ay, double bx, double by, double cx, double cy,
+                            double dx, double dy) {
+  const double a = xfSize(ax, ay), b = xfSize(bx, by), c = xfSize(cx, cy), d = xfSize(dx, dy);
+  const double m = std::min(std::min(a, b), std::min(c, d));
+  int s;
+  if (m == d) return incircleExtendedPivot(ax, ay, bx, by, cx, cy, dx, dy);
+  if (m == a) return (s = incircleExtendedPivot(bx, by, cx, cy, dx, dy, ax, ay)) == 2 ? 2 : -s;
+  if (m == b) return incircleExtendedPivot(cx, cy, dx, dy, ax, ay, bx, by);
+  return (s = incircleExtendedPivot(dx, dy, ax, ay, bx, by, cx, cy)) == 2 ? 2 : -s;
+}
+
+// ---------------------------------------------------------------------------------------------
 // Error bound for orient2d (u = 2^-53, round to nearest, no FMA: -ffp-contract=off).
 // Write each rounded operation as an exact one times (1 + d), |d| <= u. The computed value is
 //   fl( fl(fl(ax-cx) fl(by-cy)) - fl(fl(ay-cy) fl(bx-cx)) ),
@@ -164,6 +296,11 @@ __attribute__((noinline)) inline int orient2dSlow(double ax, double ay, double b
     const Int128 l = Int128(q[0]) * q[1], r = Int128(q[2]) * q[3];  // each below 2^124
     stage = kWide;
     return (l > r) - (l < r);
+  }
+  const int x = orient2dExtended(ax, ay, bx, by, cx, cy);
+  if (x != 2) {
+    stage = kExtended;
+    return x;
   }
   stage = kExact;
   return orient2dExact(ax, ay, bx, by, cx, cy);
@@ -248,6 +385,11 @@ __attribute__((noinline)) inline int incircleSlow(double ax, double ay, double b
                              cross(q[0], q[1], q[2], q[3])};
     stage = kWide;
     return signOfLiftedSum(lift, minor);
+  }
+  const int x = incircleExtended(ax, ay, bx, by, cx, cy, dx, dy);
+  if (x != 2) {
+    stage = kExtended;
+    return x;
   }
   stage = kExact;
   return incircleExact(ax, ay, bx, by, cx, cy, dx, dy);

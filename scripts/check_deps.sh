@@ -54,6 +54,9 @@ head         base               scripts
 tail         base               scripts
 ls           base               scripts/fuzz.sh
 cp           base               scripts
+git          git                scripts/mutants.sh (a temporary copy of the tree)
+tar          base               scripts/mutants.sh
+touch        base               scripts/mutants.sh
 mv           base               scripts
 date         base               scripts
 sleep        base               scripts

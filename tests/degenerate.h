@@ -201,6 +201,14 @@ inline std::vector<Family> families(bool small = false) {
   f.push_back({"integer grid times 1e-300", shuffled(scaledGrid(g, g, 1e-300), 12)});
   f.push_back({"1e300 and 1e-300 mixed", shuffled(mixedExtremes(small ? 80 : 700, 13), 13)});
   f.push_back({"few distinct points, many copies", fewDistinct(small ? 2000 : 20000, 14)});
+  // Issue 19 (the adaptive Hilbert order) and issue 18 (the extended-exponent stage). The
+  // exponents stop at 2^1000 so that super-triangles (10x the box) still fit in doubles.
+  const std::size_t m = small ? 150 : 1500;
+  f.push_back({"uniform and one far outlier (1e12, 1e12)", dt::outlierPoints(m, 15, 1e12)});
+  f.push_back({"cluster of width 1e-9 beside uniform points", dt::clusterBesideUniform(m, 16)});
+  f.push_back({"radii log-uniform in [1e-6, 1e6]", dt::logRadiusPoints(m, 17)});
+  f.push_back({"exponents spread over 2^-1070 .. 2^1000",
+               dt::exponentSpreadPoints(m, 18, -1070, 1000)});
   return f;
 }
 

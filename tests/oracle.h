@@ -100,19 +100,20 @@ class HardInputs {
  public:
   explicit HardInputs(std::uint64_t seed) : g_(seed) {}
   int family() const { return family_; }
-  static constexpr int kOrientFamilies = 8;
-  static constexpr int kIncircleFamilies = 8;
+  static constexpr int kOrientFamilies = 9;
+  static constexpr int kIncircleFamilies = 9;
   static const char* orientName(int f) {
     static const char* n[] = {"collinear lattice", "lattice moved 1-2 ulps", "rounded near-collinear",
                               "exponent spread 2^-1000..2^1000", "subnormal",
                               "near (1,1) and (-1,-1), ulps apart", "underflowing products",
-                              "generic"};
+                              "whole range 2^-1074..2^1023", "generic"};
     return n[f];
   }
   static const char* incircleName(int f) {
     static const char* n[] = {"Pythagorean r = 1185665", "Pythagorean moved 1-2 ulps",
                               "lattice rectangle", "rounded circle", "exponent spread",
-                              "subnormal", "rounded circle, underflowing products", "generic"};
+                              "subnormal", "rounded circle, underflowing products",
+                              "whole range 2^-1074..2^1023", "generic"};
     return n[f];
   }
 
@@ -169,6 +170,9 @@ class HardInputs {
         v[5] = nudge(v[1] + t * (v[3] - v[1]), uni(-2, 2));
         break;
       }
+      case 7:  // every coordinate at its own exponent anywhere in the range (overflow, underflow)
+        for (int i = 0; i < 6; ++i) v[i] = std::ldexp(real(), uni(-1074, 1023));
+        break;
       default:
         for (int i = 0; i < 6; ++i) v[i] = std::ldexp(real(), uni(-2, 2));
     }
@@ -255,6 +259,9 @@ class HardInputs {
         }
         break;
       }
+      case 7:  // every coordinate at its own exponent anywhere in the range (overflow, underflow)
+        for (int i = 0; i < 8; ++i) v[i] = std::ldexp(real(), uni(-1074, 1023));
+        break;
       default:
         for (int i = 0; i < 8; ++i) v[i] = std::ldexp(real(), uni(-2, 2));
     }

@@ -32,6 +32,7 @@ inline std::string stageName(int s) {
     case dt::pred::kExact: return "GMP";
     case dt::pred::kSmallInt: return "small multiples";
     case dt::pred::kWide: return "wide integers";
+    case dt::pred::kExtended: return "extended exponent";
     default: return "stage " + std::to_string(s);
   }
 }

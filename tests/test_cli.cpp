@@ -142,7 +142,7 @@ const char* kSquare = "0 0\n1 0\n0 1\n1 1\n";
 
 }  // namespace
 
-TEST_CASE("cli delaunay2d leaves every pre-existing output as it was when a run fails") {
+TEST_CASE("cli a failed run leaves every pre-existing output as it was") {
   const std::string d = freshDir("keep"), in = d + "/in.xy", out = d + "/out";
   dttest::writeText(in, kSquare);
   dttest::writeText(out + ".ele", "OLD ELE\n");
@@ -176,7 +176,7 @@ TEST_CASE("cli delaunay2d leaves every pre-existing output as it was when a run 
   CHECK(filesStartingWith(d, "out.ele.").empty());
 }
 
-TEST_CASE("cli delaunay2d refuses an output that is the input file or another output") {
+TEST_CASE("cli an output that is the input file or another output is refused") {
   const std::string d = freshDir("same"), in = d + "/in.xy";
   dttest::writeText(in, kSquare);
   struct Case {
@@ -210,7 +210,7 @@ TEST_CASE("cli delaunay2d refuses an output that is the input file or another ou
   CHECK(dttest::readText(d + "/pts.ele") == kSquare);
 }
 
-TEST_CASE("cli delaunay2d killed while its outputs are written leaves no temporary and the old files") {
+TEST_CASE("cli killed while its outputs are written it leaves no temporary and keeps the old files") {
   const std::string d = freshDir("killed"), in = d + "/in.xy", out = d + "/out";
   dttest::writeText(in, kSquare);
   dttest::writeText(out + ".ele", "OLD ELE\n");
@@ -232,7 +232,7 @@ TEST_CASE("cli delaunay2d killed while its outputs are written leaves no tempora
   CHECK(dttest::readText(out + ".ele") == "OLD ELE\n");
 }
 
-TEST_CASE("cli delaunay2d writes finite SVG coordinates for subnormal or near-overflow points") {
+TEST_CASE("cli the SVG of subnormal or near-overflow coordinates has finite coordinates") {
   const double tiny = 4.9406564584124654e-324, huge = 1.7976931348623157e308;
   const std::vector<std::pair<const char*, XY>> sets = {
       {"subnormal", {0, 0, 3 * tiny, 0, 0, 2 * tiny, 3 * tiny, 5 * tiny, tiny, tiny}},
@@ -278,7 +278,7 @@ TEST_CASE("cli delaunay2d writes finite SVG coordinates for subnormal or near-ov
   }
 }
 
-TEST_CASE("cli delaunay2d writes one line per error with the error first") {
+TEST_CASE("cli one line per error with the error first") {
   const std::string d = freshDir("messages"), in = d + "/in.xy", out = d + "/o";
   dttest::writeText(in, kSquare);
   // A usage error: one line naming the problem and pointing to --help.

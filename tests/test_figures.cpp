@@ -257,7 +257,8 @@ const Run& figureRun() {
     // The programs that draw the book's figures (bench_kernels and sec2_3_3 draw none).
     const char* programs[] = {"sec2_1_kernel", "sec2_2_bowyer_watson", "sec2_2_2_outside_hull",
                               "sec2_3_1_predicates", "sec2_3_2_adjacencies", "sec2_3_4_algorithms",
-                              "sec2_3_5_hilbert", "sec2_3_6_flips", "opt_ladder"};
+                              "sec2_3_5_hilbert", "sec2_3_6_flips", "opt_ladder",
+                              "bench_parallel"};
     // All at once (they are independent and each writes its own files): on two cores the run
     // takes about half its CPU time. Each program's exit status goes to <prog>.rc.
     std::string script;

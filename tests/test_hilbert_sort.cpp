@@ -1,12 +1,14 @@
-/// \file test_hilbert_sort.cpp The one Hilbert sort (code/hilbert.cpp): table keys and radix sort give the same orders as keys one level at a time and std::sort.
+/// \file test_hilbert_sort.cpp The one Hilbert sort (code/hilbert.cpp): table keys and radix sort give the same orders as keys one level at a time and std::sort; the adaptive refinement keeps a far outlier or a dense cluster from leaving points in input order.
 #include <doctest/doctest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <numeric>
 #include <utility>
 #include <vector>
 
+#include "generators.h"
 #include "hilbert.h"
 #include "support.h"
 
@@ -77,10 +79,11 @@ TEST_CASE("Hilbert sort (2.3.5) table keys equal the keys of hilbertIndex one le
 
 TEST_CASE("Hilbert sort (2.3.5) by radix gives the order of std::sort on key then index") {
   // depth 31 packs 62 key bits: with the index they exceed 64 bits (the comparison-sort path).
+  // The fixed grid (adaptive = false): equal keys in index order.
   for (int depth : {0, 1, 3, 10, 20, 31}) {
     const XY p = mixedPoints(20000, 7 + unsigned(depth));
     INFO("depth " << depth);
-    CHECK(dt::hilbertOrder(p, depth) == hilbertOrderRef(p, depth));
+    CHECK(dt::hilbertOrder(p, depth, false) == hilbertOrderRef(p, depth));
   }
   CHECK(dt::hilbertOrder({}).empty());
   CHECK(dt::hilbertOrder({2, 3}) == std::vector<std::size_t>{0});
@@ -91,7 +94,7 @@ TEST_CASE("Hilbert sort for BRIO in one sort gives the order of sorting each rou
     const XY p = mixedPoints(20000, 17 + unsigned(depth));
     for (std::uint64_t seed : {1u, 5u}) {
       INFO("depth " << depth << " seed " << seed);
-      CHECK(dt::brioOrder(p, seed, depth) == brioOrderRef(p, seed, depth));
+      CHECK(dt::brioOrder(p, seed, depth, nullptr, false) == brioOrderRef(p, seed, depth));
     }
   }
 }
@@ -119,4 +122,151 @@ TEST_CASE("Hilbert sort for BRIO by biased coins (the fast kernel's order) puts 
   CHECK(dt::brioCoinOrder(p, 3) == o);
   CHECK(dt::brioCoinOrder(p, 4) != o);
   CHECK(dt::brioCoinOrder(p, 3, 1) == dt::hilbertOrder(p));  // one round: the Hilbert sort
+}
+
+namespace {
+
+// The length of the tour through the points in `order`, leaving out every step to or from a
+// point outside [lo, hi]^2 (the outlier).
+double tourWithin(const XY& p, const std::vector<std::size_t>& order, double lo, double hi) {
+  auto in = [&](std::size_t i) {
+    return p[2 * i] >= lo && p[2 * i] <= hi && p[2 * i + 1] >= lo && p[2 * i + 1] <= hi;
+  };
+  double len = 0;
+  for (std::size_t k = 1; k < order.size(); ++k) {
+    const std::size_t a = order[k - 1], b = order[k];
+    if (in(a) && in(b)) len += std::hypot(p[2 * a] - p[2 * b], p[2 * a + 1] - p[2 * b + 1]);
+  }
+  return len;
+}
+
+bool isPermutation(std::vector<std::size_t> o, std::size_t n) {
+  std::sort(o.begin(), o.end());
+  for (std::size_t k = 0; k < o.size(); ++k)
+    if (o[k] != k) return false;
+  return o.size() == n;
+}
+
+}  // namespace
+
+TEST_CASE("Hilbert sort (2.3.5) adaptive: still sorted by the fixed-grid key; equal points keep their input order") {
+  for (int depth : {1, 3, 0}) {
+    const XY p = mixedPoints(5000, 40 + unsigned(depth));
+    const std::vector<std::size_t> o = dt::hilbertOrder(p, depth);
+    const std::vector<std::uint64_t> keys = dt::hilbertKeys(p, depth);
+    REQUIRE(isPermutation(o, keys.size()));
+    INFO("depth " << depth);
+    for (std::size_t k = 1; k < o.size(); ++k) {
+      REQUIRE(keys[o[k - 1]] <= keys[o[k]]);
+      if (p[2 * o[k - 1]] == p[2 * o[k]] && p[2 * o[k - 1] + 1] == p[2 * o[k] + 1])
+        REQUIRE(o[k - 1] < o[k]);
+    }
+    // At depth 1 the 4 cells hold thousands of points each: the refinement reorders them.
+    if (depth == 1) CHECK(o != dt::hilbertOrder(p, depth, false));
+  }
+}
+
+TEST_CASE("Hilbert sort (2.3.5) adaptive: one far outlier leaves the others' tour as short as without it") {
+  const std::size_t n = 20000;
+  XY p = dt::outlierPoints(n, 5, 1e12);
+  XY q;  // the same points without the outlier
+  for (std::size_t i = 0; i < n; ++i)
+    if (p[2 * i] < 2) q.insert(q.end(), {p[2 * i], p[2 * i + 1]});
+  REQUIRE(q.size() == 2 * (n - 1));
+  const double alone = tourWithin(q, dt::hilbertOrder(q), 0, 1);
+  const double adaptive = tourWithin(p, dt::hilbertOrder(p), 0, 1);
+  const double fixed = tourWithin(p, dt::hilbertOrder(p, 0, false), 0, 1);
+  MESSAGE("tour of the uniform points: alone " << alone << ", with the outlier: adaptive "
+          << adaptive << ", fixed grid " << fixed);
+  CHECK(adaptive < 1.05 * alone);
+  CHECK(fixed > 20 * alone);  // a random order: about n/2 against 0.98 sqrt(n)
+  // The same for the orders the kernels use (BRIO's rounds lengthen every tour alike).
+  const double coin = tourWithin(p, dt::brioCoinOrder(p, 1), 0, 1);
+  const double coinAlone = tourWithin(q, dt::brioCoinOrder(q, 1), 0, 1);
+  CHECK(coin < 1.2 * coinAlone);
+  CHECK(tourWithin(p, dt::brioCoinOrder(p, 1, 8, false), 0, 1) > 10 * coinAlone);
+  const double brio = tourWithin(p, dt::brioOrder(p, 1), 0, 1);
+  CHECK(brio < 1.2 * tourWithin(q, dt::brioOrder(q, 1), 0, 1));
+}
+
+TEST_CASE("Hilbert sort (2.3.5) adaptive: a cluster of width 1e-9 beside uniform points is toured like uniform points") {
+  const std::size_t n = 20000;
+  const XY p = dt::clusterBesideUniform(n, 6, 1e-9);
+  auto clusterTour = [&](const std::vector<std::size_t>& o) {
+    std::vector<std::size_t> inCluster;
+    for (std::size_t i : o)
+      if (std::fabs(p[2 * i] - 0.3) < 1e-9 && std::fabs(p[2 * i + 1] - 0.7) < 1e-9)
+        inCluster.push_back(i);
+    double len = 0;
+    for (std::size_t k = 1; k < inCluster.size(); ++k) {
+      const std::size_t a = inCluster[k - 1], b = inCluster[k];
+      len += std::hypot(p[2 * a] - p[2 * b], p[2 * a + 1] - p[2 * b + 1]);
+    }
+    return len;
+  };
+  // 2000 points in a square of side 1e-9: a Hilbert tour about 0.98 sqrt(2000) 1e-9 = 4.4e-8.
+  const double adaptive = clusterTour(dt::hilbertOrder(p));
+  const double fixed = clusterTour(dt::hilbertOrder(p, 0, false));
+  MESSAGE("tour of the cluster: adaptive " << adaptive << ", fixed grid " << fixed);
+  CHECK(adaptive < 1.2 * 0.98 * std::sqrt(2000.0) * 1e-9);
+  CHECK(fixed > 10 * adaptive);
+}
+
+TEST_CASE("Hilbert sort (2.3.5) adaptive: points at every scale of the double range and duplicates terminate") {
+  XY p = dt::exponentSpreadPoints(3000, 8);
+  const XY d = dt::logRadiusPoints(3000, 9);
+  p.insert(p.end(), d.begin(), d.end());
+  p.insert(p.end(), d.begin(), d.begin() + 1000);  // 500 duplicated points
+  for (int e = -1074; e <= 1023; ++e) p.insert(p.end(), {std::ldexp(1.0, e), 0.0});
+  CHECK(isPermutation(dt::hilbertOrder(p), p.size() / 2));
+  CHECK(isPermutation(dt::brioCoinOrder(p, 2), p.size() / 2));
+}
+
+TEST_CASE("Hilbert sort (2.3.5) adaptive: clusters nested two deep are toured like uniform points") {
+  // 4000 uniform points in the unit square, 4000 in a square of side 1e-150 and, inside that,
+  // 8000 in a square of side 1e-300: the innermost cluster is reached after two refinements.
+  const std::size_t m = 8000;
+  XY p = dt::uniformPoints(4000, 21);
+  const XY mid = dt::uniformPoints(4000, 22, 0, 1e-150);  // at the origin: widths this small
+  const XY in = dt::uniformPoints(m, 23, 0, 1e-300);      // need no large offset
+  p.insert(p.end(), mid.begin(), mid.end());
+  p.insert(p.end(), in.begin(), in.end());
+  p.insert(p.end(), in.begin(), in.begin() + 400);  // 200 duplicated points
+  dt::shufflePoints(p, 24);
+  auto innerTour = [&](const std::vector<std::size_t>& o) {
+    double len = 0;
+    std::size_t prev = o.size();
+    for (std::size_t i : o) {
+      if (p[2 * i] > 1e-300 || p[2 * i + 1] > 1e-300) continue;
+      if (prev != o.size())
+        len += std::hypot(p[2 * i] - p[2 * prev], p[2 * i + 1] - p[2 * prev + 1]);
+      prev = i;
+    }
+    return len / 1e-300;  // in units of the cluster's side
+  };
+  const std::vector<std::size_t> o = dt::hilbertOrder(p);
+  REQUIRE(isPermutation(o, p.size() / 2));
+  const double adaptive = innerTour(o), fixed = innerTour(dt::hilbertOrder(p, 0, false));
+  MESSAGE("tour of the innermost cluster / side: adaptive " << adaptive << ", fixed grid "
+          << fixed << ", sqrt(m) = " << std::sqrt(double(m)));
+  // A Hilbert tour of m uniform points is about sqrt(m) sides long; a random order, m / 2.
+  CHECK(adaptive < 1.3 * std::sqrt(double(m)));
+  CHECK(fixed > 20 * std::sqrt(double(m)));
+  // Equal points keep their input order.
+  std::vector<std::size_t> pos(o.size());
+  for (std::size_t k = 0; k < o.size(); ++k) pos[o[k]] = k;
+  std::map<std::pair<double, double>, std::size_t> firstSeen;
+  long misordered = 0, pairs = 0;
+  for (std::size_t i = 0; i < o.size(); ++i) {
+    const auto key = std::make_pair(p[2 * i], p[2 * i + 1]);
+    const auto it = firstSeen.find(key);
+    if (it == firstSeen.end()) {
+      firstSeen.emplace(key, i);
+    } else {
+      ++pairs;
+      misordered += pos[it->second] > pos[i];
+    }
+  }
+  CHECK(pairs == 200);
+  CHECK(misordered == 0);
 }

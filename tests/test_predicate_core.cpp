@@ -1,4 +1,4 @@
-/// \file test_predicate_core.cpp Tests of the one predicate core (code/predicates_inline.h): each stage (filter, small multiples, GMP) is reached and agrees with the exact oracle.
+/// \file test_predicate_core.cpp Tests of the one predicate core (code/predicates_inline.h): each stage (filter, small multiples, wide integers, extended exponent, GMP) is reached and agrees with the exact oracle.
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -10,7 +10,7 @@
 namespace {
 
 struct Tally {
-  long calls = 0, wrong = 0, stage[4] = {0, 0, 0, 0};
+  long calls = 0, wrong = 0, stage[5] = {0, 0, 0, 0, 0};
 };
 
 // Both predicates of the core on one quadruple, against the GMP oracle.
@@ -205,4 +205,116 @@ TEST_CASE("predicate core dt::orient2d / dt::incircle report the small-multiple 
   CHECK(c.orientExact == 1);  // the filter failed once...
   CHECK(c.orientSmallInt == 1);  // ...and the small-multiple stage decided
   CHECK(c.incircleSmallInt == 1);
+}
+
+namespace {
+
+// +-(1/2 + U[0, 1)) 2^k, k uniform in [kmin, kmax]: the exponent-spread family of bench_kernels.
+double spread(std::mt19937_64& rng, int kmin = -1074, int kmax = 1023) {
+  std::uniform_real_distribution<double> u(0, 1);
+  std::uniform_int_distribution<int> k(kmin, kmax);
+  const double x = std::ldexp(0.5 + u(rng), k(rng));
+  return rng() & 1 ? x : -x;
+}
+
+double ulps(double x, int n) {
+  for (; n > 0; --n) x = std::nextafter(x, 1e308);
+  for (; n < 0; ++n) x = std::nextafter(x, -1e308);
+  return x;
+}
+
+}  // namespace
+
+TEST_CASE("predicate core exponents spread over the whole double range go to the extended-exponent stage and never get a wrong sign") {
+  std::mt19937_64 rng(913);
+  Tally o, c;
+  for (int it = 0; it < 30000; ++it) {
+    double v[8];
+    for (double& x : v) x = spread(rng);
+    check(v, o, c);
+  }
+  CHECK(o.wrong == 0);
+  CHECK(c.wrong == 0);
+  // Overflowing or vanishing products: the double filters fail on most of these, the
+  // extended-exponent stage decides nearly all of what they leave.
+  CHECK(o.stage[dt::pred::kExtended] > o.calls / 4);
+  CHECK(c.stage[dt::pred::kExtended] > c.calls / 2);
+  CHECK(o.stage[dt::pred::kExact] < o.calls / 100);
+  CHECK(c.stage[dt::pred::kExact] < c.calls / 100);
+}
+
+TEST_CASE("predicate core exactly degenerate inputs at wildly different powers of two and their one-ulp neighbours agree with GMP") {
+  // Points s_i (p, q) on a line through the origin, s_i = +-2^k_i with k_i spread over the
+  // range (p, q small integers, so every coordinate is exact): any three are collinear and any
+  // four "cocircular" (incircle of four collinear points is 0). Then each coordinate nudged by
+  // one or two ulps, which leaves a tiny nonzero determinant that only the exact stages see.
+  std::mt19937_64 rng(914);
+  std::uniform_int_distribution<int> k(-1000, 1000), small(1, 15), nudge(-2, 2);
+  Tally o, c;
+  long zeros = 0;
+  for (int it = 0; it < 6000; ++it) {
+    const double p = small(rng), q = -small(rng);
+    double v[8];
+    for (int i = 0; i < 4; ++i) {
+      const double si = std::ldexp(rng() & 1 ? 1.0 : -1.0, k(rng));
+      v[2 * i] = si * p;
+      v[2 * i + 1] = si * q;
+    }
+    int st = -1;
+    zeros += dt::pred::orient2d(v[0], v[1], v[2], v[3], v[4], v[5], st) == 0;
+    zeros += dt::pred::incircle(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], st) == 0;
+    check(v, o, c);
+    v[rng() % 8] = ulps(v[rng() % 8], nudge(rng));
+    check(v, o, c);
+  }
+  CHECK(zeros == 2 * 6000);
+  CHECK(o.wrong == 0);
+  CHECK(c.wrong == 0);
+  CHECK(o.stage[dt::pred::kExtended] > 100);  // a far point makes many nudged ones clear
+  CHECK(c.stage[dt::pred::kExact] > 1000);    // exact zeros: GMP, as it must be
+}
+
+TEST_CASE("predicate core subnormal coordinates beside huge ones agree with GMP") {
+  std::mt19937_64 rng(915);
+  std::uniform_int_distribution<int> which(0, 3), sub(1, 1 << 20);
+  Tally o, c;
+  for (int it = 0; it < 20000; ++it) {
+    double v[8];
+    for (double& x : v) {
+      switch (which(rng)) {
+        case 0: x = sub(rng) * 0x1p-1074 * (rng() & 1 ? 1 : -1); break;  // subnormal
+        case 1: x = 0; break;
+        case 2: x = spread(rng, 900, 1023); break;
+        default: x = spread(rng, -1074, -1000); break;
+      }
+    }
+    check(v, o, c);
+  }
+  CHECK(o.wrong == 0);
+  CHECK(c.wrong == 0);
+  CHECK(o.stage[dt::pred::kExtended] > 1000);
+  CHECK(c.stage[dt::pred::kExtended] > 1000);
+  // The arithmetic itself: normalisation of subnormals, sums with a gap above 60.
+  const dt::pred::Xf t = dt::pred::xf(0x1p-1074);
+  CHECK(t.m == 0.5);
+  CHECK(t.e == -1073);
+  const dt::pred::Xf one = dt::pred::xf(1.0), s = one + dt::pred::xf(0x1p-61);
+  CHECK(s.m == one.m);  // 1 + 2^-61 rounds to 1
+  CHECK(s.e == one.e);
+  const dt::pred::Xf d = dt::pred::xf(0x1p1000) - dt::pred::xf(0x1p1000);
+  CHECK(d.m == 0);
+}
+
+TEST_CASE("predicate core dt::orient2d / dt::incircle count the extended-exponent stage") {
+  dt::predicateCounters().reset();
+  // (2^1000, 0), (0, 2^1000), (-2^1000, 3): products overflow; differences round (3 - 2^1000).
+  CHECK(dt::orient2d(0x1p1000, 0, 0, 0x1p1000, -0x1p1000, 3) == 1);
+  CHECK(dt::lastPredicateStage() == dt::pred::kExtended);
+  CHECK(dt::incircle(0x1p1000, 0, 0, 0x1p1000, -0x1p1000, 3, 0x1p-1000, 0x1p-1070) == 1);
+  CHECK(dt::lastPredicateStage() == dt::pred::kExtended);
+  const dt::PredicateCounters k = dt::predicateCounters();
+  CHECK(k.orientExtended == 1);
+  CHECK(k.incircleExtended == 1);
+  CHECK(k.orientExact == 1);  // the filter failed
+  CHECK(k.orientSmallInt == 0);
 }

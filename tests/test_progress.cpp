@@ -69,7 +69,7 @@ TEST_CASE("progress on a terminal is rewritten in place") {
   CHECK(t.find("\r\033[Kdelaunay2d: 60000 points triangulated in ") != std::string::npos);
 }
 
-TEST_CASE("progress delaunay2d --order input on points sorted along a curve warns once that it is quadratic") {
+TEST_CASE("progress --order input on points sorted along a curve warns once that it is quadratic") {
   // A parabola in x order: from its vertex on, every new point's cavity (and the walk to it)
   // holds all the points of the right half inserted before it.
   dttest::XY p;
@@ -98,7 +98,7 @@ TEST_CASE("progress delaunay2d --order input on points sorted along a curve warn
   }
 }
 
-TEST_CASE("progress fastDelaunay's hook sees every k-th point and the numbering options agree") {
+TEST_CASE("progress the fast kernel hook sees every k-th point and the numbering options agree") {
   const dttest::XY p = dttest::uniformPoints(10000, 91);
   dt::FastOptions o;
   o.progressEvery = 1000;

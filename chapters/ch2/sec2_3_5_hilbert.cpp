@@ -3,8 +3,9 @@
 // Regenerates Figure 2.11 (H1, H2 and the local frames x0, b, r of Listing 2.8), Figure 2.12
 // (10^3 and 10^4 points joined in Hilbert order), Table 2.2 (delaunayTrgl on Hilbert-sorted
 // random points, super-triangles, walk started in the previous cavity), the effect of the curve
-// depth, the cost of the keys against the sort, and BRIO against Hilbert-only and random order
-// on four kinds of input.
+// depth, the cost of the keys against the sort, BRIO against Hilbert-only and random order
+// on four kinds of input, and the fixed grid against the adaptive order on a far outlier, a
+// tiny cluster and log-uniform radii (the outlier figure).
 //
 //   sec2_3_5_hilbert [--out DIR] [--quick] [--max-n N] [--huge] [--no-plot]
 //     --huge   add n = 10^7 to Table 2.2 (about 2 GB of memory and a minute or two)
@@ -31,9 +32,12 @@ using dt::XY;
 
 // ---- one measured triangulation ------------------------------------------------------------
 
-enum class Order { Random, Hilbert, Brio };
+enum class Order { Random, Hilbert, Brio, HilbertFixed };
 const char* orderName(Order o) {
-  return o == Order::Random ? "random" : (o == Order::Hilbert ? "Hilbert" : "BRIO");
+  return o == Order::Random ? "random"
+                            : (o == Order::Hilbert ? "Hilbert"
+                                                   : (o == Order::Brio ? "BRIO"
+                                                                       : "Hilbert, fixed grid"));
 }
 
 struct Run {
@@ -49,8 +53,8 @@ Run triangulate(const XY& p, Order order, int depth, bool check, std::uint64_t s
   const std::size_t n = p.size() / 2;
   const auto t0 = Clock::now();
   std::vector<std::size_t> idx;
-  if (order == Order::Hilbert) {
-    idx = dt::hilbertOrder(p, depth);
+  if (order == Order::Hilbert || order == Order::HilbertFixed) {
+    idx = dt::hilbertOrder(p, depth, order == Order::Hilbert);
   } else if (order == Order::Brio) {
     idx = dt::brioOrder(p, seed, depth);
   } else {
@@ -226,8 +230,9 @@ void depthTable(const ch::Options& o, std::size_t n) {
   std::sort(depths.begin(), depths.end());
   ch::Table tab;
   tab.caption = "How the curve depth d changes the counts (n = " + sci(n) +
-                ", Hilbert order, super-triangles, LastCavity). With 4^d << n many points share "
-                "a cell and keep their random order: the walks grow. The auto depth is " +
+                ", Hilbert order on the fixed grid, without the adaptive refinement, "
+                "super-triangles, LastCavity). With 4^d << n many points share a cell and keep "
+                "their random order: the walks grow. The auto depth is " +
                 std::to_string(autoDepth) + ".";
   tab.header = {"depth d", "4^d / n", "uniform N_search", "uniform N_cavity", "uniform t (s)",
                 "clustered N_search", "clustered N_cavity", "clustered t (s)"};
@@ -236,8 +241,8 @@ void depthTable(const ch::Options& o, std::size_t n) {
   ch::Progress prog("depth table", depths.size());
   std::size_t done = 0;
   for (int d : depths) {
-    const Run u = triangulate(pu, Order::Hilbert, d, true);
-    const Run c = triangulate(pc, Order::Hilbert, d, true);
+    const Run u = triangulate(pu, Order::HilbertFixed, d, true);
+    const Run c = triangulate(pc, Order::HilbertFixed, d, true);
     tab.add({std::to_string(d) + (d == autoDepth ? " (auto)" : ""),
              ch::fmt("%.3g", std::pow(4.0, d) / double(n)), ch::fmt("%.2f", u.nSearch),
              ch::fmt("%.2f", u.nCavity), ch::fmt("%.3g", u.tTotal), ch::fmt("%.2f", c.nSearch),
@@ -427,6 +432,53 @@ void brioComparison(const ch::Options& o, const std::vector<std::size_t>& sizes,
   ch::runGnuplot(o, "fig_brio_compare.gp");
 }
 
+// ---- The fixed grid against the adaptive order (issue 19) -----------------------------------
+
+// The outlier figure: uniform points plus one point at (1e12, 1e12). On the fixed grid all the
+// uniform points share one cell and come in input (random) order, so the walks grow like
+// sqrt(n); the adaptive order sorts that cell again over its own box. Then a table of the three
+// families that defeat a fixed grid, at one size.
+void outlierComparison(const ch::Options& o, const std::vector<std::size_t>& sizes,
+                       std::size_t fixedMax, std::size_t tableN) {
+  ch::Table tab;
+  tab.caption = "Fixed grid against the adaptive Hilbert order (hilbertOrder(p, 0, false) and "
+                "hilbertOrder(p)): delaunayTrgl with super-triangles and LastCavity, every "
+                "triangulation checked exactly; t includes the ordering. The fixed grid only "
+                "up to n = " + sci(fixedMax) + ": its walks grow like sqrt(n).";
+  tab.header = {"input", "n", "order", "N_search", "N_cavity", "t (s)", "checked"};
+  std::ostringstream dat;
+  dat << "# outlier family: n order(0 fixed grid, 1 adaptive) nsearch ncavity t\n";
+  std::size_t total = 3 * 2, done = 0;
+  for (std::size_t n : sizes) total += n <= fixedMax ? 2 : 1;
+  ch::Progress prog("fixed grid against adaptive", total);
+  auto row = [&](const char* name, const XY& p, Order ord) {
+    const Run r = triangulate(p, ord, 0, true);
+    tab.add({name, sci(p.size() / 2), ord == Order::Hilbert ? "Hilbert, adaptive" : orderName(ord),
+             ch::fmt("%.2f", r.nSearch),
+             ch::fmt("%.2f", r.nCavity), ch::fmt("%.3g", r.tTotal), r.checked ? "exact" : "no"});
+    prog.update(++done);
+    return r;
+  };
+  for (Order ord : {Order::HilbertFixed, Order::Hilbert}) {
+    for (std::size_t n : sizes) {
+      if (ord == Order::HilbertFixed && n > fixedMax) continue;
+      const Run r = row("uniform + outlier at (1e12, 1e12)", dt::outlierPoints(n, 1900 + n), ord);
+      dat << n << " " << (ord == Order::Hilbert) << " " << r.nSearch << " " << r.nCavity << " "
+          << r.tTotal << "\n";
+    }
+    dat << "\n\n";  // one gnuplot index per order
+  }
+  const XY cluster = dt::clusterBesideUniform(tableN, 1901);
+  const XY logRadius = dt::logRadiusPoints(tableN, 1902);
+  for (Order ord : {Order::HilbertFixed, Order::Hilbert})
+    row("cluster of width 1e-9 beside uniform", cluster, ord);
+  for (Order ord : {Order::HilbertFixed, Order::Hilbert})
+    row("radii log-uniform in [1e-6, 1e6]", logRadius, ord);
+  tab.emit(o, "table_outlier");
+  ch::writeOut(o, "fig_outlier_walk.dat", dat.str());
+  ch::runGnuplot(o, "fig_outlier_walk.gp");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -458,6 +510,8 @@ int main(int argc, char** argv) {
     keysVersusSort(o, std::min<std::size_t>(maxN, o.quick ? 100000 : 1000000), values);
     brioFigure(o);
     brioComparison(o, upTo({1000, 10000, 100000, 1000000}), o.quick ? 10000 : 30000, 1000000, values);
+    outlierComparison(o, upTo({1000, 3000, 10000, 30000, 100000, 300000, 1000000}),
+                      o.quick ? 10000 : 100000, o.quick ? 10000 : 100000);
     values.write();
     return 0;
   });

@@ -32,6 +32,8 @@ FIGSIZES = " fig2_1 1400 780" . \
            " fig_incircle_naive 1400 800" . \
            " fig_incircle_robust 1400 800" . \
            " fig_ladder_time 1000 700" . \
+           " fig_outlier_walk 1400 640" . \
+           " fig_time_per_point 1000 600" . \
            " fig_outside_hull 1200 1200" . \
            " fig_parabola_cavity 900 640" . \
            " fig_recovery_frames 1500 1100" . \

@@ -1,0 +1,45 @@
+// Going further (issue 18): the fast kernel on several cores. The same Bowyer-Watson insertion
+// as fast_delaunay.h, run by several threads on one shared triangulation: each insertion locks
+// every triangle it reads or writes (its cavity and the cavity's outer neighbours) with a
+// try-lock, and an insertion that meets another thread's lock gives up and is retried later,
+// alone. Why this gives DT(S): book/parallel.md.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "fast_delaunay.h"
+
+namespace dt {
+
+/// What the parallel run did, beside the FastStats of the result.
+struct ParallelStats {
+  int threads = 1;                    ///< threads used (1: the sequential kernel was called)
+  std::uint64_t parallelPoints = 0;   ///< points handed to the concurrent rounds
+  std::uint64_t deferred = 0;         ///< of those, insertions that met a lock and were redone alone
+  int parallelRounds = 0;             ///< BRIO rounds inserted concurrently
+  double parallelSeconds = 0;         ///< wall time of the concurrent rounds (deferred ones included)
+};
+
+/// The number of threads `--threads` means by default: the machine's hardware threads (at least 1).
+int defaultThreadCount();
+
+/// Going further (parallel page): DT(S) of xy = x0 y0 x1 y1 ... with `threads` threads. threads
+/// <= 1 calls fastDelaunay(xy, opt) itself. Otherwise the small first BRIO rounds (opt.order
+/// must be FastOrder::RadixBrio) are inserted by one thread, and each larger round is cut into
+/// `threads` consecutive pieces of its Hilbert order, inserted concurrently; insertions that
+/// meet another thread's triangles are redone by one thread after the round. The result is the
+/// exact DT(S) whenever it is unique (points in general position: then equal to fastDelaunay's),
+/// otherwise a Delaunay triangulation of S (checkDelaunay validates it); duplicates are merged
+/// into the smallest-numbered equal point, as fastDelaunay does; opt.insertionNumbering is
+/// honoured, and opt.progress is called by the calling thread only (during a concurrent round
+/// with estimated counts: its own piece's, times the number of threads). Same exceptions as
+/// fastDelaunay, and std::invalid_argument for a ladder switch or another order when threads >
+/// 1. A round is
+/// inserted concurrently when each thread gets at least minPiece points of it (the tests make it
+/// small, to make threads meet on small inputs).
+FastResult fastDelaunayParallel(const std::vector<double>& xy, int threads,
+                                const FastOptions& opt = {}, ParallelStats* pstats = nullptr,
+                                int minPiece = 2048);
+
+}  // namespace dt

@@ -1,0 +1,142 @@
+/// \file test_parallel.cpp Tests of the parallel kernel (code/fast_parallel.h, the going-further page on both cores): the exact DT(S), the sequential kernel's triangulation in general position, a Delaunay triangulation on degenerate input.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <stdexcept>
+#include <vector>
+
+#include "check.h"
+#include "degenerate.h"
+#include "fast_delaunay.h"
+#include "fast_parallel.h"
+#include "support.h"
+#include "triangulate.h"
+
+namespace {
+
+using Tris = std::vector<std::array<int, 3>>;
+
+Tris canonical(Tris t) {
+  for (auto& f : t) std::rotate(f.begin(), std::min_element(f.begin(), f.end()), f.end());
+  std::sort(t.begin(), t.end());
+  return t;
+}
+
+// Runs the parallel kernel, validates the result exactly (every point not reported as a
+// duplicate must be a vertex), and returns it.
+dt::FastResult parallelChecked(const dttest::XY& p, int threads, int minPiece,
+                               dt::ParallelStats* ps = nullptr) {
+  dt::FastResult r = dt::fastDelaunayParallel(p, threads, {}, ps, minPiece);
+  std::vector<char> must(p.size() / 2, 1);
+  for (const auto& d : r.duplicates) must[std::size_t(d.first)] = 0;
+  const dt::CheckReport c = dt::checkDelaunay(p, r.tri, &must);
+  INFO(c.error);
+  CHECK(c.ok);
+  return r;
+}
+
+}  // namespace
+
+TEST_CASE("parallel the same triangulation as the sequential kernel in general position") {
+  // Small pieces and more threads than cores make the threads meet (and defer) often.
+  std::uint64_t deferred = 0, concurrent = 0;
+  for (std::size_t n : {3000u, 40000u, 200000u}) {
+    const dttest::XY p = dttest::uniformPoints(n, 7 + n);
+    const Tris seq = canonical(dt::fastDelaunay(p).tri);
+    for (int threads : {2, 3, 8})
+      for (int minPiece : {4, 2048}) {
+        CAPTURE(n);
+        CAPTURE(threads);
+        CAPTURE(minPiece);
+        dt::ParallelStats ps;
+        const dt::FastResult r = parallelChecked(p, threads, minPiece, &ps);
+        CHECK(ps.threads == threads);
+        CHECK(r.stats.insertions == n);
+        CHECK(canonical(r.tri) == seq);
+        deferred += ps.deferred;
+        concurrent += ps.parallelPoints;
+      }
+  }
+  CHECK(concurrent > 0);
+  MESSAGE("insertions deferred after meeting a lock: " << deferred << " of " << concurrent);
+}
+
+TEST_CASE("parallel a Delaunay triangulation on every degenerate family") {
+  // Several Delaunay triangulations exist: the result must be one of them (checked exactly),
+  // with the sequential kernel's number of triangles and the same merged duplicates.
+  for (const dtdeg::Family& f : dtdeg::families()) {
+    CAPTURE(f.name);
+    const dt::FastResult seq = dt::fastDelaunay(f.points);
+    for (int threads : {2, 4}) {
+      const dt::FastResult r = parallelChecked(f.points, threads, 8);
+      CHECK(r.tri.size() == seq.tri.size());
+      CHECK(r.duplicates == seq.duplicates);
+    }
+  }
+}
+
+TEST_CASE("parallel rejects what the sequential kernel rejects") {
+  const dttest::XY collinear = {0, 0, 1, 1, 2, 2, 3, 3};
+  CHECK_THROWS_AS(dt::fastDelaunayParallel(collinear, 2), dt::DegenerateInput);
+  CHECK_THROWS_AS(dt::fastDelaunayParallel({0, 0, 0, 0, 1, 1}, 2), dt::DegenerateInput);
+  CHECK_THROWS_AS(dt::fastDelaunayParallel({0, 0, 1, 0, 0, NAN}, 2), std::invalid_argument);
+  CHECK_THROWS_AS(dt::fastDelaunayParallel({0, 0, 1, 0, 0}, 2), std::invalid_argument);
+  dt::FastOptions o;
+  o.order = dt::FastOrder::Hilbert;
+  CHECK_THROWS_AS(dt::fastDelaunayParallel(dttest::uniformPoints(100, 1), 2, o),
+                  std::invalid_argument);
+}
+
+TEST_CASE("parallel the command line gives the same triangles with one and two threads") {
+  const dttest::XY p = dttest::uniformPoints(30000, 99);
+  const std::string in = dttest::tmpPath("parallel_in.node");
+  dttest::writeText(in, dttest::nodeText(p));
+  Tris got[2];
+  for (int k = 0; k < 2; ++k) {
+    const std::string out = dttest::tmpPath("parallel_out_" + std::to_string(k + 1));
+    const dttest::CliResult r =
+        dttest::runCli("'" + in + "' -o '" + out + "' --threads " + std::to_string(k + 1));
+    INFO(r.err);
+    REQUIRE(r.status == 0);
+    got[k] = canonical(dttest::readEle(out + ".ele", 1));
+  }
+  CHECK(!got[0].empty());
+  CHECK(got[0] == got[1]);
+  CHECK(got[0] == canonical(dt::fastDelaunay(p).tri));
+  const dttest::CliResult bad = dttest::runCli("'" + in + "' -o x --threads 0");
+  CHECK(bad.status == 2);
+  CHECK(bad.err.find("--threads") != std::string::npos);
+}
+
+TEST_CASE("parallel numbers the output in insertion order and reports progress on request") {
+  dttest::XY p = dttest::uniformPoints(60000, 5);
+  p.insert(p.end(), {p[10], p[11], p[20], p[21]});  // two duplicates
+  const dt::FastResult plain = dt::fastDelaunayParallel(p, 2, {}, nullptr, 64);
+  dt::FastOptions o;
+  o.insertionNumbering = true;
+  o.progressEvery = 1000;
+  std::size_t calls = 0, last = 0;
+  bool increasing = true;
+  o.progress = [&](std::size_t done, std::size_t total, const dt::FastStats&) {
+    increasing = increasing && done >= last && done <= total && total == p.size() / 2;
+    last = done;
+    ++calls;
+  };
+  const dt::FastResult r = dt::fastDelaunayParallel(p, 2, o, nullptr, 64);
+  REQUIRE(r.inserted.size() == p.size() / 2);
+  REQUIRE(r.points.size() == p.size());
+  for (std::size_t i = 0; i < r.inserted.size(); ++i) {
+    CHECK(r.points[2 * i] == p[2 * std::size_t(r.inserted[i])]);
+    CHECK(r.points[2 * i + 1] == p[2 * std::size_t(r.inserted[i]) + 1]);
+  }
+  Tris mapped = r.tri;
+  for (auto& t : mapped)
+    for (int& v : t) v = r.inserted[std::size_t(v)];
+  CHECK(canonical(mapped) == canonical(plain.tri));
+  CHECK(r.duplicates == plain.duplicates);
+  CHECK(r.duplicates.size() == 2);
+  CHECK(calls > 10);
+  CHECK(increasing);
+}
