@@ -19,7 +19,6 @@
 set -euo pipefail
 
 repo=$(cd "$(dirname "$0")/.." && pwd)
-list="$repo/tests/mutants.txt"
 jobs=${MUTANTS_JOBS:-2}
 timeout_s=${MUTANTS_TIMEOUT:-300}
 test_args=${MUTANTS_TEST_ARGS:---source-file-exclude=*test_progress*}
@@ -29,8 +28,10 @@ trap 'rm -rf "$work"' EXIT
 src="$work/src"
 build="$work/build"
 mkdir -p "$src"
-# The tracked files as they are now (uncommitted edits included), nothing else.
-(cd "$repo" && git ls-files -z | tar --null -T - -cf -) | tar -xf - -C "$src"
+# The repository as it is now (uncommitted edits included), without .git and build directories.
+(cd "$repo" && find . \( -path ./.git -o -path './build*' \) -prune -o -type f -print0 |
+  xargs -0 cp --parents -t "$src")
+list="$src/tests/mutants.txt"  # the copy's: editing the repository's list cannot disturb a run
 
 # MUTANTS_CHECK_ONLY=1: only check that every mutant applies (its text occurs exactly once).
 check_only=${MUTANTS_CHECK_ONLY:-0}
@@ -80,7 +81,7 @@ while IFS= read -r line || [ -n "$line" ]; do
   if [ "$check_only" = 1 ]; then
     echo "APPLIES   $name"; continue
   fi
-  cp -p "$target" "$work/saved"
+  cp "$target" "$work/saved"
   printf '%s' "${content/"$orig"/"$repl"}" >"$target"
   start=$(date +%s)
   if ! build_tests; then
@@ -91,13 +92,15 @@ while IFS= read -r line || [ -n "$line" ]; do
     detail="every test passed"
   else
     status="KILLED   "; killed=$((killed + 1))
-    failed=$(grep -m1 -A1 '^TEST CASE:' "$work/test.log" | sed -n 's/^TEST CASE: *//p' || true)
+    # The test case whose block holds the first error (blocks of passing tests with a MESSAGE
+    # also start with "TEST CASE:").
+    failed=$(awk '/^TEST CASE:/ { tc = $0; sub(/^TEST CASE: */, "", tc) }
+                  /ERROR|CRASHED/ { if (tc != "") { print tc; exit } }' "$work/test.log" || true)
     [ -n "$failed" ] || failed="no test case named: crash or timeout ($(tail -1 "$work/test.log"))"
     detail="first failing: $failed"
   fi
-  # Restore the file; the next build recompiles it (touch: its time must change).
-  cp -p "$work/saved" "$target"
-  touch "$target"
+  # Restore the file; a plain cp gives it a new time, so the next build recompiles it.
+  cp "$work/saved" "$target"
   echo "$status $name ($file, $(( $(date +%s) - start )) s): $desc; $detail"
 done <"$list"
 

@@ -100,18 +100,20 @@ class HardInputs {
  public:
   explicit HardInputs(std::uint64_t seed) : g_(seed) {}
   int family() const { return family_; }
-  static constexpr int kOrientFamilies = 7;
-  static constexpr int kIncircleFamilies = 8;
+  static constexpr int kOrientFamilies = 9;
+  static constexpr int kIncircleFamilies = 9;
   static const char* orientName(int f) {
     static const char* n[] = {"collinear lattice", "lattice moved 1-2 ulps", "rounded near-collinear",
                               "exponent spread 2^-1000..2^1000", "subnormal",
+                              "near (1,1) and (-1,-1), ulps apart", "underflowing products",
                               "whole range 2^-1074..2^1023", "generic"};
     return n[f];
   }
   static const char* incircleName(int f) {
     static const char* n[] = {"Pythagorean r = 1185665", "Pythagorean moved 1-2 ulps",
                               "lattice rectangle", "rounded circle", "exponent spread",
-                              "subnormal", "whole range 2^-1074..2^1023", "generic"};
+                              "subnormal", "rounded circle, underflowing products",
+                              "whole range 2^-1074..2^1023", "generic"};
     return n[f];
   }
 
@@ -152,7 +154,23 @@ class HardInputs {
         v[5] = nudge(v[1] + t * (v[3] - v[1]), uni(-1, 1));
         break;
       }
-      case 5:  // every coordinate at its own exponent anywhere in the range (overflow, underflow)
+      case 5: {  // a, b near (1, 1), c near (-1, -1), ulps apart: the largest rounding errors
+        const double s = std::ldexp(1.0, uni(-20, 20));
+        v[0] = (std::nextafter(1.0, 0.0) - uni(-40, 40) * 0x1p-53) * s;
+        v[1] = (1 - uni(-40, 40) * 0x1p-53) * s;
+        v[2] = v[0] + uni(-40, 40) * 0x1p-52 * s, v[3] = v[1] + uni(-40, 40) * 0x1p-52 * s;
+        v[4] = (-1 + uni(0, 80) * 0x1p-53) * s, v[5] = (-1 + uni(0, 80) * 0x1p-53) * s;
+        break;
+      }
+      case 6: {  // rounded near-collinear at 2^-560..2^-500: products near the subnormals
+        const int e = uni(-560, -500);
+        for (int i = 0; i < 4; ++i) v[i] = std::ldexp(real(), e);
+        const double t = 3 * real() + 0.5;
+        v[4] = nudge(v[0] + t * (v[2] - v[0]), uni(-2, 2));
+        v[5] = nudge(v[1] + t * (v[3] - v[1]), uni(-2, 2));
+        break;
+      }
+      case 7:  // every coordinate at its own exponent anywhere in the range (overflow, underflow)
         for (int i = 0; i < 6; ++i) v[i] = std::ldexp(real(), uni(-1074, 1023));
         break;
       default:
@@ -231,7 +249,17 @@ class HardInputs {
         }
         break;
       }
-      case 6:  // every coordinate at its own exponent anywhere in the range (overflow, underflow)
+      case 6: {  // rounded circle at 2^-290..2^-250: degree-4 products near the subnormals
+        const double s = std::ldexp(1.0, uni(-290, -250)), ox = real() * s, oy = real() * s;
+        const double r = s * (0.25 + std::fabs(real()));
+        for (int i = 0; i < 4; ++i) {
+          const double a = 6.283185307179586 * (0.5 + 0.5 * real());
+          v[2 * i] = nudge(ox + r * std::cos(a), uni(-2, 2));
+          v[2 * i + 1] = nudge(oy + r * std::sin(a), uni(-2, 2));
+        }
+        break;
+      }
+      case 7:  // every coordinate at its own exponent anywhere in the range (overflow, underflow)
         for (int i = 0; i < 8; ++i) v[i] = std::ldexp(real(), uni(-1074, 1023));
         break;
       default:

@@ -2,6 +2,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -265,4 +266,26 @@ TEST_CASE("2.3.5 'BRIO is useless' is false for points on a curve: Hilbert order
   // with n (sec2_3_5_hilbert: 47 at 10^3, 244 at 10^4); BRIO's random rounds keep it near 3.
   CHECK(h.meanCavity() > 50);
   CHECK(b.meanCavity() < 5);
+}
+
+TEST_CASE("2.3.5 Hilbert coordinates exist only inside the initial square: outside points collapse onto its boundary cells") {
+  // "Each point x of R^2 has its coordinates on the Hilbert curve": Listing 2.8 does return d
+  // digits for any point, but outside the initial square they are those of the nearest boundary
+  // cell, whatever the distance: far-apart points share a key, and the order says nothing.
+  const int d = 16;
+  auto digits = [&](double x, double y) {
+    std::array<int, 16> b{};
+    dt::HilbertCoord(x, y, 0.5, 0.5, 0.5, 0, 0, 0.5, d, b.data());  // the unit square
+    return b;
+  };
+  const double in = 1 - 0x1p-20;  // inside, in the last column of cells (cell size 2^-16)
+  CHECK(digits(3, 0.3) == digits(in, 0.3));
+  CHECK(digits(30, 0.3) == digits(in, 0.3));
+  CHECK(digits(1e300, 0.3) == digits(in, 0.3));
+  CHECK(digits(-7, 0.8) == digits(0x1p-20, 0.8));
+  CHECK(digits(5, 5) == digits(in, in));          // beyond a corner: the corner cell
+  CHECK(digits(0.3, -2) == digits(0.3, 0x1p-20));
+  // Inside, points one cell apart are told apart.
+  CHECK(digits(in, 0.3) != digits(in - 0x1p-15, 0.3));
+  CHECK(digits(0.3, 0.3) != digits(0.3, 0.3 + 0x1p-15));
 }

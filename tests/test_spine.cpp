@@ -277,6 +277,13 @@ TEST_CASE("spine the validator rejects what is not a Delaunay triangulation") {
   CHECK_FALSE(checkDelaunay(dart, {{0, 1, 2}, {0, 2, 3}}).ok);
   // Overlapping triangles covering a region twice.
   CHECK_FALSE(checkDelaunay(xy, {{0, 1, 2}, {0, 1, 2}}).ok);
+  // A flat triangle (three collinear points) beside a real one: not counter-clockwise.
+  const std::vector<double> flat = {0, 0, 1, 0, 2, 0, 1, 1};
+  CHECK(checkDelaunay(flat, {{0, 1, 3}, {1, 2, 3}}).ok);
+  CHECK_FALSE(checkDelaunay(flat, {{0, 1, 3}, {1, 2, 3}, {0, 1, 2}}).ok);
+  CHECK_FALSE(checkDelaunay(flat, {{0, 2, 3}, {0, 1, 2}}).ok);
+  CHECK_FALSE(checkDelaunay({0, 0, 1, 0, 2, 0}, {{0, 1, 2}}).ok);  // a flat triangle alone
+  CHECK_FALSE(checkDelaunay({0, 0, 1, 1, 2, 2}, {{0, 1, 2}}).ok);
 }
 
 TEST_CASE("spine DT(S) by the hull method on degenerate families is validated exactly") {
