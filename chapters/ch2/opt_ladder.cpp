@@ -153,6 +153,18 @@ int main(int argc, char** argv) {
   }
   t.emit(o, "table_ladder");
   ch::writeOut(o, "ladder.dat", dat);
+  // What the fast-kernel page says of three steps, from this run: the walk step (3), the
+  // inlined predicates (4) and the cavities before (4) and after (5) the BRIO order.
+  ch::Values v(o, "opt_ladder");
+  const double walkGain = best[2].seconds / best[3].seconds;
+  const double inlineGain = best[3].seconds / best[4].seconds;
+  v.num("ladder.walk_speedup", walkGain, "%.2f");
+  v.set("ladder.walk_verdict", walkGain > 1.1 ? "a gain" : (walkGain < 0.9 ? "a loss" : "about even"));
+  v.num("ladder.inline_speedup", inlineGain, "%.2f");
+  v.verdict("ladder.inline_verdict", inlineGain < 1.1, "worth little", "worth having");
+  v.num("ladder.hilbert_cavity", best[4].cavity, "%.2f");
+  v.num("ladder.brio_cavity", best[5].cavity, "%.2f");
+  v.write();
   ch::runGnuplot(o, "fig_ladder_time.gp");
   return 0;
 }
