@@ -38,8 +38,8 @@ const char* kUsage =
     "usage: delaunay2d INPUT -o OUT [options]\n"
     "  INPUT          Triangle .node file, or a text file of 'x y' lines\n"
     "  -o OUT         write OUT.ele (OUT may also end in .ele)\n"
-    "  --stats        print points, triangles, triangulation_seconds, mean walk steps and\n"
-    "                 mean cavity size, one per line, on stdout\n"
+    "  --stats        print points, triangles, triangulation_seconds, mean walk steps,\n"
+    "                 mean cavity size and peak memory, one per line, on stdout\n"
     "  --svg FILE     also write an SVG drawing of the mesh\n"
     "  --msh FILE     also write a Gmsh ASCII (2.2) mesh\n"
     "  --no-check     skip the exact validation of the result (on by default)\n"
@@ -558,6 +558,7 @@ int main(int argc, char** argv) {
                   st.meanSearch(), st.meanCavity());
       if (opt.superMethod)
         std::printf("recovery_flips: %llu\n", (unsigned long long)fs.flips);
+      std::printf("peak_memory_mb: %.1f\n", double(dt::peakResidentKB()) / 1024.0);
     }
     return 0;
   } catch (const dt::InputError& e) {
