@@ -259,6 +259,9 @@ int main(int argc, char** argv) {
         values.set("par.load", loadAverage());
         values.set("par.speedup2", both ? ch::fmt("%.2f", (*seq)[0] / (*two)[0]) : "(not measured)");
         values.set("par.cpu_ratio2", both ? ch::fmt("%.2f", (*two)[1] / (*seq)[1]) : "(not measured)");
+        values.set("par.two_verdict",
+                   !both ? "not measured"
+                         : ((*two)[0] < (*seq)[0] ? "faster than one thread" : "slower than one thread"));
         const bool ref = both && cg;
         const double w2 = ref ? (*two)[0] / (*cg)[0] : 0, c1 = ref ? (*seq)[1] / (*cg)[1] : 0;
         values.set("par.cgal_wall2", ref ? ch::fmt("%.2f", w2) : "(not measured)");
