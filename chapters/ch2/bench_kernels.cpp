@@ -78,18 +78,6 @@ double wallSeconds() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
-// Peak resident memory so far (VmHWM of /proc/self/status), in kB.
-long peakKBNow() {
-  FILE* f = std::fopen("/proc/self/status", "r");
-  if (!f) return 0;
-  char line[256];
-  long kb = 0;
-  while (std::fgets(line, sizeof line, f))
-    if (std::strncmp(line, "VmHWM:", 6) == 0) kb = std::atol(line + 6);
-  std::fclose(f);
-  return kb;
-}
-
 std::string loadAverage() {
   double a[3] = {0, 0, 0};
   if (FILE* f = std::fopen("/proc/loadavg", "r")) {
@@ -228,7 +216,7 @@ Measure runChild(Method m, Family f, std::size_t n, bool check) {
       const long count = triangulate(m, xy, tri);
       out[0] = cpuSeconds() - t0;
       out[3] = wallSeconds() - w0;
-      out[4] = double(peakKBNow());
+      out[4] = double(dt::peakResidentKB());
       out[2] = double(xy.size() / 2);
       if (check && (m == Method::Fast || m == Method::FastParallel)) {
         const dt::CheckReport c = dt::checkDelaunay(xy, tri);

@@ -49,14 +49,8 @@ double wallNow() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
-// Peak resident memory so far (VmHWM of /proc/self/status), in MB; 0 if unreadable.
-double peakMB() {
-  std::ifstream f("/proc/self/status");
-  std::string line;
-  while (std::getline(f, line))
-    if (line.compare(0, 6, "VmHWM:") == 0) return std::atof(line.c_str() + 6) / 1024.0;
-  return 0;
-}
+// Peak resident memory so far (VmHWM), in MB; 0 if unreadable.
+double peakMB() { return double(dt::peakResidentKB()) / 1024.0; }
 
 std::string loadAverage() {
   std::ifstream f("/proc/loadavg");
