@@ -6,7 +6,7 @@
 //   book_tool prune HTML_DIR
 //     removes the empty "File Reference" pages Doxygen writes for the page files themselves.
 //   book_tool check HTML_DIR
-//     fails on literal markup in the rendered text, too-wide tables and broken local links.
+//     fails on literal markup in the rendered text and broken local links (layout: book/layout_check.sh).
 #include <dirent.h>
 #include <sys/stat.h>
 

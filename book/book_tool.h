@@ -472,38 +472,6 @@ inline std::string replaceMath(const std::string& s, const std::string& with) {
   return out;
 }
 
-/// Compresses formula source to about its rendered width: commands count one character.
-inline std::string mathWidth(const std::string& s) {
-  std::string out;
-  std::size_t i = 0;
-  while (i < s.size()) {
-    std::string closer;
-    if (s.compare(i, 2, "\\(") == 0) closer = "\\)";
-    else if (s.compare(i, 2, "\\[") == 0) closer = "\\]";
-    if (closer.empty()) {
-      out += s[i++];
-      continue;
-    }
-    const std::size_t end = s.find(closer, i + 2);
-    if (end == std::string::npos) {
-      out += s[i++];
-      continue;
-    }
-    for (std::size_t j = i + 2; j < end; ++j) {
-      if (s[j] == '\\') {
-        ++j;
-        while (j < end && std::isalpha(static_cast<unsigned char>(s[j]))) ++j;
-        --j;
-        out += 'x';
-      } else if (s[j] != '{' && s[j] != '}' && s[j] != '^' && s[j] != '_') {
-        out += s[j];
-      }
-    }
-    i = end + 2;
-  }
-  return out;
-}
-
 /// The part of a Doxygen page a reader reads: from the title to the footer.
 inline std::string readableRegion(const std::string& html) {
   std::size_t from = html.find("<div class=\"header\">");
@@ -514,46 +482,6 @@ inline std::string readableRegion(const std::string& html) {
   return html.substr(from, to - from);
 }
 
-/// Estimated width, in pixels, below which a table cannot shrink: per column, its longest
-/// unbreakable run of text (formulas by their rendered size) at about 7.5 px a character,
-/// plus the cell padding and border of Doxygen's table style. Browsers lay an auto-width
-/// table out at least that wide; if that exceeds the content column, the table sticks out.
-inline double tableMinWidth(const std::string& table) {
-  std::vector<double> col;
-  std::size_t i = 0;
-  const std::string lo = lower(table);
-  while ((i = lo.find("<tr", i)) != std::string::npos) {
-    const std::size_t rowEnd = std::min(lo.find("</tr", i), lo.size());
-    std::size_t c = 0, j = i;
-    while (true) {
-      const std::size_t td = lo.find("<td", j), th = lo.find("<th", j);
-      std::size_t at = std::min(td, th);
-      if (at == std::string::npos || at >= rowEnd) break;
-      const std::size_t start = lo.find('>', at) + 1;
-      std::size_t next = std::min({lo.find("<td", start), lo.find("<th", start), rowEnd});
-      const std::string text =
-          mathWidth(decodeEntities(stripTags(table.substr(start, next - start))));
-      std::size_t longest = 0, run = 0;
-      for (char ch : text) {
-        if (std::isspace(static_cast<unsigned char>(ch))) run = 0;
-        else if ((static_cast<unsigned char>(ch) & 0xC0) != 0x80) longest = std::max(longest, ++run);
-      }
-      if (col.size() <= c) col.resize(c + 1, 0.0);
-      col[c] = std::max(col[c], 7.5 * double(longest) + 16.0);
-      ++c;
-      j = next;
-    }
-    i = rowEnd;
-  }
-  double w = 0;
-  for (double x : col) w += x;
-  return w;
-}
-
-/// The width of the content column the check assumes: a 1200-pixel window (the screenshots')
-/// minus the side bar (TREEVIEW_WIDTH = 420 in the Doxyfile) and the page margins.
-constexpr double kContentWidth = 740.0;
-
 /// True for a page of the book (book_tool gives each one its navigation bar); the API
 /// reference's pages quote C++ signatures and comments, where * and _{ are code.
 inline bool isBookPage(const std::string& html) {
@@ -561,38 +489,13 @@ inline bool isBookPage(const std::string& html) {
 }
 
 /// Everything on a rendered page that a reader should not see: markup Doxygen left as typed
-/// (outside code and formulas), unsubstituted @{..} or @test{..}, and tables that cannot fit
-/// the content column. On pages of the API reference only unprocessed commands count.
+/// (outside code and formulas) and unsubstituted @{..} or @test{..}. Whether tables and
+/// figures fit the column is measured in a browser (book/layout_check.sh). On pages of the
+/// API reference only unprocessed commands count.
 inline std::vector<Defect> renderedDefects(const std::string& html) {
   std::vector<Defect> out;
   const bool book = isBookPage(html);
   std::string region = readableRegion(html);
-  // Tables first (their text is checked below with the rest).
-  {
-    const std::string lo = lower(region);
-    std::size_t i = 0;
-    while ((i = lo.find("<table", i)) != std::string::npos) {
-      const std::size_t end = lo.find("</table", i);
-      if (end == std::string::npos) break;
-      const std::string t = region.substr(i, end - i);
-      const double w = tableMinWidth(dropElements(t, "<script", "script"));
-      if (book && w > kContentWidth) {
-        std::string head = decodeEntities(stripTags(t.substr(0, std::min<std::size_t>(t.size(), 600))));
-        std::string flat;
-        for (char c : head) {
-          if (std::isspace(static_cast<unsigned char>(c))) {
-            if (!flat.empty() && flat.back() != ' ') flat += ' ';
-          } else {
-            flat += c;
-          }
-        }
-        out.push_back({"a table at least " + std::to_string(int(w)) + " px wide (content column " +
-                           std::to_string(int(kContentWidth)) + " px)",
-                       flat.substr(0, 100)});
-      }
-      i = end + 1;
-    }
-  }
   for (const char* el : {"script", "style", "pre", "code"})
     region = dropElements(region, std::string("<") + el, el);
   region = dropElements(region, "<div class=\"fragment\"", "div");

@@ -30,7 +30,7 @@ make         make               cmake (the generator)
 gnuplot      gnuplot-nox        chapters/common.h runGnuplot
 doxygen      doxygen            book/CMakeLists.txt
 clang++      clang              scripts/fuzz.sh
-chromium     chromium           README (looking at the book) and tests of the book
+chromium     chromium           book/layout_check.sh (the book's layout, measured) and tests of the book
 perf         optional:linux-perf  chapters/ch2/sec2_3_4_algorithms.cpp (the profile table; optional)
 apt-get      base               scripts/deps.sh
 dpkg-query   base               scripts/deps.sh scripts/check_deps.sh
@@ -66,6 +66,7 @@ xargs        base               scripts
 wc           base               scripts
 tr           base               scripts
 cut          base               scripts
+seq          base               book/layout_check_selftest.sh
 diff         base               tests
 env          base               scripts (#!/usr/bin/env bash)
 bash         base               scripts
@@ -166,7 +167,7 @@ scan_sources() {
   local f
   # Shell scripts: the first word of every pipeline segment (after VAR=value assignments);
   # $(...) contents become segments of their own before quoted strings are dropped.
-  for f in scripts/*.sh .ci/run; do
+  for f in scripts/*.sh book/*.sh web/*.sh .ci/run; do
     [ -f "$f" ] || continue
     perl -0777 -ne '
       s/^[ \t]*#.*$//mg;                                  # comment lines

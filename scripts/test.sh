@@ -14,12 +14,13 @@ ctest --test-dir build --output-on-failure -j"$(nproc)" | tee -a "$log"
 # too: the tests run build-asan/delaunay2d); any report aborts its test. Then a short fuzz run.
 # DT_SKIP_SANITIZERS=1 skips both (a quick local run). test_exercises is left out of the
 # sanitizer run: it builds and runs a student's copy of the project with scripts/exercise.sh
-# (shell machinery, already run once above), which would take minutes more for nothing new.
+# (shell machinery, already run once above), which would take minutes more for nothing new;
+# so is the book layout check's self-test (a shell script and a browser: no compiled code).
 if [ "${DT_SKIP_SANITIZERS:-0}" != 1 ]; then
   cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDT_SANITIZE=ON > /dev/null
   cmake --build build-asan -j"$(nproc)"  # everything: test_figures runs the chapter programs
   ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-    ctest --test-dir build-asan --output-on-failure -j"$(nproc)" -E '^test_exercises$' | tee -a "$log"
+    ctest --test-dir build-asan --output-on-failure -j"$(nproc)" -E '^(test_exercises|book_layout_check_self_test)$' | tee -a "$log"
   bash scripts/fuzz.sh "${DT_FUZZ_SECONDS:-60}"
 fi
 # ctest's own summaries ("N% tests passed, F tests failed out of T"), added up.

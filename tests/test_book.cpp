@@ -386,25 +386,6 @@ TEST_CASE("book the rendered check finds every kind of raw markup a reader saw")
   CHECK(one[0].find("**") != std::string::npos);
 }
 
-TEST_CASE("book the rendered check finds a table wider than the content column") {
-  std::string wide = "<table class=\"doxtable\"><tr>";
-  for (int c = 0; c < 14; ++c) wide += "<th>column&nbsp;number&nbsp;" + std::to_string(c) + "</th>";
-  wide += "</tr><tr>";
-  for (int c = 0; c < 14; ++c) wide += "<td>0.000123456</td>";
-  wide += "</tr></table>";
-  const auto d = booktool::renderedDefects(doxygenPage(wide));
-  REQUIRE(d.size() == 1);
-  CHECK(d[0].what.find("table") != std::string::npos);
-  // Long prose in few columns wraps: not too wide. Formulas count by their rendered size.
-  std::string words;
-  for (int w = 0; w < 100; ++w) words += "triangle ";
-  const std::string prose = "<table><tr><td>" + words + "</td><td>" + words +
-                            "</td><td>\\(\\lvert\\partial\\mathscr C\\rvert = \\lvert\\mathscr "
-                            "C\\rvert+2\\)</td></tr></table>";
-  CHECK(booktool::renderedDefects(doxygenPage(prose)).empty());
-  CHECK(booktool::tableMinWidth(wide) > booktool::kContentWidth);
-}
-
 TEST_CASE("book an unknown value key or test name stops the page build naming page and line") {
   const std::map<std::string, std::pair<std::string, std::string>> values = {
       {"s234.n", {"1000", "values_x.txt"}}};
