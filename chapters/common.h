@@ -163,19 +163,34 @@ struct Table {
     }
     return s.str();
   }
+  /// For the book, a table too wide for the text column is set as several narrower tables,
+  /// each of these column groups (indices into `header`) one table, in this order; the first
+  /// column (the row's key, n or the input) is repeated in each. Empty: one table.
+  std::vector<std::vector<std::size_t>> htmlParts;
+
   std::string html() const {
-    std::ostringstream s;
-    s << "<table class=\"doxtable\">\n";
-    if (!caption.empty()) s << "<caption>" << caption << "</caption>\n";
-    s << "<tr>";
-    for (const auto& h : header) s << "<th>" << h << "</th>";
-    s << "</tr>\n";
-    for (const auto& r : rows) {
-      s << "<tr>";
-      for (const auto& c : r) s << "<td>" << c << "</td>";
-      s << "</tr>\n";
+    std::vector<std::vector<std::size_t>> parts = htmlParts;
+    if (parts.empty()) {
+      parts.emplace_back();
+      for (std::size_t i = 0; i < header.size(); ++i) parts.back().push_back(i);
     }
-    s << "</table>\n";
+    std::ostringstream s;
+    for (std::size_t p = 0; p < parts.size(); ++p) {
+      std::vector<std::size_t> cols = parts[p];
+      if (p > 0 && (cols.empty() || cols.front() != 0)) cols.insert(cols.begin(), 0);
+      s << "<table class=\"doxtable\">\n";
+      if (!caption.empty())
+        s << "<caption>" << (p == 0 ? caption : "(continued)") << "</caption>\n";
+      s << "<tr>";
+      for (std::size_t c : cols) s << "<th>" << header.at(c) << "</th>";
+      s << "</tr>\n";
+      for (const auto& r : rows) {
+        s << "<tr>";
+        for (std::size_t c : cols) s << "<td>" << (c < r.size() ? r[c] : "") << "</td>";
+        s << "</tr>\n";
+      }
+      s << "</table>\n";
+    }
     return s.str();
   }
   /// Prints the Markdown and writes <stem>.md, <stem>.csv, <stem>.html.

@@ -390,6 +390,7 @@ void mpfr200(const ch::Options& o) {
   t.caption = "Is 200-bit MPFR exact? Its sign against the exact one (GMP integers)";
   t.header = {"input", "predicate", "wrong zeros", "flipped", "spurious nonzeros", "tried",
               "bits needed (max)", "example (hex), MPFR-200 vs exact"};
+  t.htmlParts = {{0, 1, 2, 3, 4, 5, 6}, {7}};  // the hex examples get a table of their own
   struct Tally {
     long wz = 0, fl = 0, sp = 0, n = 0;
     int bits = 0;
