@@ -15,5 +15,5 @@ for src in chapters/ch2/*.cpp; do
 done
 if [ -f book/CMakeLists.txt ]; then
   cmake --build build --target book
-  echo "book: build/book/html/index.html"
+  echo "book: build/book/student/index.html (teacher's edition: build/book/teacher/index.html)"
 fi
