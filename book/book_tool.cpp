@@ -1,8 +1,16 @@
 // The book's own build steps (run by the 'book' target, see book/CMakeLists.txt):
-//   book_tool prepare BOOK_DIR VALUES_DIR TESTS_DIR OUT_DIR
+//   book_tool sources SRC_ROOT OUT_ROOT EDITION
+//     copies code/ and tests/ of SRC_ROOT into OUT_ROOT as the edition (student or teacher)
+//     shows them: the student's without the solution regions (Doxygen reads this copy, for
+//     the snippets and the source browser).
+//   book_tool prepare BOOK_DIR VALUES_DIR TESTS_DIR OUT_DIR EDITION
 //     copies BOOK_DIR/*.md into OUT_DIR in the reading order of BOOK_DIR/order.txt, with
-//     @{key} and @test{name} replaced and previous/next links added, and writes the claims
-//     index; fails, naming page and line, on an unknown key or test name.
+//     @{key} and @test{name} replaced, solution blocks dropped (student) or framed as answers
+//     (teacher), and previous/next links added, and writes the claims index; fails, naming
+//     page and line, on an unknown key or test name.
+//   book_tool check-editions SRC_ROOT STUDENT_HTML TEACHER_HTML
+//     fails if the student edition shows any line or value of an exercise's answer, or the
+//     teacher edition misses one, or an exercise of exercises/exercises.txt has no marked answer.
 //   book_tool prune HTML_DIR
 //     removes the empty "File Reference" pages Doxygen writes for the page files themselves.
 //   book_tool check HTML_DIR
@@ -11,6 +19,7 @@
 #include <sys/stat.h>
 
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 
 #include "book_tool.h"
@@ -44,8 +53,39 @@ void writeFile(const std::string& path, const std::string& text) {
   if (!out) throw std::runtime_error("cannot write " + path);
 }
 
+// Replaces each "<!-- reproduce: ... -->" line of a page by its box (booktool::reproduceBox).
+std::string withReproduceBoxes(const std::string& text, const std::string& file,
+                               const std::map<std::string, std::pair<std::string, std::string>>& values,
+                               const std::string& valuesDir, const std::string& outDir,
+                               booktool::Edition edition, std::vector<std::string>& errors) {
+  namespace fs = std::filesystem;
+  // The pages land in <book>/<edition>/, beside <book>/pages_<edition>/ (book/CMakeLists.txt).
+  const fs::path html = fs::absolute(fs::path(outDir)).parent_path() /
+                        (edition == booktool::Edition::Student ? "student" : "teacher");
+  const std::string url = fs::absolute(fs::path(valuesDir)).lexically_relative(html).generic_string();
+  std::string out;
+  int n = 0;
+  for (const std::string& line : booktool::splitLines(text)) {
+    ++n;
+    booktool::ReproduceSpec spec;
+    std::string error;
+    if (!booktool::parseReproduce(line, spec, error)) {
+      out += line + "\n";
+      continue;
+    }
+    if (!error.empty()) {
+      errors.push_back(file + ":" + std::to_string(n) + ": " + error);
+      continue;
+    }
+    out += booktool::reproduceBox(spec, text, values, url,
+                                  [&](const std::string& f) { return isFile(valuesDir + "/" + f); });
+    out += "\n" + booktool::claimsSummary(text);
+  }
+  return out;
+}
+
 int prepare(const std::string& bookDir, const std::string& valuesDir, const std::string& testsDir,
-            const std::string& outDir) {
+            const std::string& outDir, booktool::Edition edition) {
   std::vector<std::string> errors;
   std::map<std::string, std::pair<std::string, std::string>> values;
   for (const std::string& f : listDir(valuesDir, ".txt"))
@@ -64,26 +104,48 @@ int prepare(const std::string& bookDir, const std::string& valuesDir, const std:
                          std::to_string(it->second.line));
     }
 
-  // Reading order: order.txt names the pages (one file a line); the claims index comes last.
-  std::vector<std::string> files;
+  // Reading order: order.txt names the pages (one file a line, "teacher" after the name for
+  // a page only the teacher's edition has); the claims index comes last.
+  std::vector<std::string> files, listed;
   {
     std::istringstream in(booktool::readFile(bookDir + "/order.txt"));
     std::string s;
     while (std::getline(in, s)) {
-      s.erase(0, s.find_first_not_of(" \t"));
-      s.erase(s.find_last_not_of(" \t\r") + 1);
-      if (s.empty() || s[0] == '#') continue;
-      if (isFile(bookDir + "/" + s)) files.push_back(s);  // a listed page may not exist yet
+      std::istringstream w(s);
+      std::string name, flag;
+      w >> name >> flag;
+      if (name.empty() || name[0] == '#') continue;
+      listed.push_back(name);
+      if (!flag.empty() && flag != "teacher")
+        errors.push_back("book/order.txt: '" + flag + "' after " + name + " (only 'teacher' may follow a page)");
+      if (flag == "teacher" && edition == booktool::Edition::Student) continue;
+      if (isFile(bookDir + "/" + name)) files.push_back(name);  // a listed page may not exist yet
     }
   }
   for (const std::string& f : listDir(bookDir, ".md"))
-    if (std::find(files.begin(), files.end(), f) == files.end())
+    if (std::find(listed.begin(), listed.end(), f) == listed.end())
       errors.push_back("book/" + f + ": not in book/order.txt (add it where it belongs in the reading order)");
 
   std::vector<booktool::Page> order;
   for (const std::string& f : files) {
-    const std::string text = booktool::readFile(bookDir + "/" + f);
+    std::string text = booktool::editionPage(booktool::readFile(bookDir + "/" + f), "book/" + f, edition);
+    if (edition == booktool::Edition::Student) text = booktool::studentLinks(text);
+    text = withReproduceBoxes(text, "book/" + f, values, valuesDir, outDir, edition, errors);
+    {
+      // The edition's copy of the sources (book_tool sources) lies beside the pages.
+      const std::string src = std::filesystem::absolute(std::filesystem::path(outDir)).parent_path().string() +
+                              (edition == booktool::Edition::Student ? "/sources_student/" : "/sources_teacher/");
+      text = booktool::withListingCaptions(text, [&](const std::string& file) {
+        return isFile(src + file) ? booktool::readFile(src + file) : std::string();
+      });
+    }
     booktool::Page p = booktool::parsePage(text, "book/" + f);
+    // The student edition has no solutions page: a link to it must sit in a solution block.
+    if (edition == booktool::Edition::Student)
+      for (const char* ref : {"\\ref sol_", "\\ref solutions "})
+        if (text.find(ref) != std::string::npos)
+          errors.push_back("book/" + f + ": links to a solution (" + std::string(ref) +
+                           ") outside a solution block; the student edition has none");
     p.text = booktool::substitute(text, p.file, values, byName, errors);
     order.push_back(p);
   }
@@ -116,6 +178,69 @@ int prepare(const std::string& bookDir, const std::string& valuesDir, const std:
   }
   std::cout << "book: " << order.size() << " pages, " << values.size() << " values, "
             << tests.size() << " tests\n";
+  return 0;
+}
+
+// The sources as an edition shows them (see booktool::editionCode).
+int sources(const std::string& srcRoot, const std::string& outRoot, booktool::Edition edition) {
+  mkdir(outRoot.c_str(), 0755);
+  int n = 0;
+  for (const char* dir : {"code", "tests"}) {
+    const std::string from = srcRoot + "/" + dir, to = outRoot + "/" + dir;
+    mkdir(to.c_str(), 0755);
+    for (const char* ext : {".h", ".cpp"})
+      for (const std::string& f : listDir(from, ext)) {
+        const std::string rel = std::string(dir) + "/" + f;
+        writeFile(to + "/" + f, booktool::editionCode(booktool::readFile(from + "/" + f), rel, edition));
+        ++n;
+      }
+  }
+  std::cout << "book: " << n << " source files for the " << (edition == booktool::Edition::Student ? "student" : "teacher")
+            << "'s edition\n";
+  return 0;
+}
+
+// All the text of an edition's pages (tags removed, entities decoded, whitespace squeezed).
+std::string editionText(const std::string& htmlDir) {
+  std::string all;
+  for (const std::string& f : listDir(htmlDir, ".html"))
+    all += booktool::squeeze(booktool::decodeEntities(booktool::stripTags(booktool::readFile(htmlDir + "/" + f)))) + "\n";
+  return all;
+}
+
+int checkEditions(const std::string& srcRoot, const std::string& studentDir, const std::string& teacherDir) {
+  std::map<std::string, std::string> code, pages;
+  for (const char* dir : {"code", "tests"})
+    for (const char* ext : {".h", ".cpp"})
+      for (const std::string& f : listDir(srcRoot + "/" + dir, ext))
+        code[std::string(dir) + "/" + f] = booktool::readFile(srcRoot + "/" + dir + "/" + f);
+  for (const std::string& f : listDir(srcRoot + "/book", ".md"))
+    pages["book/" + f] = booktool::readFile(srcRoot + "/book/" + f);
+  std::vector<std::string> ids;
+  {
+    std::istringstream in(booktool::readFile(srcRoot + "/exercises/exercises.txt"));
+    std::string l;
+    while (std::getline(in, l))
+      if (l.rfind("id:", 0) == 0) ids.push_back(booktool::squeeze(l.substr(3)));
+  }
+  const auto keys = booktool::answerKeys(code, pages);
+  const std::string student = editionText(studentDir), teacher = editionText(teacherDir);
+  std::vector<std::string> bad = booktool::editionLeaks(keys, ids, student, teacher);
+  for (const std::string& l : booktool::snippetLeaks(keys, code)) bad.push_back(l);
+  for (const char* m : {"// BEGIN SOLUTION", "// END SOLUTION"}) {
+    if (student.find(m) != std::string::npos) bad.push_back(std::string("the student edition shows a marker '") + m + "'");
+    if (teacher.find(m) != std::string::npos) bad.push_back(std::string("the teacher edition shows a marker '") + m + "'");
+  }
+  if (isFile(studentDir + "/solutions.html")) bad.push_back("the student edition has the solutions page");
+  std::size_t items = 0;
+  for (const auto& [id, k] : keys) items += k.lines.size() + k.values.size();
+  for (const std::string& b : bad) std::cerr << "  " << b << "\n";
+  if (!bad.empty()) {
+    std::cerr << "book: " << bad.size() << " edition defect(s) (listed above)\n";
+    return 1;
+  }
+  std::cout << "book: editions checked: " << ids.size() << " exercises, " << items
+            << " answer lines and values, none in the student's edition, all in the teacher's\n";
   return 0;
 }
 
@@ -164,10 +289,15 @@ int check(const std::string& htmlDir) {
 int main(int argc, char** argv) {
   try {
     const std::string cmd = argc > 1 ? argv[1] : "";
-    if (cmd == "prepare" && argc == 6) return prepare(argv[2], argv[3], argv[4], argv[5]);
+    if (cmd == "sources" && argc == 5) return sources(argv[2], argv[3], booktool::editionNamed(argv[4]));
+    if (cmd == "prepare" && argc == 7)
+      return prepare(argv[2], argv[3], argv[4], argv[5], booktool::editionNamed(argv[6]));
+    if (cmd == "check-editions" && argc == 5) return checkEditions(argv[2], argv[3], argv[4]);
     if (cmd == "prune" && argc == 3) return prune(argv[2]);
     if (cmd == "check" && argc == 3) return check(argv[2]);
-    std::cerr << "usage: book_tool prepare BOOK_DIR VALUES_DIR TESTS_DIR OUT_DIR\n"
+    std::cerr << "usage: book_tool sources SRC_ROOT OUT_ROOT student|teacher\n"
+                 "       book_tool prepare BOOK_DIR VALUES_DIR TESTS_DIR OUT_DIR student|teacher\n"
+                 "       book_tool check-editions SRC_ROOT STUDENT_HTML TEACHER_HTML\n"
                  "       book_tool prune HTML_DIR\n"
                  "       book_tool check HTML_DIR\n";
     return 2;

@@ -55,8 +55,7 @@ if [ -f book/CMakeLists.txt ]; then
   t0=$(now)
   cmake --build build --target book
   book_secs=$(seconds_since "$t0")
-  book=$(find build/book -mindepth 2 -maxdepth 2 -name index.html | sort | tr '\n' ' ')
-  book="$book($book_secs s)"
+  book="build/book/student/index.html (students), build/book/teacher/index.html (teachers) ($book_secs s)"
 fi
 echo
 echo "=== summary ($out/run_summary.md)"

@@ -482,3 +482,176 @@ TEST_CASE("book every value a page cites by @{key} is written by a chapter progr
   }
   CHECK(keys > 30);
 }
+
+// ---- the two editions, the prose check, the reproduce box -----------------------------------
+
+namespace {
+
+// Every source file of code/ and tests/ and every page of book/, by repository path.
+void readSources(std::map<std::string, std::string>& code, std::map<std::string, std::string>& pages) {
+  for (const char* dir : {"code", "tests"})
+    for (const char* ext : {".h", ".cpp"})
+      for (const fs::path& p : filesIn(kRoot / dir, ext)) code[std::string(dir) + "/" + p.filename().string()] = readAll(p);
+  for (const fs::path& p : filesIn(kRoot / "book", ".md")) pages["book/" + p.filename().string()] = readAll(p);
+}
+
+std::vector<std::string> exerciseIds() {
+  std::vector<std::string> ids;
+  std::istringstream in(readAll(kRoot / "exercises" / "exercises.txt"));
+  std::string l;
+  while (std::getline(in, l))
+    if (l.rfind("id:", 0) == 0) ids.push_back(booktool::squeeze(l.substr(3)));
+  return ids;
+}
+
+// The edition check on the sources as each edition shows them (the pages without the tables
+// the programs write; the book build runs the same check on the rendered HTML as well).
+std::vector<std::string> editionDefects(const std::map<std::string, std::string>& code,
+                                        const std::map<std::string, std::string>& pages) {
+  std::string student, teacher;
+  for (const auto& [f, t] : code) {
+    student += booktool::squeeze(booktool::editionCode(t, f, booktool::Edition::Student)) + "\n";
+    teacher += booktool::squeeze(booktool::editionCode(t, f, booktool::Edition::Teacher)) + "\n";
+  }
+  // Each line squeezed on its own too: a prose line of a block is found as written.
+  for (const auto& [f, t] : pages) {
+    if (f == "book/solutions.md") {  // the teacher's edition only (book/order.txt)
+      teacher += booktool::squeeze(booktool::editionPage(t, f, booktool::Edition::Teacher)) + "\n";
+      continue;
+    }
+    for (const std::string& l : booktool::splitLines(booktool::editionPage(t, f, booktool::Edition::Student)))
+      student += booktool::squeeze(l) + "\n";
+    for (const std::string& l : booktool::splitLines(booktool::editionPage(t, f, booktool::Edition::Teacher)))
+      teacher += booktool::squeeze(l) + "\n";
+  }
+  const auto keys = booktool::answerKeys(code, pages);
+  std::vector<std::string> out = booktool::editionLeaks(keys, exerciseIds(), student, teacher);
+  for (const std::string& l : booktool::snippetLeaks(keys, code)) out.push_back(l);
+  return out;
+}
+
+// `text` with the marker lines of `id`'s blocks removed: the answer left unmarked.
+std::string unmark(const std::string& text, const std::string& id, bool md) {
+  std::string out;
+  for (const std::string& l : booktool::splitLines(text)) {
+    std::string got;
+    bool rm = false;
+    if ((booktool::solutionMarker(l, "BEGIN", md, got, rm) || booktool::solutionMarker(l, "END", md, got, rm)) && got == id)
+      continue;
+    out += l + "\n";
+  }
+  return out;
+}
+
+bool mentions(const std::vector<std::string>& v, const std::string& what) {
+  for (const std::string& s : v)
+    if (s.find(what) != std::string::npos) return true;
+  return false;
+}
+
+}  // namespace
+
+TEST_CASE("book the student edition shows no line or value of any answer and the teacher edition shows all") {
+  std::map<std::string, std::string> code, pages;
+  readSources(code, pages);
+  REQUIRE(pages.count("book/sec2_2.md"));
+  REQUIRE(code.count("code/star.cpp"));
+  const std::vector<std::string> ok = editionDefects(code, pages);
+  for (const std::string& d : ok) CHECK_MESSAGE(false, d);
+  // Every exercise has an answer key the check can look for.
+  const auto keys = booktool::answerKeys(code, pages);
+  for (const std::string& id : exerciseIds()) CHECK_MESSAGE(keys.count(id), id << " has no marked answer");
+
+  SUBCASE("a page block left unmarked is found") {
+    auto bad = pages;
+    bad["book/sec2_2.md"] = unmark(bad["book/sec2_2.md"], "2.2-2", true);
+    CHECK(mentions(editionDefects(code, bad), "2.2-2: the student edition shows"));
+  }
+  SUBCASE("a code region left unmarked is found") {
+    auto bad = code;
+    bad["code/star.cpp"] = unmark(bad["code/star.cpp"], "2.1-1", false);
+    CHECK(mentions(editionDefects(bad, pages), "2.1-1: the student edition shows the answer's snippet"));
+  }
+  SUBCASE("an exercise whose every block is unmarked is found") {
+    auto badPages = pages;
+    for (auto& [f, t] : badPages) t = unmark(t, "2.3.5-2", true);
+    CHECK(mentions(editionDefects(code, badPages), "2.3.5-2: no marked answer"));
+  }
+}
+
+TEST_CASE("book the editions drop or frame each solution block and never show a marker") {
+  const std::string page =
+      "\\page p P\n\nbefore\n<!-- BEGIN SOLUTION 9.9-1 -->\n<!-- values: 42q -->\nthe answer is 42q\n"
+      "<!-- END SOLUTION 9.9-1 -->\nafter\n";
+  const std::string s = booktool::editionPage(page, "book/p.md", booktool::Edition::Student);
+  const std::string t = booktool::editionPage(page, "book/p.md", booktool::Edition::Teacher);
+  CHECK(s.find("42q") == std::string::npos);
+  CHECK(s.find("after") != std::string::npos);
+  CHECK(t.find("the answer is 42q") != std::string::npos);
+  CHECK(t.find("Answer to exercise 9.9-1") != std::string::npos);
+  for (const std::string& e : {s, t}) {
+    CHECK(e.find("SOLUTION") == std::string::npos);
+    CHECK(e.find("values:") == std::string::npos);
+  }
+  // The markers are split in two literals: this file's own source page must not show one.
+  const std::string src = "int f() {\n  // " "BEGIN SOLUTION 9.9-1\n  return 42;\n  // " "END SOLUTION 9.9-1\n}\n";
+  const std::string cs = booktool::editionCode(src, "code/x.cpp", booktool::Edition::Student);
+  const std::string ct = booktool::editionCode(src, "code/x.cpp", booktool::Edition::Teacher);
+  CHECK(cs.find("return 42") == std::string::npos);
+  CHECK(cs.find("throw std::logic_error(\"exercise 9.9-1: not implemented yet\");") != std::string::npos);
+  CHECK(ct.find("return 42") != std::string::npos);
+  CHECK(std::count(ct.begin(), ct.end(), '\n') == std::count(src.begin(), src.end(), '\n'));  // same lines
+  CHECK(ct.find("SOLUTION") == std::string::npos);
+  CHECK_THROWS(booktool::editionCode("// " "BEGIN SOLUTION 1-1\nx\n", "code/y.cpp", booktool::Edition::Student));
+}
+
+TEST_CASE("book prose types no number without a reason and no project jargon") {
+  const auto allowed = booktool::readAllowedNumbers(readAll(kRoot / "book" / "prose_numbers.txt"),
+                                                    "book/prose_numbers.txt");
+  for (const fs::path& p : filesIn(kRoot / "book", ".md"))
+    for (const std::string& d : booktool::proseDefects(readAll(p), "book/" + p.filename().string(), allowed))
+      CHECK_MESSAGE(false, d);
+  // One planted defect of each kind is found; the same numbers as a value or a formula are not.
+  auto found = [&](const std::string& line) {
+    return booktool::proseDefects("\\page p P\n\n" + line + "\n", "book/p.md", allowed).size();
+  };
+  CHECK(found("BRIO keeps the mean cavity at most 3.5 on the parabola.") == 1);
+  CHECK(found("Since issue 19 the orders are adaptive.") == 1);
+  CHECK(found("At the end of the session that wrote this page.") == 1);
+  CHECK(found("The helper that wrote it.") == 1);
+  CHECK(found("at most @{s235.parabola_brio}, in \\f$3.5n\\f$ steps, `x = 3.5`, Listing 2.5.") == 0);
+}
+
+TEST_CASE("book the rendered check finds an en dash in code and raw superscripts and stray backticks and jargon") {
+  CHECK(mentions(defectsOf("<p>run <code>ctest &ndash;test-dir build</code></p>"), "en dash inside code"));
+  CHECK(mentions(defectsOf("<p>time close to n^{3/2}</p>"), "literal ^{"));
+  CHECK(mentions(defectsOf("<p>run &lsquo;build/dt_tests -sf=` file</p>"), "stray backtick"));
+  CHECK(mentions(defectsOf("<p>since issue 19 the orders</p>"), "jargon 'issue N'"));
+  CHECK(mentions(defectsOf("<p>the session that wrote this page</p>"), "jargon 'session'"));
+  CHECK(defectsOf("<p>run <code>ctest --test-dir build</code>, \\(n^{3/2}\\)</p>").empty());
+}
+
+TEST_CASE("book the reproduce box names the commands and the time and the files and the tests") {
+  booktool::ReproduceSpec spec;
+  std::string error;
+  REQUIRE(booktool::parseReproduce("<!-- reproduce: programs: sec9_x; tests: 9.9 *; ctest: test_9_9 -->", spec, error));
+  CHECK(error.empty());
+  std::map<std::string, std::pair<std::string, std::string>> values = {{"run.sec9_x.seconds", {"12.5", "values_run.txt"}}};
+  const std::string page = "\\page p P\n\\image html fig9.png \"caption\"\n\\htmlinclude table9.html\n";
+  const std::set<std::string> files = {"fig9.png", "table9.csv", "table9.html", "values_sec9_x.txt"};
+  const std::string box = booktool::reproduceBox(spec, page, values, "../../output/ch2",
+                                                 [&](const std::string& f) { return files.count(f) > 0; });
+  CHECK(box.find("build/sec9_x &#45;&#45;quick") != std::string::npos);
+  CHECK(box.find("12.5 s of wall time") != std::string::npos);
+  CHECK(box.find("href=\"../../output/ch2/table9.csv\"") != std::string::npos);
+  CHECK(box.find("href=\"../../output/ch2/fig9.png\"") != std::string::npos);
+  CHECK(box.find("values_sec9_x.txt") != std::string::npos);
+  CHECK(box.find("table9.md") == std::string::npos);  // not written: no link
+  CHECK(box.find("-tc=&quot;9.9 &#42;&quot;") != std::string::npos);
+  values.clear();
+  CHECK(booktool::reproduceBox(spec, page, values, "x", [](const std::string&) { return false; })
+            .find("not timed in this build") != std::string::npos);
+  booktool::ReproduceSpec bad;
+  CHECK(booktool::parseReproduce("<!-- reproduce: programs: a; tests: b -->", bad, error));
+  CHECK_FALSE(error.empty());
+}

@@ -385,7 +385,7 @@ void notesFilters(const ch::Options& o) {
 // ---------------------------------------------------------------------------------------------
 // 4. Is 200-bit MPFR exact?
 
-void mpfr200(const ch::Options& o) {
+void mpfr200(const ch::Options& o, ch::Values& v) {
   ch::Table t;
   t.caption = "Is 200-bit MPFR exact? Its sign against the exact one (GMP integers)";
   t.header = {"input", "predicate", "wrong zeros", "flipped", "spurious nonzeros", "tried",
@@ -448,6 +448,9 @@ void mpfr200(const ch::Options& o) {
                dt::incircleExact(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]), v, 8,
                dt::exactBitsIncircle(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]));
     }
+    v.set("s231.cocircular_bits", std::to_string(y.bits));
+    v.set("s231.cocircular_wrong", std::to_string(y.wz + y.fl + y.sp));
+    v.set("s231.cocircular_tried", std::to_string(y.n));
     add(ch::fmt("exactly cocircular integers, x^2 + y^2 = (5^12 13^4 17^2)^2 (%zu points)",
                 P.size()),
         "incircle", y);
@@ -492,7 +495,7 @@ double nsPerCall(long calls, F&& f) {
   return 1e9 * s / double(calls);
 }
 
-void benchmark(const ch::Options& o) {
+void benchmark(const ch::Options& o, ch::Values& v) {
   const int K = 4096;  // inputs reused cyclically (they stay in cache: we time the arithmetic)
   std::mt19937_64 rng(2024);
   std::uniform_real_distribution<double> u(0, 1);
@@ -573,7 +576,7 @@ void benchmark(const ch::Options& o) {
               "order), and the share that reached the exact stage";
   s.header = {"input", "n", "orient2d calls", "exact", "share", "incircle calls", "exact",
               "share", "seconds"};
-  auto run = [&](const std::string& what, std::vector<double> xy) {
+  auto run = [&](const std::string& what, std::vector<double> xy, const std::string& key = "") {
     dt::shufflePoints(xy, 7);
     dt::Triangulation T;
     const std::vector<dt::Vertex*> S = dt::addVertices(T, xy);
@@ -592,12 +595,16 @@ void benchmark(const ch::Options& o) {
            std::to_string(c.orientExact), pct(c.orientExact, c.orient),
            std::to_string(c.incircle), std::to_string(c.incircleExact),
            pct(c.incircleExact, c.incircle), ch::fmt("%.2f", sec)});
+    if (!key.empty()) {  // the book cites these shares (2.3.1 page)
+      v.set(key + "_orient_share", pct(c.orientExact, c.orient));
+      v.set(key + "_incircle_share", pct(c.incircleExact, c.incircle));
+    }
     std::cout << "  triangulated " << what << " (" << xy.size() / 2 << " points) in "
               << ch::fmt("%.2f", sec) << " s, checked exactly\n";
   };
   run("uniform in the unit square", dt::uniformPoints(std::size_t(nMax), 1));
   const int side = int(std::sqrt(double(nMax)));
-  run(ch::fmt("%d x %d grid", side, side), dt::gridPoints(side, side));
+  run(ch::fmt("%d x %d grid", side, side), dt::gridPoints(side, side), "s231.grid");
   run("near-circle (rounded cos, sin)",
       dt::circlePoints(std::size_t(std::min<long>(nMax, o.quick ? 2000 : 20000))));
   s.emit(o, "table_exact_share");
@@ -611,7 +618,9 @@ int main(int argc, char** argv) {
     orientMaps(o);
     incircleMaps(o);
     notesFilters(o);
-    mpfr200(o);
-    benchmark(o);
+    ch::Values v(o, "sec2_3_1_predicates");
+    mpfr200(o, v);
+    benchmark(o, v);
+    v.write();
   });
 }

@@ -464,7 +464,7 @@ void tableMethods(const ch::Options& o, ch::Values& v) {
   v.set("s236.methods_naive_ok", listing(ok));
   v.set("s236.methods_notes_fail", listing(notesFail));
   v.verdict("s236.methods_full_exact", allExact, "exact on every input", "NOT exact on some input");
-  v.num("s236.methods_flips_per_hull_max", maxFlipsPerHull, "%.1f");
+  v.num("s236.methods_flips_per_hull_max", maxFlipsPerHull, "%.2f");  // as in the table
 }
 
 void tableSizes(const ch::Options& o, ch::Values& v) {
