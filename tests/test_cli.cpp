@@ -435,10 +435,11 @@ TEST_CASE("cli a named pipe output with a reader gets every byte and stays a pip
   const Reference ref = reference(d);
   REQUIRE(::mkfifo((d + "/p.svg").c_str(), 0644) == 0);
   REQUIRE(::mkfifo((d + "/p.ele").c_str(), 0644) == 0);
-  // Two readers wait; the run writes into both pipes, and its status is saved.
+  // Two readers wait; the run writes into both pipes, and its status is saved. (A run that
+  // replaced a pipe would leave its reader waiting on the unnamed pipe: timeout ends it.)
   const int rc = runScript(d, "fifo",
-      "cat '" + d + "/p.svg' > '" + d + "/got.svg' & a=$!\n"
-      "cat '" + d + "/p.ele' > '" + d + "/got.ele' & b=$!\n" +
+      "timeout 30 cat '" + d + "/p.svg' > '" + d + "/got.svg' & a=$!\n"
+      "timeout 30 cat '" + d + "/p.ele' > '" + d + "/got.ele' & b=$!\n" +
       cli() + " '" + ref.in + "' -o '" + d + "/p' --svg '" + d + "/p.svg' --msh '" + d +
       "/m.msh' 2> '" + d + "/err'; s=$?\nwait $a $b\nexit $s");
   CHECK_MESSAGE(rc == 0, dttest::readText(d + "/err"));
@@ -456,7 +457,7 @@ TEST_CASE("cli a reader that leaves a pipe halfway fails the run with a partial 
   dttest::writeText(d + "/o.ele", "OLD ELE\n");
   REQUIRE(::mkfifo((d + "/p.svg").c_str(), 0644) == 0);
   const int rc = runScript(d, "half",
-      "head -c 1000 '" + d + "/p.svg' > '" + d + "/got' & a=$!\n" +
+      "timeout 30 head -c 1000 '" + d + "/p.svg' > '" + d + "/got' & a=$!\n" +
       cli() + " '" + in + "' -o '" + d + "/o' --svg '" + d + "/p.svg' 2> '" + d +
       "/err'; s=$?\nwait $a\nexit $s");
   const std::string err = dttest::readText(d + "/err");
@@ -704,13 +705,17 @@ TEST_CASE("cli two runs on the same outputs started together never mix their fil
   dttest::writeText(d + "/a.node", dttest::nodeText(dt::uniformPoints(200, 1)));
   dttest::writeText(d + "/b.node", dttest::nodeText(dt::uniformPoints(260, 2)));
   const std::string args = " -o '" + d + "/o' --svg '" + d + "/o.svg' --msh '" + d + "/o.msh'";
-  // The commit pauses 20 ms after each rename: without a lock the two sets would interleave.
+  // One of the two (a in odd rounds, b in even ones) pauses 40 ms after each of its renames, the
+  // other does not: without a lock, the quick one's three renames fall inside the slow one's
+  // commit, which then puts its last two files over them.
   const int pairs = 40;
   const int rc = runScript(d, "pairs",
-      "export DELAUNAY2D_TEST_COMMIT_PAUSE_MS=20\n"
-      "for i in $(seq " + std::to_string(pairs) + "); do\n" +
-      cli() + " '" + d + "/a.node'" + args + " 2> /dev/null & a=$!\n" +
-      cli() + " '" + d + "/b.node'" + args + " 2> /dev/null & b=$!\n"
+      "for i in $(seq " + std::to_string(pairs) + "); do\n"
+      "pa=$((i % 2 * 40)); pb=$((40 - pa))\n"
+      "DELAUNAY2D_TEST_COMMIT_PAUSE_MS=$pa " + cli() + " '" + d + "/a.node'" + args +
+      " 2> /dev/null & a=$!\n"
+      "DELAUNAY2D_TEST_COMMIT_PAUSE_MS=$pb " + cli() + " '" + d + "/b.node'" + args +
+      " 2> /dev/null & b=$!\n"
       "wait $a || exit 1; wait $b || exit 1\n"
       "{ head -1 '" + d + "/o.ele'; grep -c '<polygon' '" + d + "/o.svg'; sed -n '/^\\$Elements/{n;p;}' '" +
       d + "/o.msh'; } | tr '\\n' ' ' >> '" + d + "/sets'; echo >> '" + d + "/sets'\n"
