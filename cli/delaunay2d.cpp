@@ -384,11 +384,13 @@ dt::PlainMesh inputOrder(const std::vector<double>& xy, const std::vector<std::a
   return m;
 }
 
-// Tests only (DELAUNAY2D_TEST_COMMIT_PAUSE_MS): a pause inside the commit after each rename,
-// announced on stderr, so that a test can send a signal or start a second run right then.
+// Tests only (DELAUNAY2D_TEST_COMMIT_PAUSE_MS): a pause inside the commit after each rename
+// ("committing N"), and one after the commit ("committed", renamed = 0), announced on stderr,
+// so that a test can send a signal or start a second run right then.
 void commitPause(std::size_t renamed) {
   static const long ms = std::atol(std::getenv("DELAUNAY2D_TEST_COMMIT_PAUSE_MS"));
-  const std::string line = "delaunay2d: committing " + std::to_string(renamed) + "\n";
+  const std::string line = renamed == 0 ? std::string("delaunay2d: committed\n")
+                                        : "delaunay2d: committing " + std::to_string(renamed) + "\n";
   (void)!::write(STDERR_FILENO, line.data(), line.size());
   ::usleep(useconds_t(ms * 1000));
 }
@@ -604,6 +606,7 @@ int main(int argc, char** argv) {
     // Once the first output is renamed the run has succeeded: a signal from then on is kept
     // blocked (and dropped at exit), so the exit status and --stats still say so.
     files.commit(dt::OutputFiles::AfterCommit::KeepSignalsBlocked);
+    if (std::getenv("DELAUNAY2D_TEST_COMMIT_PAUSE_MS") != nullptr) commitPause(0);
     progress.finish(nDistinct);
     std::cerr << notes;
     notes.clear();
