@@ -16,11 +16,13 @@
 #include <iostream>
 #include <cmath>
 #include <functional>
+#include <new>
 #include <numeric>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "check.h"
@@ -36,12 +38,15 @@ namespace {
 
 const char* kUsage =
     "usage: delaunay2d INPUT -o OUT [options]\n"
-    "  INPUT          Triangle .node file, or a text file of 'x y' lines\n"
-    "  -o OUT         write OUT.ele (OUT may also end in .ele)\n"
+    "  INPUT          Triangle .node file, or a text file of 'x y' lines; '-' reads\n"
+    "                 standard input (a .node file if its first line has 4 fields)\n"
+    "  -o OUT         write OUT.ele (OUT may also end in .ele); '-o -' writes the .ele to\n"
+    "                 standard output\n"
     "  --stats        print points, triangles, triangulation_seconds, mean walk steps,\n"
-    "                 mean cavity size and peak memory, one per line, on stdout\n"
-    "  --svg FILE     also write an SVG drawing of the mesh\n"
-    "  --msh FILE     also write a Gmsh ASCII (2.2) mesh\n"
+    "                 mean cavity size and peak memory, one per line, on stdout (on stderr\n"
+    "                 when an output goes to stdout)\n"
+    "  --svg FILE     also write an SVG drawing of the mesh ('-': standard output)\n"
+    "  --msh FILE     also write a Gmsh ASCII (2.2) mesh ('-': standard output)\n"
     "  --no-check     skip the exact validation of the result (on by default)\n"
     "  --method M     how DT(S) is built: 'hull' (default; ghost faces, points outside the\n"
     "                 hull inserted directly, section 2.2.2) or 'super' (super-triangles,\n"
@@ -60,9 +65,12 @@ const char* kUsage =
     "  --progress     report progress on stderr (default: only when stderr is a terminal)\n"
     "  --no-progress  never report progress\n"
     "  -h, --help     this help\n"
+    "outputs: a file is written beside its target and renamed into place when all are\n"
+    "written (through a symlink: beside the file it points to); a named pipe, a device or\n"
+    "standard output is written straight into; a directory, socket or block device is refused\n"
     "exit status: 0 success; 1 internal error or output not writable; 2 bad usage or bad\n"
-    "input (one line naming file, line and value); on failure no output is written and files\n"
-    "that were there before are left as they were\n";
+    "input (one line naming file, line and value); on failure no file output is written and\n"
+    "files that were there before are left as they were\n";
 
 struct Options {
   std::string input, out, svg, msh;
@@ -73,6 +81,7 @@ struct Options {
   // parabola) cost O(n) per insertion, BRIO's random rounds do not (sec2_3_5_hilbert).
   std::string order = "brio";
   int progress = -1;         // --progress 1, --no-progress 0, default -1: if stderr is a tty
+  bool statsOnStderr = false;  // an output goes to standard output: it carries only data
   // --threads N (fast kernel, BRIO order). Default 1: on an idle 2-core machine the parallel
   // variant is slower than the sequential kernel, in wall time and more so in CPU time, so it is
   // opt-in until it pays (bench_parallel measures it; the book's "parallel" page shows it).
@@ -141,8 +150,11 @@ class Progress {
       : on_(mode == 1 || (mode == -1 && tty_)), forced_(mode == 1) {}
   void setTotal(std::size_t n) { total_ = n; }
   void phase(const std::string& what) {
+    current_ = what;
     if (on_ && (forced_ || shown_ || total_ >= 100000)) show(what);
   }
+  /// The phase under way (named in an out-of-memory message).
+  const std::string& current() const { return current_; }
   void startInsertion() {
     insertStart_ = std::chrono::steady_clock::now();
     lastShown_ = 0;
@@ -188,6 +200,7 @@ class Progress {
   bool tty_ = ::isatty(STDERR_FILENO) == 1;
   bool on_, forced_;
   bool shown_ = false, quadratic_ = false;
+  std::string current_ = "reading the input";
   std::size_t total_ = 0, lastDone_ = 0;
   double lastShown_ = 0;
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now(),
@@ -284,17 +297,43 @@ Options parse(int argc, char** argv) {
   if (o.out.empty()) usageError("no output name (-o OUT)");
   if (o.out.size() > 4 && o.out.compare(o.out.size() - 4, 4, ".ele") == 0)
     o.out.resize(o.out.size() - 4);
+  // -o is a base name: "-o dir/" or "-o dir" would write dir/.ele or dir.ele, never meant.
+  struct stat st;
+  if (o.out.back() == '/' || (o.out != "-" && ::stat(o.out.c_str(), &st) == 0 && S_ISDIR(st.st_mode))) {
+    const std::string dir = o.out.back() == '/' ? o.out : o.out + "/";
+    usageError("-o " + o.out + " names a directory; -o takes a base name (-o " + dir +
+               "mesh writes " + dir + "mesh.ele)");
+  }
   return o;
 }
 
-// The outputs as (option, path). Refuses (exit 2) one that is the input file or two that are
-// the same file, by device and inode (dt::sameFile), before anything is read.
-std::vector<std::pair<std::string, std::string>> outputsOf(const Options& opt) {
-  std::vector<std::pair<std::string, std::string>> out = {{"-o " + opt.out, opt.out + ".ele"}};
+// The outputs as (option, path). Before anything is read, refuses (exit 2) an output that is
+// a directory, a socket or a block device (dt::classifyOutput), two outputs on '-', one that is
+// the input file, and two that are the same file (dt::sameFile: device and inode, through
+// symlinks). Sets opt.statsOnStderr when an output is standard output.
+std::vector<std::pair<std::string, std::string>> outputsOf(Options& opt) {
+  std::vector<std::pair<std::string, std::string>> out = {
+      {"-o " + opt.out, opt.out == "-" ? "-" : opt.out + ".ele"}};
   if (!opt.svg.empty()) out.emplace_back("--svg", opt.svg);
   if (!opt.msh.empty()) out.emplace_back("--msh", opt.msh);
+  const std::string input = opt.input == "-" ? "/dev/stdin" : opt.input;
   for (std::size_t i = 0; i < out.size(); ++i) {
-    if (dt::sameFile(out[i].second, opt.input)) {
+    const std::string option = out[i].first.substr(0, out[i].first.find(' '));
+    try {
+      dt::classifyOutput(out[i].second);
+    } catch (const dt::OutputRefused& e) {
+      std::cerr << "delaunay2d: " << option << " " << e.what() << "\n";
+      std::exit(2);
+    } catch (const std::exception& e) {
+      std::cerr << "delaunay2d: " << option << " " << e.what() << "\n";
+      std::exit(1);
+    }
+    if (out[i].second == "-")
+      for (std::size_t j = 0; j < i; ++j)
+        if (out[j].second == "-")
+          usageError(out[j].first + " and " + out[i].first + " both write to standard output");
+    if (dt::sameFile(out[i].second, "-")) opt.statsOnStderr = true;
+    if (dt::sameFile(out[i].second, input)) {
       std::cerr << "delaunay2d: " << out[i].first << ": " << out[i].second
                 << " is the input file; refusing to overwrite it\n";
       std::exit(2);
@@ -345,11 +384,23 @@ dt::PlainMesh inputOrder(const std::vector<double>& xy, const std::vector<std::a
   return m;
 }
 
+// Tests only (DELAUNAY2D_TEST_COMMIT_PAUSE_MS): a pause inside the commit after each rename
+// ("committing N"), and one after the commit ("committed", renamed = 0), announced on stderr,
+// so that a test can send a signal or start a second run right then.
+void commitPause(std::size_t renamed) {
+  static const long ms = std::atol(std::getenv("DELAUNAY2D_TEST_COMMIT_PAUSE_MS"));
+  const std::string line = renamed == 0 ? std::string("delaunay2d: committed\n")
+                                        : "delaunay2d: committing " + std::to_string(renamed) + "\n";
+  (void)!::write(STDERR_FILENO, line.data(), line.size());
+  ::usleep(useconds_t(ms * 1000));
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  const Options opt = parse(argc, argv);
-  const std::vector<std::pair<std::string, std::string>> outputs = outputsOf(opt);
+  Options parsed = parse(argc, argv);
+  const std::vector<std::pair<std::string, std::string>> outputs = outputsOf(parsed);
+  const Options& opt = parsed;
   Progress progress(opt.progress);
   // Notes on merged duplicates: printed after the run, or after the error line if it fails.
   std::string notes;
@@ -550,18 +601,24 @@ int main(int argc, char** argv) {
       std::fflush(stderr);
       ::sleep(unsigned(std::atoi(hold)));
     }
-    files.commit();
+    if (std::getenv("DELAUNAY2D_TEST_COMMIT_PAUSE_MS") != nullptr)
+      dt::OutputFiles::setCommitHook(commitPause);
+    // Once the first output is renamed the run has succeeded: a signal from then on is kept
+    // blocked (and dropped at exit), so the exit status and --stats still say so.
+    files.commit(dt::OutputFiles::AfterCommit::KeepSignalsBlocked);
+    if (std::getenv("DELAUNAY2D_TEST_COMMIT_PAUSE_MS") != nullptr) commitPause(0);
     progress.finish(nDistinct);
     std::cerr << notes;
     notes.clear();
     if (opt.stats) {
-      std::printf("points: %zu\ntriangles: %zu\ntriangulation_seconds: %.6f\n", n, tri.size(),
-                  seconds);
-      std::printf("duplicates: %zu\nmean_walk_steps: %.4f\nmean_cavity_size: %.4f\n", nDup,
-                  st.meanSearch(), st.meanCavity());
+      std::FILE* so = opt.statsOnStderr ? stderr : stdout;
+      std::fprintf(so, "points: %zu\ntriangles: %zu\ntriangulation_seconds: %.6f\n", n,
+                   tri.size(), seconds);
+      std::fprintf(so, "duplicates: %zu\nmean_walk_steps: %.4f\nmean_cavity_size: %.4f\n", nDup,
+                   st.meanSearch(), st.meanCavity());
       if (opt.superMethod)
-        std::printf("recovery_flips: %llu\n", (unsigned long long)fs.flips);
-      std::printf("peak_memory_mb: %.1f\n", double(dt::peakResidentKB()) / 1024.0);
+        std::fprintf(so, "recovery_flips: %llu\n", (unsigned long long)fs.flips);
+      std::fprintf(so, "peak_memory_mb: %.1f\n", double(dt::peakResidentKB()) / 1024.0);
     }
     return 0;
   } catch (const dt::InputError& e) {
@@ -575,6 +632,10 @@ int main(int argc, char** argv) {
   } catch (const UnsupportedInput& e) {
     std::cerr << "delaunay2d: " << opt.input << ":" << e.what() << "\n";
     status = 2;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "delaunay2d: " << (opt.input == "-" ? "stdin" : opt.input)
+              << ": out of memory while " << progress.current() << "\n";
+    status = 1;
   } catch (const std::exception& e) {
     std::cerr << "delaunay2d: error: " << e.what() << "\n";
     status = 1;

@@ -1,17 +1,14 @@
 #include "io.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cerrno>
 #include <charconv>
 #include <climits>
 #include <cmath>
-#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fcntl.h>
-#include <memory>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -84,6 +81,8 @@ class LineSource {
   }
   long number() const { return n_; }
   bool empty() const { return !any_; }
+  /// The text read but not yet returned (the first block, before any line is taken).
+  std::string_view buffered() const { return std::string_view(data_ + pos_, len_ - pos_); }
 
  private:
   static constexpr std::size_t kBlock = std::size_t(1) << 20;  // bytes read at a time
@@ -335,6 +334,20 @@ PointSet parseXYLines(LineSource& src, const std::string& path, std::size_t size
   return ps;
 }
 
+// Standard input has no name to tell the format by: a first line of 4 fields is a .node
+// header ('x y' lines have 2, and Triangle writes all 4 header fields).
+bool looksLikeNode(std::string_view text) {
+  std::vector<std::string_view> f;
+  while (!text.empty()) {
+    const std::size_t nl = text.find('\n');
+    splitFields(text.substr(0, nl), f);
+    if (!f.empty()) return f.size() == 4;
+    if (nl == std::string_view::npos) break;
+    text.remove_prefix(nl + 1);
+  }
+  return false;
+}
+
 bool isNodeName(const std::string& path) {
   const std::string ext = ".node";
   return path.size() >= ext.size() && path.compare(path.size() - ext.size(), ext.size(), ext) == 0;
@@ -383,6 +396,24 @@ PointSet readStreaming(const std::string& path, bool node) {
   return node ? parseNodeLines(src, path, size) : parseXYLines(src, path, size);
 }
 
+// "-": standard input, a pipe or a file the shell opened (or a terminal), named "stdin" in
+// messages; its format is told from its first line (looksLikeNode).
+PointSet readStandardInput() {
+  const std::string name = "stdin";
+  const FdCloser in{::dup(STDIN_FILENO)};
+  struct stat st;
+  if (in.fd < 0 || ::fstat(in.fd, &st) != 0)
+    throw InputError(name + ": cannot read standard input: " + sysReason());
+  if (S_ISDIR(st.st_mode) || S_ISBLK(st.st_mode) ||
+      (S_ISCHR(st.st_mode) && ::isatty(in.fd) != 1))
+    throw InputError(name + ": is " + fileKind(st.st_mode) +
+                     ", not a point file (a regular file or a pipe)");
+  const std::size_t size = S_ISREG(st.st_mode) ? std::size_t(st.st_size) : 0;
+  LineSource src(in.fd, name);
+  return looksLikeNode(src.buffered()) ? parseNodeLines(src, name, size)
+                                       : parseXYLines(src, name, size);
+}
+
 }  // namespace
 
 long PointSet::line(std::size_t i) const {
@@ -425,355 +456,10 @@ PointSet readNode(const std::string& path) { return readStreaming(path, true); }
 
 PointSet readXY(const std::string& path) { return readStreaming(path, false); }
 
-PointSet readPoints(const std::string& path) { return readStreaming(path, isNodeName(path)); }
-
-// ---- writing --------------------------------------------------------------------------------
-
-Writer::Writer(int fd, std::string path) : fd_(fd), path_(std::move(path)) {
-  buf_.resize(fd >= 0 ? std::size_t(1) << 20 : 4096);
+PointSet readPoints(const std::string& path) {
+  if (path == "-") return readStandardInput();
+  return readStreaming(path, isNodeName(path));
 }
 
-void Writer::reserve(std::size_t n) {
-  if (buf_.size() - used_ >= n) return;
-  flush();
-  if (buf_.size() - used_ < n) buf_.resize(std::max(2 * buf_.size(), used_ + n));
-}
-
-void Writer::flush() {
-  if (fd_ < 0) return;
-  std::size_t done = 0;
-  while (done < used_) {
-    const ssize_t r = ::write(fd_, buf_.data() + done, used_ - done);
-    if (r < 0 && errno == EINTR) continue;
-    if (r < 0) throw std::runtime_error(path_ + ": cannot write: " + sysReason());
-    done += std::size_t(r);
-  }
-  used_ = 0;
-}
-
-Writer& Writer::put(std::string_view s) {
-  reserve(s.size());
-  std::memcpy(buf_.data() + used_, s.data(), s.size());
-  used_ += s.size();
-  return *this;
-}
-
-Writer& Writer::put(long v) {
-  reserve(24);
-  used_ = std::size_t(std::to_chars(buf_.data() + used_, buf_.data() + buf_.size(), v).ptr -
-                      buf_.data());
-  return *this;
-}
-
-Writer& Writer::put(double v, int precision) {
-  reserve(precision < 0 ? 330 : 40);  // fixed notation of 1e308 has 309 digits
-  char* b = buf_.data() + used_;
-  char* e = buf_.data() + buf_.size();
-  // %.2f for pixels (precision < 0 means fixed with -precision digits), %.{p}g otherwise.
-  const auto r = precision < 0 ? std::to_chars(b, e, v, std::chars_format::fixed, -precision)
-                               : std::to_chars(b, e, v, std::chars_format::general, precision);
-  used_ = std::size_t(r.ptr - buf_.data());
-  return *this;
-}
-
-void writeFileAtomic(const std::string& path, const std::string& content) {
-  OutputFiles out;
-  out.open(path).put(content);
-  out.commit();
-}
-
-namespace {
-template <class Number>
-void writeEleWith(Writer& w, const std::vector<std::array<int, 3>>& tri, long firstIndex,
-                  Number number) {
-  w.put(long(tri.size())).put(" 3 0\n");
-  for (std::size_t t = 0; t < tri.size(); ++t) {
-    w.put(long(t) + firstIndex);
-    for (int k = 0; k < 3; ++k) w.put(' ').put(number(tri[t][k]));
-    w.put('\n');
-  }
-}
-}  // namespace
-
-void writeEle(Writer& w, const std::vector<std::array<int, 3>>& tri, const std::vector<long>* number,
-              long firstIndex) {
-  writeEleWith(w, tri, firstIndex, [&](int v) {
-    return number ? (*number)[std::size_t(v)] : long(v) + firstIndex;
-  });
-}
-
-void writeEle(Writer& w, const std::vector<std::array<int, 3>>& tri, const std::vector<int>& index,
-              long firstIndex) {
-  writeEleWith(w, tri, firstIndex, [&](int v) { return long(index[std::size_t(v)]) + firstIndex; });
-}
-
-std::string eleText(const std::vector<std::array<int, 3>>& tri, const std::vector<long>& number,
-                    long firstIndex) {
-  Writer w;
-  writeEle(w, tri, &number, firstIndex);
-  return w.str();
-}
-
-void writeMsh(Writer& w, const std::vector<double>& xy, const std::vector<std::array<int, 3>>& tri) {
-  const std::size_t n = xy.size() / 2;
-  w.put("$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n").put(long(n)).put('\n');
-  for (std::size_t i = 0; i < n; ++i)
-    w.put(long(i) + 1).put(' ').put(xy[2 * i], 17).put(' ').put(xy[2 * i + 1], 17).put(" 0\n");
-  w.put("$EndNodes\n$Elements\n").put(long(tri.size())).put('\n');
-  for (std::size_t t = 0; t < tri.size(); ++t) {
-    w.put(long(t) + 1).put(" 2 2 0 1");
-    for (int k = 0; k < 3; ++k) w.put(' ').put(long(tri[t][k]) + 1);
-    w.put('\n');
-  }
-  w.put("$EndElements\n");
-}
-
-std::string mshText(const std::vector<double>& xy, const std::vector<std::array<int, 3>>& tri) {
-  Writer w;
-  writeMsh(w, xy, tri);
-  return w.str();
-}
-
-void writeSvg(Writer& w, const std::vector<double>& xy, const std::vector<std::array<int, 3>>& tri,
-              int size) {
-  double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
-  for (std::size_t i = 0; i + 1 < xy.size(); i += 2) {
-    x0 = std::min(x0, xy[i]);
-    x1 = std::max(x1, xy[i]);
-    y0 = std::min(y0, xy[i + 1]);
-    y1 = std::max(y1, xy[i + 1]);
-  }
-  if (!(x0 <= x1)) x0 = x1 = y0 = y1 = 0;  // no point
-  // Translate, then scale by a power of two, then by a factor below `size`: none can overflow.
-  // x - x0 overflows only if a coordinate exceeds 2^1022 in magnitude; then both are halved
-  // first (exact there: such numbers are far from the subnormals).
-  const double big = 0x1p1022;
-  const bool halve = std::max({std::fabs(x0), std::fabs(x1), std::fabs(y0), std::fabs(y1)}) >= big;
-  const double h = halve ? 0.5 : 1.0;
-  const double span = std::max(x1 * h - x0 * h, y1 * h - y0 * h);  // finite, >= 0
-  // 2^e span lies in [1, 2): the offsets 2^e (x - x0) h are in [0, 2), and k <= size - 20
-  // maps the largest to size - 20 exactly.
-  const int e = span > 0 ? -std::ilogb(span) : 0;
-  const double k = (size - 20) / (span > 0 ? std::ldexp(span, e) : 2.0);
-  auto px = [&](int i) { return 10 + std::ldexp(xy[2 * i] * h - x0 * h, e) * k; };
-  auto py = [&](int i) { return size - 10 - std::ldexp(xy[2 * i + 1] * h - y0 * h, e) * k; };
-  w.put("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"").put(long(size))
-      .put("\" height=\"").put(long(size)).put("\">\n")
-      .put("<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
-           "<g fill=\"#dde8f5\" stroke=\"#234\" stroke-width=\"0.5\">\n");
-  for (const auto& t : tri) {
-    w.put("<polygon points=\"");
-    for (int j = 0; j < 3; ++j) w.put(j ? " " : "").put(px(t[j]), -2).put(',').put(py(t[j]), -2);
-    w.put("\"/>\n");
-  }
-  w.put("</g>\n</svg>\n");
-}
-
-std::string svgText(const std::vector<double>& xy, const std::vector<std::array<int, 3>>& tri,
-                    int size) {
-  Writer w;
-  writeSvg(w, xy, tri, size);
-  return w.str();
-}
-
-std::string gnuplotTriangles(const std::vector<double>& xy,
-                             const std::vector<std::array<int, 3>>& tri) {
-  Writer w;
-  for (const auto& t : tri) {
-    for (int k = 0; k <= 3; ++k) {
-      const int i = t[k % 3];
-      w.put(xy[2 * i], 17).put(' ').put(xy[2 * i + 1], 17).put('\n');
-    }
-    w.put('\n');
-  }
-  return w.str();
-}
-
-// ---- same file, all-or-nothing outputs -----------------------------------------------------
-
-namespace {
-
-std::string canonicalNew(const std::string& path) {
-  const std::size_t slash = path.rfind('/');
-  const std::string dir =
-      slash == std::string::npos ? "." : (slash == 0 ? "/" : path.substr(0, slash));
-  const std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
-  char buf[PATH_MAX];
-  if (::realpath(dir.c_str(), buf) == nullptr) return path;
-  return std::string(buf) + "/" + name;
-}
-
-// The temporary files of every OutputFiles, where a signal handler can read them: fixed
-// arrays, a name written completely before its slot is marked used.
-constexpr int kSlots = 64;
-constexpr std::size_t kNameMax = 4096;
-char g_tempName[kSlots][kNameMax];
-volatile std::sig_atomic_t g_tempUsed[kSlots];
-bool g_handlersInstalled = false;
-
-extern "C" void removeTemporariesAndDie(int sig) {
-  for (int i = 0; i < kSlots; ++i)
-    if (g_tempUsed[i]) ::unlink(g_tempName[i]);  // async-signal-safe
-  // SA_RESETHAND restored the default action: the signal, raised again, ends the process once
-  // this handler returns, with the status the caller expects from it.
-  ::raise(sig);
-}
-
-void installHandlers() {
-  if (g_handlersInstalled) return;
-  g_handlersInstalled = true;
-  for (int sig : {SIGINT, SIGTERM, SIGHUP}) {
-    struct sigaction old;
-    if (::sigaction(sig, nullptr, &old) == 0 && old.sa_handler == SIG_IGN) continue;  // nohup
-    struct sigaction sa;
-    std::memset(&sa, 0, sizeof sa);
-    sa.sa_handler = removeTemporariesAndDie;
-    sa.sa_flags = SA_RESETHAND;
-    sigemptyset(&sa.sa_mask);
-    ::sigaction(sig, &sa, nullptr);
-  }
-}
-
-int registerTemporary(const std::string& name) {
-  installHandlers();
-  if (name.size() >= kNameMax) return -1;  // not cleaned on a signal, still on every error
-  for (int i = 0; i < kSlots; ++i)
-    if (!g_tempUsed[i]) {
-      std::memcpy(g_tempName[i], name.c_str(), name.size() + 1);
-      std::atomic_signal_fence(std::memory_order_seq_cst);
-      g_tempUsed[i] = 1;
-      return i;
-    }
-  return -1;
-}
-
-void unregisterTemporary(int slot) {
-  if (slot >= 0) g_tempUsed[slot] = 0;
-}
-
-// Blocks the cleanup signals while the files are renamed (a few system calls).
-struct SignalsBlocked {
-  sigset_t old;
-  SignalsBlocked() {
-    sigset_t s;
-    sigemptyset(&s);
-    for (int sig : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&s, sig);
-    ::sigprocmask(SIG_BLOCK, &s, &old);
-  }
-  ~SignalsBlocked() { ::sigprocmask(SIG_SETMASK, &old, nullptr); }
-};
-
-}  // namespace
-
-bool sameFile(const std::string& a, const std::string& b) {
-  struct stat sa, sb;
-  const bool ea = ::stat(a.c_str(), &sa) == 0, eb = ::stat(b.c_str(), &sb) == 0;
-  if (ea && eb) return sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
-  if (ea != eb) return false;
-  return canonicalNew(a) == canonicalNew(b);
-}
-
-struct OutputFiles::File {
-  std::string path, tmp;
-  int fd = -1;
-  int slot = -1;
-  std::unique_ptr<Writer> w;
-};
-
-OutputFiles::~OutputFiles() { removeAll(); }
-
-void OutputFiles::removeAll() {
-  for (File* f : files_) {
-    if (f->fd >= 0) ::close(f->fd);
-    if (!f->tmp.empty()) ::unlink(f->tmp.c_str());
-    unregisterTemporary(f->slot);
-    delete f;
-  }
-  files_.clear();
-}
-
-Writer& OutputFiles::open(const std::string& path) {
-  struct stat st;
-  if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
-    throw std::runtime_error(path + ": cannot open for writing: it is a directory");
-  auto f = std::make_unique<File>();
-  f->path = path;
-  for (int k = 0;; ++k) {
-    f->tmp = path + ".tmp" + std::to_string(::getpid()) + (k ? "." + std::to_string(k) : "");
-    f->slot = registerTemporary(f->tmp);  // before it exists: a signal may come at any time
-    f->fd = ::open(f->tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-    if (f->fd >= 0) break;
-    const int err = errno;
-    unregisterTemporary(f->slot);
-    f->slot = -1;
-    if (err != EEXIST || k >= 100) {
-      f->tmp.clear();
-      throw std::runtime_error(path + ": cannot open for writing: " + std::strerror(err));
-    }
-  }
-  f->w = std::make_unique<Writer>(f->fd, path);
-  files_.push_back(f.release());
-  return *files_.back()->w;
-}
-
-std::vector<std::string> OutputFiles::temporaries() const {
-  std::vector<std::string> t;
-  for (const File* f : files_) t.push_back(f->tmp);
-  return t;
-}
-
-void OutputFiles::commit() {
-  for (File* f : files_) {
-    f->w->flush();
-    const int rc = ::close(f->fd);
-    f->fd = -1;
-    if (rc != 0) throw std::runtime_error(f->path + ": cannot write: " + sysReason());
-  }
-  const SignalsBlocked blocked;
-  // A hard link to each file that is already there, so that a rename failing half way can
-  // put back the ones replaced before it.
-  std::vector<std::string> backup(files_.size());
-  for (std::size_t i = 0; i < files_.size(); ++i) {
-    struct stat st;
-    if (::lstat(files_[i]->path.c_str(), &st) != 0) continue;
-    const std::string b = files_[i]->tmp + ".old";
-    if (::link(files_[i]->path.c_str(), b.c_str()) == 0) backup[i] = b;
-  }
-  for (std::size_t i = 0; i < files_.size(); ++i) {
-    if (::rename(files_[i]->tmp.c_str(), files_[i]->path.c_str()) == 0) {
-      files_[i]->tmp.clear();
-      continue;
-    }
-    const std::string why = files_[i]->path + ": cannot rename the temporary file into place: " +
-                            sysReason();
-    for (std::size_t j = 0; j < i; ++j) {
-      if (!backup[j].empty())
-        ::rename(backup[j].c_str(), files_[j]->path.c_str());
-      else
-        ::unlink(files_[j]->path.c_str());
-    }
-    for (const std::string& b : backup)
-      if (!b.empty()) ::unlink(b.c_str());
-    throw std::runtime_error(why);
-  }
-  for (const std::string& b : backup)
-    if (!b.empty()) ::unlink(b.c_str());
-  for (File* f : files_) {
-    unregisterTemporary(f->slot);
-    delete f;
-  }
-  files_.clear();
-}
-
-long peakResidentKB() {
-  std::FILE* f = std::fopen("/proc/self/status", "r");
-  if (!f) return 0;
-  char line[256];
-  long kb = 0;
-  while (std::fgets(line, sizeof line, f))
-    if (std::strncmp(line, "VmHWM:", 6) == 0) kb = std::atol(line + 6);
-  std::fclose(f);
-  return kb;
-}
 
 }  // namespace dt

@@ -188,6 +188,42 @@ TEST_CASE("bad input usage errors and unwritable output give an exit status and 
   CHECK(r.status == 1);
   CHECK(r.err.find("no/such/dir.svg: cannot open for writing") != std::string::npos);
   CHECK_FALSE(dttest::fileExists(out + ".ele"));
+  // -o naming a directory would write DIR/.ele or DIR.ele: refused (exit 2), nothing written.
+  for (const std::string& o : {std::string(DT_TEST_TMP), std::string(DT_TEST_TMP) + "/", out + "/"}) {
+    CAPTURE(o);
+    r = dttest::runCli("'" + in + "' -o '" + o + "'");
+    CHECK(r.status == 2);
+    CHECK(r.err.find(" names a directory; -o takes a base name") != std::string::npos);
+    CHECK_FALSE(dttest::fileExists(std::string(DT_TEST_TMP) + "/.ele"));
+    CHECK_FALSE(dttest::fileExists(std::string(DT_TEST_TMP) + ".ele"));
+  }
+}
+
+TEST_CASE("bad input on standard input is named stdin and a .node header there is recognised") {
+  const std::string out = dttest::tmpPath("stdin_out");
+  struct Case {
+    const char* text;
+    const char* err;
+  };
+  const Case cases[] = {
+      // 4 fields on the first line: a .node file, so line 3's 'zero' is its y.
+      {"3 2 0 0\n1 0 0\n2 1 zero\n3 0 1\n", "delaunay2d: stdin:3: y 'zero' is not a number\n"},
+      {"3 2 0 0\n1 0 0\n2 1 0\n", "delaunay2d: stdin:3: file ends after 2 of the 3 points announced "
+                                   "in the header (line 1)\n"},
+      // 'x y' lines otherwise.
+      {"# points\n0 0\n1 0 0\n", "delaunay2d: stdin:3: '1 0 0' has 3 fields; expected 'x y'\n"},
+      {"", "delaunay2d: stdin: empty file (expected 'x y' lines)\n"},
+  };
+  for (const Case& c : cases) {
+    CAPTURE(c.text);
+    const std::string in = dttest::tmpPath("stdin_case.txt");
+    dttest::writeText(in, c.text);
+    std::remove((out + ".ele").c_str());
+    const dttest::CliResult r = dttest::runCli("- -o '" + out + "' < '" + in + "'");
+    CHECK(r.status == 2);
+    CHECK(r.err == c.err);
+    CHECK_FALSE(dttest::fileExists(out + ".ele"));
+  }
 }
 
 TEST_CASE("bad input devices are refused and named pipes are read") {

@@ -1,9 +1,20 @@
 /// \file test_cli.cpp End-to-end tests of the command-line triangulator delaunay2d: degenerate
-/// families validated exactly from the written .ele, and bad input rejected cleanly.
+/// families validated exactly from the written .ele, bad input rejected cleanly, and outputs
+/// that keep their promises whatever they are (files, symlinks, pipes, devices, standard
+/// output) and whatever happens (signals, concurrent runs, limits, full disks).
 #include <doctest/doctest.h>
+
+#include <dirent.h>
+#include <fcntl.h>
+#include <grp.h>
+#include <sys/socket.h>
+#include <sys/stat.h>
+#include <sys/sysmacros.h>
+#include <sys/un.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <map>
 #include <sstream>
 
@@ -155,18 +166,18 @@ TEST_CASE("cli a failed run leaves every pre-existing output as it was") {
                     std::string::npos, r.err);
   CHECK(dttest::readText(out + ".ele") == "OLD ELE\n");
   CHECK(dttest::readText(d + "/old.svg") == "OLD SVG\n");
-  CHECK(filesStartingWith(d, "out.ele.tmp").empty());
-  CHECK(filesStartingWith(d, "old.svg.tmp").empty());
+  CHECK(filesStartingWith(d, "out.ele.dttmp-").empty());
+  CHECK(filesStartingWith(d, "old.svg.dttmp-").empty());
   // Bad input: exit 2, the old files untouched.
   dttest::writeText(d + "/bad.xy", "0 0\n1 x\n");
   r = dttest::runCli("'" + d + "/bad.xy' -o '" + out + "' --svg '" + d + "/old.svg'");
   CHECK(r.status == 2);
   CHECK(dttest::readText(out + ".ele") == "OLD ELE\n");
   CHECK(dttest::readText(d + "/old.svg") == "OLD SVG\n");
-  // A target that is a directory is refused before anything is renamed.
+  // A target that is a directory is refused before anything is read.
   std::system(("mkdir -p '" + d + "/adir'").c_str());
   r = dttest::runCli("'" + in + "' -o '" + out + "' --svg '" + d + "/adir'");
-  CHECK(r.status == 1);
+  CHECK(r.status == 2);
   CHECK(dttest::readText(out + ".ele") == "OLD ELE\n");
   // A successful run replaces them.
   r = dttest::runCli("'" + in + "' -o '" + out + "' --svg '" + d + "/old.svg'");
@@ -224,8 +235,8 @@ TEST_CASE("cli killed while its outputs are written it leaves no temporary and k
   dttest::writeText(d + "/kill.sh", script + "\n");
   REQUIRE(std::system(("sh '" + d + "/kill.sh' 2> /dev/null").c_str()) == 0);
   const std::string during = dttest::readText(d + "/during");
-  CHECK(during.find("out.ele.tmp") != std::string::npos);  // the signal came while they existed
-  CHECK(during.find("s.svg.tmp") != std::string::npos);
+  CHECK(during.find("out.ele.dttmp-") != std::string::npos);  // the signal came while they existed
+  CHECK(during.find("s.svg.dttmp-") != std::string::npos);
   CHECK(dttest::readText(d + "/status") == "143\n");  // 128 + SIGTERM: the signal's own status
   CHECK(filesStartingWith(d, "out.ele.").empty());
   CHECK(filesStartingWith(d, "s.svg").empty());
@@ -314,4 +325,542 @@ TEST_CASE("cli one line per error with the error first") {
   r = dttest::runCli("'" + in + "' -o '" + d + "/none/o'");
   CHECK(r.status == 1);
   CHECK(r.err.find("none/o.ele: cannot open for writing: No such file or directory") != std::string::npos);
+}
+
+// ---- what an output is: a file, a symlink, a pipe, a device, standard output (issue 30) ----
+
+namespace {
+
+// What lstat says a path is: 'f' regular file, 'l' symlink, 'p' named pipe, 'c' character
+// device, 'b' block device, 'd' directory, 's' socket, '-' nothing.
+char kindOf(const std::string& path) {
+  struct stat st;
+  if (::lstat(path.c_str(), &st) != 0) return '-';
+  if (S_ISREG(st.st_mode)) return 'f';
+  if (S_ISLNK(st.st_mode)) return 'l';
+  if (S_ISFIFO(st.st_mode)) return 'p';
+  if (S_ISCHR(st.st_mode)) return 'c';
+  if (S_ISBLK(st.st_mode)) return 'b';
+  if (S_ISDIR(st.st_mode)) return 'd';
+  return 's';
+}
+
+std::string linkText(const std::string& path) {
+  char buf[4096];
+  const ssize_t n = ::readlink(path.c_str(), buf, sizeof buf);
+  return n < 0 ? std::string() : std::string(buf, std::size_t(n));
+}
+
+// Runs a shell script (written to DIR/NAME.sh) with sh; returns its exit status.
+int runScript(const std::string& dir, const std::string& name, const std::string& script) {
+  dttest::writeText(dir + "/" + name + ".sh", script + "\n");
+  const int rc = std::system(("sh '" + dir + "/" + name + ".sh'").c_str());
+  return WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
+}
+
+std::string cli() { return std::string("'") + DT_CLI + "'"; }
+
+// Every name in `dir` containing ".dttmp-": temporaries (or their backups) left behind.
+std::vector<std::string> temporariesIn(const std::string& dir) {
+  std::vector<std::string> found;
+  if (DIR* d = ::opendir(dir.c_str())) {
+    while (const dirent* e = ::readdir(d))
+      if (std::string(e->d_name).find(".dttmp-") != std::string::npos) found.push_back(e->d_name);
+    ::closedir(d);
+  }
+  return found;
+}
+
+// A 300-point input and the .ele, SVG and .msh a plain run writes of it (to compare with).
+struct Reference {
+  std::string in, ele, svg, msh;
+};
+Reference reference(const std::string& d) {
+  Reference r;
+  r.in = d + "/in.node";
+  dttest::writeText(r.in, dttest::nodeText(dt::uniformPoints(300, 17)));
+  const dttest::CliResult c = dttest::runCli("'" + r.in + "' -o '" + d + "/ref' --svg '" + d +
+                                             "/ref.svg' --msh '" + d + "/ref.msh'");
+  REQUIRE_MESSAGE(c.status == 0, c.err);
+  r.ele = dttest::readText(d + "/ref.ele");
+  r.svg = dttest::readText(d + "/ref.svg");
+  r.msh = dttest::readText(d + "/ref.msh");
+  REQUIRE(r.ele.rfind("5", 0) == 0);  // some 580 triangles
+  return r;
+}
+
+}  // namespace
+
+TEST_CASE("cli an output that is a symlink is written to the file it points to and stays a link") {
+  const std::string d = freshDir("symlink");
+  const Reference ref = reference(d);
+  std::system(("mkdir -p '" + d + "/real'").c_str());
+  dttest::writeText(d + "/real/target.svg", "OLD SVG\n");
+  ::chmod((d + "/real/target.svg").c_str(), 0640);
+  REQUIRE(::symlink("real/target.svg", (d + "/link.svg").c_str()) == 0);
+  REQUIRE(::symlink("real/made.msh", (d + "/dangling.msh").c_str()) == 0);
+  REQUIRE(::symlink("real/out.ele", (d + "/o.ele").c_str()) == 0);
+  const dttest::CliResult r = dttest::runCli("'" + ref.in + "' -o '" + d + "/o' --svg '" + d +
+                                             "/link.svg' --msh '" + d + "/dangling.msh'");
+  REQUIRE_MESSAGE(r.status == 0, r.err);
+  // The links stay links to the same names; the files they point to got the outputs.
+  CHECK(kindOf(d + "/link.svg") == 'l');
+  CHECK(linkText(d + "/link.svg") == "real/target.svg");
+  CHECK(kindOf(d + "/o.ele") == 'l');
+  CHECK(kindOf(d + "/dangling.msh") == 'l');  // a dangling link: its target is created
+  CHECK(dttest::readText(d + "/real/target.svg") == ref.svg);
+  CHECK(dttest::readText(d + "/real/out.ele") == ref.ele);
+  CHECK(dttest::readText(d + "/real/made.msh") == ref.msh);
+  struct stat st;
+  REQUIRE(::stat((d + "/real/target.svg").c_str(), &st) == 0);
+  CHECK((st.st_mode & 0777) == 0640);  // the replaced file keeps its mode
+  CHECK(temporariesIn(d).empty());
+  CHECK(temporariesIn(d + "/real").empty());
+  // A dangling link into a missing directory: one line with the system's reason, exit 1, the
+  // other outputs not replaced.
+  REQUIRE(::symlink("nowhere/x.svg", (d + "/lost.svg").c_str()) == 0);
+  dttest::writeText(d + "/real/out.ele", "OLD ELE\n");
+  const dttest::CliResult lost =
+      dttest::runCli("'" + ref.in + "' -o '" + d + "/o' --svg '" + d + "/lost.svg'");
+  CHECK(lost.status == 1);
+  CHECK_MESSAGE(lost.err == "delaunay2d: error: " + d + "/lost.svg: cannot open for writing: No "
+                            "such file or directory\n", lost.err);
+  CHECK(kindOf(d + "/lost.svg") == 'l');
+  CHECK(dttest::readText(d + "/real/out.ele") == "OLD ELE\n");
+  CHECK(temporariesIn(d + "/real").empty());
+}
+
+TEST_CASE("cli a named pipe output with a reader gets every byte and stays a pipe") {
+  const std::string d = freshDir("fifo");
+  const Reference ref = reference(d);
+  REQUIRE(::mkfifo((d + "/p.svg").c_str(), 0644) == 0);
+  REQUIRE(::mkfifo((d + "/p.ele").c_str(), 0644) == 0);
+  // Two readers wait; the run writes into both pipes, and its status is saved. (A run that
+  // replaced a pipe would leave its reader waiting on the unnamed pipe: timeout ends it.)
+  const int rc = runScript(d, "fifo",
+      "timeout 30 cat '" + d + "/p.svg' > '" + d + "/got.svg' & a=$!\n"
+      "timeout 30 cat '" + d + "/p.ele' > '" + d + "/got.ele' & b=$!\n" +
+      cli() + " '" + ref.in + "' -o '" + d + "/p' --svg '" + d + "/p.svg' --msh '" + d +
+      "/m.msh' 2> '" + d + "/err'; s=$?\nwait $a $b\nexit $s");
+  CHECK_MESSAGE(rc == 0, dttest::readText(d + "/err"));
+  CHECK(dttest::readText(d + "/got.svg") == ref.svg);
+  CHECK(dttest::readText(d + "/got.ele") == ref.ele);
+  CHECK(dttest::readText(d + "/m.msh") == ref.msh);
+  CHECK(kindOf(d + "/p.svg") == 'p');
+  CHECK(kindOf(d + "/p.ele") == 'p');
+  CHECK(temporariesIn(d).empty());
+}
+
+TEST_CASE("cli a reader that leaves a pipe halfway fails the run with a partial write and no file replaced") {
+  const std::string d = freshDir("fifo_half"), in = d + "/in.node";
+  dttest::writeText(in, dttest::nodeText(dt::uniformPoints(20000, 3)));  // an SVG of about 3 MB
+  dttest::writeText(d + "/o.ele", "OLD ELE\n");
+  REQUIRE(::mkfifo((d + "/p.svg").c_str(), 0644) == 0);
+  const int rc = runScript(d, "half",
+      "timeout 30 head -c 1000 '" + d + "/p.svg' > '" + d + "/got' & a=$!\n" +
+      cli() + " '" + in + "' -o '" + d + "/o' --svg '" + d + "/p.svg' 2> '" + d +
+      "/err'; s=$?\nwait $a\nexit $s");
+  const std::string err = dttest::readText(d + "/err");
+  CHECK(rc == 1);
+  CHECK(std::count(err.begin(), err.end(), '\n') == 1);
+  CHECK_MESSAGE(err.find(d + "/p.svg: cannot write: Broken pipe (a stream: it got a partial write of ") !=
+                    std::string::npos, err);
+  CHECK(dttest::readText(d + "/got").size() == 1000);
+  CHECK(dttest::readText(d + "/o.ele") == "OLD ELE\n");  // nothing else was put in place
+  CHECK(kindOf(d + "/p.svg") == 'p');
+  CHECK(temporariesIn(d).empty());
+}
+
+TEST_CASE("cli character devices are written into and stay devices") {
+  const std::string d = freshDir("devices");
+  const Reference ref = reference(d);
+  // A device node of our own first (root only): if the code under test replaced it, the real
+  // /dev/null and /dev/full below must not be tried (a rename would replace them for everyone).
+  if (::geteuid() == 0) {
+    REQUIRE(::mknod((d + "/null").c_str(), S_IFCHR | 0666, makedev(1, 3)) == 0);
+    const dttest::CliResult r =
+        dttest::runCli("'" + ref.in + "' -o '" + d + "/o' --svg '" + d + "/null'");
+    CHECK(r.status == 0);
+    REQUIRE_MESSAGE(kindOf(d + "/null") == 'c', "the CLI replaced a device node: not trying /dev");
+  }
+  REQUIRE(kindOf("/dev/null") == 'c');
+  REQUIRE(kindOf("/dev/full") == 'c');
+  // /dev/full: every write fails with ENOSPC. One line with the system's reason; the .ele,
+  // written beside its target, is not renamed into place.
+  dttest::writeText(d + "/o.ele", "OLD ELE\n");
+  dttest::CliResult r =
+      dttest::runCli("'" + ref.in + "' -o '" + d + "/o' --svg /dev/null --msh /dev/full");
+  CHECK(r.status == 1);
+  CHECK_MESSAGE(r.err == "delaunay2d: error: /dev/full: cannot write: No space left on device (a "
+                         "stream: it got a partial write of 0 bytes)\n", r.err);
+  CHECK(dttest::readText(d + "/o.ele") == "OLD ELE\n");
+  CHECK(temporariesIn(d).empty());
+  r = dttest::runCli("'" + ref.in + "' -o '" + d + "/o' --svg /dev/null");
+  CHECK(r.status == 0);
+  CHECK(dttest::readText(d + "/o.ele") == ref.ele);
+  CHECK(kindOf("/dev/null") == 'c');
+  CHECK(kindOf("/dev/full") == 'c');
+}
+
+TEST_CASE("cli a directory or a socket or a block device output is refused with exit 2 and nothing written") {
+  const std::string d = freshDir("refused"), in = d + "/in.xy", q = "'" + in + "' -o '" + d + "/o'";
+  dttest::writeText(in, kSquare);
+  std::system(("mkdir -p '" + d + "/adir'").c_str());
+  REQUIRE(::symlink("adir", (d + "/dirlink").c_str()) == 0);
+  const int sock = ::socket(AF_UNIX, SOCK_STREAM, 0);
+  REQUIRE(sock >= 0);
+  sockaddr_un addr{};
+  addr.sun_family = AF_UNIX;
+  const std::string sockPath = d + "/s.svg";
+  REQUIRE(sockPath.size() < sizeof addr.sun_path);
+  std::memcpy(addr.sun_path, sockPath.c_str(), sockPath.size() + 1);
+  REQUIRE(::bind(sock, reinterpret_cast<sockaddr*>(&addr), sizeof addr) == 0);
+  const std::string tail = "; an output must be a regular file, a named pipe or a character device\n";
+  struct Case {
+    std::string args, err;
+  };
+  std::vector<Case> cases = {
+      {q + " --svg '" + d + "/adir'", "delaunay2d: --svg " + d + "/adir: is a directory" + tail},
+      {q + " --msh '" + d + "/dirlink'", "delaunay2d: --msh " + d + "/dirlink: is a directory (the "
+                                         "symlink points to " + d + "/adir)" + tail},
+      {q + " --svg '" + sockPath + "'", "delaunay2d: --svg " + sockPath + ": is a socket" + tail},
+      {q + " --svg '" + d + "/new/'", "delaunay2d: --svg " + d + "/new/: ends in '/', so it names "
+                                      "a directory, not a file\n"},
+      {"'" + in + "' -o '" + d + "/adir'", "delaunay2d: -o " + d + "/adir names a directory; -o "
+       "takes a base name (-o " + d + "/adir/mesh writes " + d + "/adir/mesh.ele) (usage: "
+       "delaunay2d INPUT -o OUT [options]; delaunay2d --help for more)\n"},
+      {"'" + in + "' -o '" + d + "/x/'", "delaunay2d: -o " + d + "/x/ names a directory; -o "
+       "takes a base name (-o " + d + "/x/mesh writes " + d + "/x/mesh.ele) (usage: "
+       "delaunay2d INPUT -o OUT [options]; delaunay2d --help for more)\n"},
+  };
+  if (::geteuid() == 0) {
+    REQUIRE(::mknod((d + "/blk").c_str(), S_IFBLK | 0600, makedev(7, 200)) == 0);
+    cases.push_back({q + " --svg '" + d + "/blk'", "delaunay2d: --svg " + d + "/blk: is a block "
+                                                   "device" + tail});
+  }
+  for (const Case& c : cases) {
+    CAPTURE(c.args);
+    const dttest::CliResult r = dttest::runCli(c.args);
+    CHECK(r.status == 2);
+    CHECK(r.err == c.err);
+    CHECK(r.out.empty());
+    CHECK(kindOf(d + "/o.ele") == '-');
+    CHECK(kindOf(d + "/adir/.ele") == '-');
+  }
+  CHECK(kindOf(d + "/adir") == 'd');
+  CHECK(kindOf(d + "/dirlink") == 'l');
+  CHECK(kindOf(sockPath) == 's');
+  if (::geteuid() == 0) CHECK(kindOf(d + "/blk") == 'b');
+  CHECK(temporariesIn(d).empty());
+  ::close(sock);
+}
+
+TEST_CASE("cli '-' reads standard input and writes one output to standard output through real pipes") {
+  const std::string d = freshDir("dash");
+  const Reference ref = reference(d);
+  // .node on standard input, the .ele on standard output, --stats and progress on stderr.
+  int rc = runScript(d, "both",
+      "cat '" + ref.in + "' | { " + cli() + " - -o - --stats --progress 2> '" + d +
+      "/err'; echo $? > '" + d + "/status'; } | cat > '" + d + "/got.ele'");
+  CHECK(rc == 0);
+  CHECK(dttest::readText(d + "/status") == "0\n");
+  CHECK(dttest::readText(d + "/got.ele") == ref.ele);  // data only
+  const std::string err = dttest::readText(d + "/err");
+  CHECK(err.find("points: 300\n") != std::string::npos);
+  CHECK(err.find("peak_memory_mb: ") != std::string::npos);
+  // The SVG on standard output (by '-' and by /dev/stdout, which stays a symlink), 'x y' lines
+  // on standard input.
+  std::string xy;
+  for (std::size_t i = 0; i < 300; ++i) {
+    const dt::XY p = dt::uniformPoints(300, 17);
+    char buf[80];
+    std::snprintf(buf, sizeof buf, "%.17g %.17g\n", p[2 * i], p[2 * i + 1]);
+    xy += buf;
+  }
+  dttest::writeText(d + "/in.xy", xy);
+  for (const std::string svg : {"-", "/dev/stdout"}) {
+    CAPTURE(svg);
+    std::remove((d + "/x.ele").c_str());
+    rc = runScript(d, "svg",
+        "cat '" + d + "/in.xy' | " + cli() + " - -o '" + d + "/x' --svg " + svg + " --stats | cat > '" +
+        d + "/got.svg'");
+    CHECK(rc == 0);
+    CHECK(dttest::readText(d + "/got.svg") == ref.svg);
+    CHECK(dttest::readText(d + "/x.ele") == ref.ele);
+  }
+  CHECK(kindOf("/dev/stdout") == 'l');
+  // Bad input on standard input is named "stdin", with its line.
+  rc = runScript(d, "bad", "printf '0 0\\n1 x\\n' | " + cli() + " - -o '" + d + "/bad' 2> '" + d + "/err'");
+  CHECK(rc == 2);
+  CHECK(dttest::readText(d + "/err") == "delaunay2d: stdin:2: y 'x' is not a number\n");
+  // Two outputs on standard output are refused, by '-' and by another name of it.
+  dttest::CliResult r = dttest::runCli("'" + ref.in + "' -o - --svg -");
+  CHECK(r.status == 2);
+  CHECK(r.err.rfind("delaunay2d: -o - and --svg both write to standard output", 0) == 0);
+  CHECK(r.out.empty());
+  r = dttest::runCli("'" + ref.in + "' -o - --msh /dev/stdout");
+  CHECK(r.status == 2);
+  CHECK(r.err == "delaunay2d: -o - and --msh name the same file /dev/stdout\n");
+}
+
+TEST_CASE("cli outputs that reach one file through symlinks are refused") {
+  const std::string d = freshDir("same_links"), in = d + "/in.xy", q = "'" + in + "' -o '" + d + "/o'";
+  dttest::writeText(in, kSquare);
+  dttest::writeText(d + "/f.svg", "OLD\n");
+  REQUIRE(::symlink("f.svg", (d + "/l1").c_str()) == 0);
+  REQUIRE(::symlink(d.c_str(), (d + "/dirl").c_str()) == 0);
+  REQUIRE(::symlink("missing.svg", (d + "/d1").c_str()) == 0);
+  REQUIRE(::symlink("dirl/missing.svg", (d + "/d2").c_str()) == 0);
+  REQUIRE(::symlink("in.xy", (d + "/toinput").c_str()) == 0);
+  struct Case {
+    std::string args, err;
+  };
+  const Case cases[] = {
+      {q + " --svg '" + d + "/l1' --msh '" + d + "/f.svg'", "--svg and --msh name the same file"},
+      // two dangling links whose targets would be one new file
+      {q + " --svg '" + d + "/d1' --msh '" + d + "/d2'", "--svg and --msh name the same file"},
+      {q + " --svg '" + d + "/toinput'", "--svg: " + d + "/toinput is the input file"},
+  };
+  for (const Case& c : cases) {
+    CAPTURE(c.args);
+    const dttest::CliResult r = dttest::runCli(c.args);
+    CHECK(r.status == 2);
+    CHECK_MESSAGE(r.err.find("delaunay2d: " + c.err) == 0, r.err);
+    CHECK(dttest::readText(d + "/f.svg") == "OLD\n");
+    CHECK(kindOf(d + "/missing.svg") == '-');
+    CHECK(kindOf(d + "/o.ele") == '-');
+  }
+  CHECK(dttest::readText(in) == kSquare);
+}
+
+// ---- signals, concurrent runs, limits, leftovers, permissions (issue 30) --------------------
+
+TEST_CASE("cli a signal after the first rename leaves the new outputs and exit status 0 and --stats") {
+  const std::string d = freshDir("final");
+  const Reference ref = reference(d);
+  // DELAUNAY2D_TEST_COMMIT_PAUSE_MS: the CLI pauses after each rename and says "committing N";
+  // the signal comes during the pause after the first one, when the commit is under way, or
+  // during the pause after the commit ("committed"), before --stats is printed. (Not SIGINT: a
+  // shell starts a background job with SIGINT ignored.)
+  const std::pair<const char*, const char*> cases[] = {
+      {"committing 1", "TERM"}, {"committing 1", "HUP"}, {"committed", "TERM"}, {"committed", "HUP"}};
+  for (const auto& [when, sig] : cases) {
+    CAPTURE(sig);
+    CAPTURE(when);
+    for (const char* f : {"/o.ele", "/o.svg", "/o.msh"}) dttest::writeText(d + f, "OLD\n");
+    const int rc = runScript(d, "final",
+        "DELAUNAY2D_TEST_COMMIT_PAUSE_MS=800 " + cli() + " '" + ref.in + "' -o '" + d +
+        "/o' --svg '" + d + "/o.svg' --msh '" + d + "/o.msh' --stats > '" + d + "/out' 2> '" + d +
+        "/err' & pid=$!\n"
+        "for i in $(seq 300); do grep -q '" + std::string(when) + "' '" + d + "/err' && break; "
+        "sleep 0.05; done\nkill -" + std::string(sig) + " $pid; wait $pid; echo $? > '" + d +
+        "/status'");
+    CHECK(rc == 0);
+    CHECK(dttest::readText(d + "/err").find(when) != std::string::npos);
+    CHECK(dttest::readText(d + "/status") == "0\n");
+    CHECK(dttest::readText(d + "/out").find("points: 300\n") != std::string::npos);
+    CHECK(dttest::readText(d + "/o.ele") == ref.ele);
+    CHECK(dttest::readText(d + "/o.svg") == ref.svg);
+    CHECK(dttest::readText(d + "/o.msh") == ref.msh);
+    CHECK(temporariesIn(d).empty());
+  }
+}
+
+TEST_CASE("cli signals at every 10 ms of a run give the old set or the new one with a status that says which") {
+  const std::string d = freshDir("signals_sweep"), in = d + "/in.node";
+  dttest::writeText(in, dttest::nodeText(dt::uniformPoints(20000, 8)));
+  // The run pauses 30 ms after each rename, so the delays below fall before, inside and after
+  // the commit; they go on past 400 ms until some runs have finished (a loaded machine).
+  int oldSets = 0, newSets = 0;
+  std::string newEle;
+  for (int ms = 0; ms <= 400 || (newSets < 3 && ms <= 3000); ms += 10) {
+    CAPTURE(ms);
+    for (const char* f : {"/o.ele", "/o.svg", "/o.msh"}) dttest::writeText(d + f, "OLD\n");
+    const int rc = runScript(d, "sweep",
+        "DELAUNAY2D_TEST_COMMIT_PAUSE_MS=30 " + cli() + " '" + in + "' -o '" + d + "/o' --svg '" +
+        d + "/o.svg' --msh '" + d + "/o.msh' 2> /dev/null & pid=$!\n"
+        "sleep " + std::to_string(ms / 1000.0) + "; kill -TERM $pid; wait $pid; echo $? > '" + d +
+        "/status'");
+    REQUIRE(rc == 0);
+    const std::string status = dttest::readText(d + "/status");
+    const std::string ele = dttest::readText(d + "/o.ele"), svg = dttest::readText(d + "/o.svg"),
+                      msh = dttest::readText(d + "/o.msh");
+    CHECK(temporariesIn(d).empty());
+    if (status == "143\n") {
+      ++oldSets;
+      CHECK(ele == "OLD\n");
+      CHECK(svg == "OLD\n");
+      CHECK(msh == "OLD\n");
+    } else {
+      REQUIRE(status == "0\n");
+      ++newSets;
+      CHECK(ele.rfind("OLD", 0) != 0);
+      CHECK(svg.rfind("<svg", 0) == 0);
+      CHECK(msh.rfind("$MeshFormat", 0) == 0);
+      if (newEle.empty()) newEle = ele;
+      CHECK(ele == newEle);
+    }
+  }
+  MESSAGE(oldSets << " runs ended by the signal with the old set, " << newSets << " with the new");
+  CHECK(oldSets > 0);
+}
+
+TEST_CASE("cli two runs on the same outputs started together never mix their files") {
+  const std::string d = freshDir("concurrent");
+  // Inputs with different triangle counts: a set is one run's when its three counts agree.
+  dttest::writeText(d + "/a.node", dttest::nodeText(dt::uniformPoints(200, 1)));
+  dttest::writeText(d + "/b.node", dttest::nodeText(dt::uniformPoints(260, 2)));
+  const std::string args = " -o '" + d + "/o' --svg '" + d + "/o.svg' --msh '" + d + "/o.msh'";
+  // One of the two (a in odd rounds, b in even ones) pauses 40 ms after each of its renames, the
+  // other does not: without a lock, the quick one's three renames fall inside the slow one's
+  // commit, which then puts its last two files over them.
+  const int pairs = 40;
+  const int rc = runScript(d, "pairs",
+      "for i in $(seq " + std::to_string(pairs) + "); do\n"
+      "pa=$((i % 2 * 40)); pb=$((40 - pa))\n"
+      "DELAUNAY2D_TEST_COMMIT_PAUSE_MS=$pa " + cli() + " '" + d + "/a.node'" + args +
+      " 2> /dev/null & a=$!\n"
+      "DELAUNAY2D_TEST_COMMIT_PAUSE_MS=$pb " + cli() + " '" + d + "/b.node'" + args +
+      " 2> /dev/null & b=$!\n"
+      "wait $a || exit 1; wait $b || exit 1\n"
+      "{ head -1 '" + d + "/o.ele'; grep -c '<polygon' '" + d + "/o.svg'; sed -n '/^\\$Elements/{n;p;}' '" +
+      d + "/o.msh'; } | tr '\\n' ' ' >> '" + d + "/sets'; echo >> '" + d + "/sets'\n"
+      "done");
+  REQUIRE(rc == 0);
+  std::istringstream sets(dttest::readText(d + "/sets"));
+  int n = 0, mixed = 0;
+  for (long ele, three, zero, svg, msh; sets >> ele >> three >> zero >> svg >> msh; ++n)
+    mixed += !(ele == svg && svg == msh);
+  CHECK(n == pairs);
+  CHECK_MESSAGE(mixed == 0, mixed << " of " << n << " pairs left a mixed set");
+  CHECK(temporariesIn(d).empty());
+}
+
+TEST_CASE("cli a file size limit fails the run with one line and no temporary and the old files kept") {
+  const std::string d = freshDir("fsize");
+  const Reference ref = reference(d);
+  dttest::writeText(d + "/o.ele", "OLD ELE\n");
+  dttest::writeText(d + "/o.svg", "OLD SVG\n");
+  // 30 blocks of 512 bytes (dash) or 1 KiB (bash): the .ele (10 kB) fits, the SVG (36 kB) does
+  // not. Without SIGXFSZ ignored, the kernel kills the run (status 153) and leaves temporaries.
+  REQUIRE(ref.ele.size() < 15000);
+  REQUIRE(ref.svg.size() > 31000);
+  const int rc = runScript(d, "fsize",
+      "ulimit -f 30; " + cli() + " '" + ref.in + "' -o '" + d + "/o' --svg '" + d + "/o.svg' 2> '" +
+      d + "/err'");
+  CHECK(rc == 1);
+  CHECK(dttest::readText(d + "/err") == "delaunay2d: error: " + d + "/o.svg: cannot write: File too large\n");
+  CHECK(dttest::readText(d + "/o.ele") == "OLD ELE\n");
+  CHECK(dttest::readText(d + "/o.svg") == "OLD SVG\n");
+  CHECK(temporariesIn(d).empty());
+}
+
+TEST_CASE("cli a run removes the temporaries that dead runs left and keeps those of live ones") {
+  const std::string d = freshDir("stale"), in = d + "/in.xy";
+  dttest::writeText(in, kSquare);
+  // A pid that has just ended: a child that exits at once.
+  const pid_t child = ::fork();
+  if (child == 0) ::_exit(0);
+  ::waitpid(child, nullptr, 0);
+  const std::string dead = std::to_string(child), live = std::to_string(::getpid());
+  for (const std::string& name : {"o.ele.dttmp-" + dead + "-0", "o.ele.dttmp-" + dead + "-0-old",
+                                  "o.svg.dttmp-" + dead + "-3", "o.ele.dttmp-" + live + "-0",
+                                  "other.ele.dttmp-" + dead + "-0"})
+    dttest::writeText(d + "/" + name, "LEFT\n");
+  const dttest::CliResult r = dttest::runCli("'" + in + "' -o '" + d + "/o' --svg '" + d + "/o.svg'");
+  REQUIRE(r.status == 0);
+  std::vector<std::string> left = temporariesIn(d);
+  std::sort(left.begin(), left.end());
+  // The live process's temporary and another output's stay; the dead run's of o.ele and o.svg go.
+  CHECK(left == std::vector<std::string>{"o.ele.dttmp-" + live + "-0", "other.ele.dttmp-" + dead + "-0"});
+}
+
+namespace {
+
+// Runs the CLI as user and group 65534 (nobody) with the given arguments; returns its exit
+// status and stderr.
+dttest::CliResult runCliAsNobody(const std::vector<std::string>& args, const std::string& errFile) {
+  dttest::CliResult r;
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    const int fd = ::open(errFile.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0666);
+    if (fd < 0 || ::dup2(fd, 2) < 0) ::_exit(120);
+    if (::setgroups(0, nullptr) != 0 || ::setresgid(65534, 65534, 65534) != 0 ||
+        ::setresuid(65534, 65534, 65534) != 0)
+      ::_exit(121);
+    std::vector<char*> argv{const_cast<char*>(DT_CLI)};
+    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    ::execv(DT_CLI, argv.data());
+    ::_exit(122);
+  }
+  int st = 0;
+  ::waitpid(pid, &st, 0);
+  r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+  r.err = dttest::readText(errFile);
+  return r;
+}
+
+}  // namespace
+
+TEST_CASE("cli replacing an output keeps its mode and refuses one the user could not write in place") {
+  const std::string d = freshDir("perm"), in = d + "/in.xy";
+  dttest::writeText(in, kSquare);
+  dttest::writeText(d + "/o.ele", "OLD\n");
+  ::chmod((d + "/o.ele").c_str(), 0604);
+  dttest::CliResult r = dttest::runCli("'" + in + "' -o '" + d + "/o'");
+  REQUIRE(r.status == 0);
+  struct stat st;
+  REQUIRE(::stat((d + "/o.ele").c_str(), &st) == 0);
+  CHECK((st.st_mode & 0777) == 0604);
+  if (::geteuid() != 0) return;  // the rest needs a second user
+  // A world-writable directory (rename allowed to anyone) holding root's read-only-for-others
+  // file: nobody's run must not replace it (issue 30: owner and mode changed).
+  const std::string w = freshDir("perm_shared");
+  ::chmod(w.c_str(), 0777);
+  ::chmod(d.c_str(), 0755);
+  ::chmod(in.c_str(), 0644);
+  dttest::writeText(w + "/o.ele", "ROOT'S\n");
+  ::chmod((w + "/o.ele").c_str(), 0644);
+  // Every directory above must let nobody reach the binary and the input.
+  r = runCliAsNobody({in, "-o", w + "/o"}, w + "/err");
+  if (r.status >= 120) {
+    MESSAGE("cannot run as nobody here (status " << r.status << "): part skipped");
+    return;
+  }
+  CHECK(r.status == 1);
+  CHECK_MESSAGE(r.err == "delaunay2d: error: " + w + "/o.ele: refusing to replace it: it could "
+                         "not be written in place (Permission denied)\n", r.err);
+  CHECK(dttest::readText(w + "/o.ele") == "ROOT'S\n");
+  REQUIRE(::stat((w + "/o.ele").c_str(), &st) == 0);
+  CHECK(st.st_uid == 0);
+  CHECK(temporariesIn(w).empty());
+  // A file nobody may write is replaced by nobody's run, and keeps its mode.
+  ::chown((w + "/o.ele").c_str(), 65534, 65534);
+  ::chmod((w + "/o.ele").c_str(), 0640);
+  r = runCliAsNobody({in, "-o", w + "/o"}, w + "/err");
+  CHECK_MESSAGE(r.status == 0, r.err);
+  REQUIRE(::stat((w + "/o.ele").c_str(), &st) == 0);
+  CHECK((st.st_mode & 0777) == 0640);
+  CHECK(dttest::readText(w + "/o.ele").rfind("2 3 0\n", 0) == 0);
+}
+
+TEST_CASE("cli out of memory is one line naming the input and the phase") {
+#if defined(__SANITIZE_ADDRESS__)
+  return;  // AddressSanitizer reserves terabytes of address space: no ulimit -v lets it start
+#endif
+  const std::string d = freshDir("oom"), in = d + "/in.node";
+  dttest::writeText(in, dttest::nodeText(dt::uniformPoints(400000, 6)));
+  dttest::writeText(d + "/o.ele", "OLD\n");
+  // 40 MB of address space: enough to start and read, not for 400000 points' triangulation
+  // (which takes about 60 MB).
+  const int rc = runScript(d, "oom",
+      "ulimit -v 40000; " + cli() + " '" + in + "' -o '" + d + "/o' 2> '" + d + "/err'");
+  const std::string err = dttest::readText(d + "/err");
+  CHECK(rc == 1);
+  // The phase: the file is read within the limit, the triangulation is not.
+  CHECK_MESSAGE(err.rfind("delaunay2d: " + in + ": out of memory while triangulating", 0) == 0, err);
+  CHECK(std::count(err.begin(), err.end(), '\n') == 1);
+  CHECK(dttest::readText(d + "/o.ele") == "OLD\n");
+  CHECK(temporariesIn(d).empty());
 }
