@@ -16,7 +16,7 @@
 #                                      a real bug must be KILLED, a comment-only change
 #                                      SURVIVED, a stale mutant INVALID (a ctest entry)
 #   MUTANTS_JOBS=4 MUTANTS_TIMEOUT=600 MUTANTS_TEST_ARGS='...' MUTANTS_TARGETS='...' \
-#     MUTANTS_WORK=DIR scripts/mutants.sh
+#     MUTANTS_CMAKE_ARGS='...' MUTANTS_WORK=DIR scripts/mutants.sh
 #
 # The copy lives in a mktemp directory, removed at the end, or in MUTANTS_WORK, kept so that
 # the next run rebuilds only what changed (the copy keeps the repository's file times); the
@@ -24,7 +24,8 @@
 # suite (build/dt_tests, stopping at the first failure, without test_progress.cpp, whose 30 s
 # of terminal sessions test only the progress display): about a minute per mutant on two
 # cores, so the whole list is not part of scripts/test.sh. MUTANTS_TEST_ARGS replaces the
-# doctest options, MUTANTS_TARGETS the build targets (default: all). To reuse compiled objects
+# doctest options, MUTANTS_TARGETS the build targets (default: all), MUTANTS_CMAKE_ARGS adds
+# configure options (e.g. -DDT_TEST_FILES=test_spine.cpp: a suite of one file). To reuse compiled objects
 # between runs, export CMAKE_CXX_COMPILER_LAUNCHER (e.g. a compiler cache) yourself.
 set -euo pipefail
 
@@ -44,7 +45,7 @@ while [ $# -gt 0 ]; do
       list_arg=$2; shift 2 ;;
     --check) mode=check; shift ;;
     --self-test) mode=selftest; shift ;;
-    -h|--help) sed -n '2,29p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,/^set -euo/p' "$0" | sed '$d'; exit 0 ;;
     -*) echo "mutants: unknown option $1" >&2; exit 2 ;;
     *) names+=("$1"); shift ;;
   esac
@@ -68,10 +69,12 @@ if [ $mode = selftest ]; then
     echo "mutants self-test: an unknown mutant name was accepted"; cat "$log"; exit 1
   fi
   # 3. The real run: a real bug KILLED, a comment-only change SURVIVED, the stale one INVALID,
-  # and the exit status says the list is not clean. A small part of the suite, to stay cheap.
+  # and the exit status says the list is not clean. To stay cheap, the copy's suite is the one
+  # file that kills the real bug (tests/test_2_3_6_flips.cpp), built without the others.
   status=0
-  MUTANTS_TEST_ARGS=${MUTANTS_TEST_ARGS:---source-file=*test_2_3_6_flips*} \
-    MUTANTS_TARGETS=${MUTANTS_TARGETS:-dt_tests} bash "$0" --list "$planted" >"$log" 2>&1 || status=$?
+  MUTANTS_CMAKE_ARGS=${MUTANTS_CMAKE_ARGS:--DDT_TEST_FILES=test_2_3_6_flips.cpp} \
+    MUTANTS_TARGETS=${MUTANTS_TARGETS:-dt_tests} MUTANTS_TEST_ARGS=${MUTANTS_TEST_ARGS:-} \
+    bash "$0" --list "$planted" >"$log" 2>&1 || status=$?
   cat "$log"
   ok=1
   grep -q '^KILLED    selftest-real ' "$log" || { echo "mutants self-test: the real bug was not KILLED"; ok=0; }
@@ -174,7 +177,8 @@ if [ -f "$work/mutated" ]; then
 fi
 
 echo "mutants: copy in $work; configuring and building the unmutated tree ($targets)"
-cmake -S "$src" -B "$build" -DCMAKE_BUILD_TYPE=Release >"$work/configure.log" 2>&1 ||
+# shellcheck disable=SC2086  # MUTANTS_CMAKE_ARGS is a list of options
+cmake -S "$src" -B "$build" -DCMAKE_BUILD_TYPE=Release ${MUTANTS_CMAKE_ARGS:-} >"$work/configure.log" 2>&1 ||
   { cat "$work/configure.log"; exit 2; }
 build_tests() {
   # shellcheck disable=SC2086  # targets is a list
