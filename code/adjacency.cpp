@@ -1,5 +1,7 @@
 #include "adjacency.h"
 
+#include <cstdint>
+#include <functional>
 #include <map>
 #include <stdexcept>
 #include <utility>
@@ -7,8 +9,11 @@
 namespace dt {
 
 //! [computeAdjacencies]
-void computeAdjacencies(std::vector<Face*>& cavity) {
-  std::map<Edge, std::pair<int, Face*>> edgeToFace;
+// The map's order is a parameter only so that a test can count its comparisons (Less below is
+// std::less<Edge>, Edge::operator<, everywhere else).
+template <class Less>
+void computeAdjacenciesBy(std::vector<Face*>& cavity, Less less) {
+  std::map<Edge, std::pair<int, Face*>, Less> edgeToFace(less);
   // Listing 2.4 compared a signed int with size(); std::size_t avoids the mismatch.
   for (std::size_t iFace = 0; iFace < cavity.size(); iFace++) {
     for (int iEdge = 0; iEdge < 3; iEdge++) {
@@ -33,5 +38,16 @@ void computeAdjacencies(std::vector<Face*>& cavity) {
   }
 }
 //! [computeAdjacencies]
+
+void computeAdjacencies(std::vector<Face*>& cavity) {
+  computeAdjacenciesBy(cavity, std::less<Edge>());
+}
+
+void computeAdjacencies(std::vector<Face*>& cavity, std::uint64_t& comparisons) {
+  computeAdjacenciesBy(cavity, [&comparisons](const Edge& a, const Edge& b) {
+    ++comparisons;
+    return a < b;
+  });
+}
 
 }  // namespace dt

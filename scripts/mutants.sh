@@ -1,45 +1,189 @@
 #!/usr/bin/env bash
 # Mutation testing: does the test suite notice a bug? Applies each hand-written mutant of
-# tests/mutants.txt, one at a time, to a temporary copy of the repository, rebuilds the tests,
-# runs them, and reports each mutant as KILLED (a test failed, crashed or timed out), SURVIVED
-# (every test passed: the suite misses that bug) or INVALID (the mutant does not apply or does
-# not compile: fix the list). Exit status 0 iff every mutant is killed.
+# tests/mutants.txt, one at a time, to a temporary copy of the repository, rebuilds everything
+# the suite runs (the default target: test_figures runs the chapter programs, test_cli the
+# triangulator), runs the suite, and reports each mutant as KILLED (a test failed, crashed or
+# timed out), SURVIVED (every test passed: the suite misses that bug) or INVALID (the mutant
+# does not apply exactly once, changes nothing, or does not compile: fix the list). Exit status
+# 0 iff every mutant is killed; 2 if the unmutated tree does not build or its suite fails.
 #
 #   scripts/mutants.sh                 every mutant of tests/mutants.txt
-#   scripts/mutants.sh NAME...         only these mutants
-#   MUTANTS_JOBS=4 MUTANTS_TIMEOUT=600 scripts/mutants.sh
+#   scripts/mutants.sh NAME...         only these mutants (an unknown name is an error)
+#   scripts/mutants.sh --list FILE     the mutants of another list (same format)
+#   scripts/mutants.sh --check         no build: only check that every mutant of the list
+#                                      applies exactly once and changes its file (a ctest entry)
+#   scripts/mutants.sh --self-test     the tool on a planted list (tests/mutants_selftest.txt):
+#                                      a real bug must be KILLED, a comment-only change
+#                                      SURVIVED, a stale mutant INVALID (a ctest entry)
+#   MUTANTS_JOBS=4 MUTANTS_TIMEOUT=600 MUTANTS_TEST_ARGS='...' MUTANTS_TARGETS='...' \
+#     MUTANTS_CMAKE_ARGS='...' MUTANTS_WORK=DIR scripts/mutants.sh
 #
-# The copy lives in a mktemp directory and is removed at the end; the repository is never
-# modified. Each mutant costs one incremental build and one run of the suite (build/dt_tests,
-# stopping at the first failure, without test_progress.cpp, whose 30 s of terminal sessions
-# test only the progress display): about a minute per mutant on two cores, 45 minutes for the
-# whole list, so this is not part of scripts/test.sh. MUTANTS_TEST_ARGS replaces the doctest
-# options. To reuse compiled objects between runs, export CMAKE_CXX_COMPILER_LAUNCHER (e.g. a
-# compiler cache) yourself.
+# The copy lives in a mktemp directory, removed at the end, or in MUTANTS_WORK, kept so that
+# the next run rebuilds only what changed (the copy keeps the repository's file times); the
+# repository is never modified. Each mutant costs one incremental build and one run of the
+# suite (build/dt_tests, stopping at the first failure, without test_progress.cpp, whose 30 s
+# of terminal sessions test only the progress display): about a minute per mutant on two
+# cores, so the whole list is not part of scripts/test.sh. MUTANTS_TEST_ARGS replaces the
+# doctest options, MUTANTS_TARGETS the build targets (default: all), MUTANTS_CMAKE_ARGS adds
+# configure options (e.g. -DDT_TEST_FILES=test_spine.cpp: a suite of one file). To reuse compiled objects
+# between runs, export CMAKE_CXX_COMPILER_LAUNCHER (e.g. a compiler cache) yourself.
 set -euo pipefail
 
 repo=$(cd "$(dirname "$0")/.." && pwd)
 jobs=${MUTANTS_JOBS:-2}
 timeout_s=${MUTANTS_TIMEOUT:-300}
 test_args=${MUTANTS_TEST_ARGS:---source-file-exclude=*test_progress*}
+targets=${MUTANTS_TARGETS:-all}
 
-work=$(mktemp -d "${TMPDIR:-/tmp}/dt_mutants.XXXXXX")
-trap 'rm -rf "$work"' EXIT
+list_arg="$repo/tests/mutants.txt"
+mode=run
+names=()
+while [ $# -gt 0 ]; do
+  case $1 in
+    --list)
+      [ $# -ge 2 ] || { echo "mutants: --list needs a file" >&2; exit 2; }
+      list_arg=$2; shift 2 ;;
+    --check) mode=check; shift ;;
+    --self-test) mode=selftest; shift ;;
+    -h|--help) sed -n '2,/^set -euo/p' "$0" | sed '$d'; exit 0 ;;
+    -*) echo "mutants: unknown option $1" >&2; exit 2 ;;
+    *) names+=("$1"); shift ;;
+  esac
+done
+[ -f "$list_arg" ] || { echo "mutants: no list $list_arg" >&2; exit 2; }
+list_arg=$(cd "$(dirname "$list_arg")" && pwd)/$(basename "$list_arg")
+
+# ---- --self-test: the tool must tell a real bug, a change of nothing and a stale mutant ----
+if [ $mode = selftest ]; then
+  planted="$repo/tests/mutants_selftest.txt"
+  log=$(mktemp)
+  trap 'rm -f "$log"' EXIT
+  # 1. --check refuses a list with a mutant whose text is not in the tree (and names it).
+  if bash "$0" --check --list "$planted" >"$log" 2>&1; then
+    echo "mutants self-test: --check accepted a stale mutant"; cat "$log"; exit 1
+  fi
+  grep -q '^INVALID   selftest-stale: the original text occurs 0 times' "$log" ||
+    { echo "mutants self-test: --check did not name the stale mutant"; cat "$log"; exit 1; }
+  # 2. An unknown mutant name is an error, not an empty run.
+  if bash "$0" --check --list "$planted" no-such-mutant >"$log" 2>&1; then
+    echo "mutants self-test: an unknown mutant name was accepted"; cat "$log"; exit 1
+  fi
+  # 3. The real run: a real bug KILLED, a comment-only change SURVIVED, the stale one INVALID,
+  # and the exit status says the list is not clean. To stay cheap, the copy's suite is the one
+  # file that kills the real bug (tests/test_2_3_6_flips.cpp), built without the others.
+  status=0
+  MUTANTS_CMAKE_ARGS=${MUTANTS_CMAKE_ARGS:--DDT_TEST_FILES=test_2_3_6_flips.cpp} \
+    MUTANTS_TARGETS=${MUTANTS_TARGETS:-dt_tests} MUTANTS_TEST_ARGS=${MUTANTS_TEST_ARGS:-} \
+    bash "$0" --list "$planted" >"$log" 2>&1 || status=$?
+  cat "$log"
+  ok=1
+  grep -q '^KILLED    selftest-real ' "$log" || { echo "mutants self-test: the real bug was not KILLED"; ok=0; }
+  grep -q '^SURVIVED  selftest-comment ' "$log" ||
+    { echo "mutants self-test: a comment-only change was not reported SURVIVED"; ok=0; }
+  grep -q '^INVALID   selftest-stale' "$log" || { echo "mutants self-test: the stale mutant was not INVALID"; ok=0; }
+  [ "$status" = 1 ] || { echo "mutants self-test: exit status $status, not 1"; ok=0; }
+  [ $ok = 1 ] && echo "mutants self-test: passed"
+  [ $ok = 1 ]
+  exit
+fi
+
+unescape() { local s=$1; printf '%s' "${s//\\n/$'\n'}"; }
+trim() { local s=$1; s=${s#"${s%%[![:space:]]*}"}; printf '%s' "${s%"${s##*[![:space:]]}"}"; }
+
+# The mutants of the list (filtered by name): names, files, originals, replacements, texts.
+declare -a M_name=() M_file=() M_orig=() M_repl=() M_desc=()
+declare -A seen_name=()
+lineno=0
+while IFS= read -r line || [ -n "$line" ]; do
+  lineno=$((lineno + 1))
+  [[ -z "$line" || "$line" == \#* ]] && continue
+  IFS=$'\x1f' read -r name file orig repl desc <<<"${line// @@ /$'\x1f'}"
+  name=$(trim "$name") file=$(trim "$file")
+  if [ -z "$name" ] || [ -z "$file" ] || [ -z "$desc" ]; then
+    echo "mutants: $list_arg:$lineno: not 'name @@ file @@ original @@ replacement @@ what'" >&2
+    exit 2
+  fi
+  [ -z "${seen_name[$name]:-}" ] || { echo "mutants: $list_arg:$lineno: mutant $name listed twice" >&2; exit 2; }
+  seen_name[$name]=1
+  if [ ${#names[@]} -gt 0 ]; then
+    wanted=0
+    for w in "${names[@]}"; do [ "$w" = "$name" ] && wanted=1; done
+    [ $wanted = 1 ] || continue
+  fi
+  M_name+=("$name") M_file+=("$file") M_orig+=("$(unescape "$orig")") M_repl+=("$(unescape "$repl")")
+  M_desc+=("$desc")
+done <"$list_arg"
+for w in "${names[@]}"; do
+  [ -n "${seen_name[$w]:-}" ] || { echo "mutants: no mutant named $w in $list_arg" >&2; exit 2; }
+done
+[ ${#M_name[@]} -gt 0 ] || { echo "mutants: no mutant in $list_arg" >&2; exit 2; }
+
+# Applies mutant i to the tree under $1: prints why not and fails unless its original text
+# occurs exactly once and the replacement changes the file.
+apply() {
+  local root=$1 i=$2 target content rest count
+  target="$root/${M_file[$i]}"
+  if [ ! -f "$target" ] || [ -z "${M_orig[$i]}" ]; then
+    echo "no file ${M_file[$i]} or empty original"; return 1
+  fi
+  content=$(cat "$target"; printf x)  # the x keeps trailing newlines
+  content=${content%x}
+  rest=${content//"${M_orig[$i]}"/}
+  count=$(( (${#content} - ${#rest}) / ${#M_orig[$i]} ))
+  if [ "$count" -ne 1 ]; then
+    echo "the original text occurs $count times in ${M_file[$i]}"; return 1
+  fi
+  if [ "${M_orig[$i]}" = "${M_repl[$i]}" ]; then
+    echo "the replacement is the original text"; return 1
+  fi
+  [ "$root" = "$repo" ] && return 0  # --check: never write into the repository
+  printf '%s' "${content/"${M_orig[$i]}"/"${M_repl[$i]}"}" >"$target"
+}
+
+if [ $mode = check ]; then
+  bad=0
+  for i in "${!M_name[@]}"; do
+    if why=$(apply "$repo" "$i"); then
+      echo "APPLIES   ${M_name[$i]}"
+    else
+      echo "INVALID   ${M_name[$i]}: $why"; bad=$((bad + 1))
+    fi
+  done
+  echo "mutants --check: ${#M_name[@]} mutants, $bad do not apply"
+  [ $bad -eq 0 ]
+  exit
+fi
+
+if [ -n "${MUTANTS_WORK:-}" ]; then
+  work=$MUTANTS_WORK
+  mkdir -p "$work"
+else
+  work=$(mktemp -d "${TMPDIR:-/tmp}/dt_mutants.XXXXXX")
+  trap 'rm -rf "$work"' EXIT
+fi
 src="$work/src"
 build="$work/build"
+rm -rf "$src"
 mkdir -p "$src"
-# The repository as it is now (uncommitted edits included), without .git and build directories.
+# The repository as it is now (uncommitted edits included), without .git and build
+# directories, with its file times: a kept build recompiles only what changed since.
 (cd "$repo" && find . \( -path ./.git -o -path './build*' \) -prune -o -type f -print0 |
-  xargs -0 cp --parents -t "$src")
-list="$src/tests/mutants.txt"  # the copy's: editing the repository's list cannot disturb a run
+  xargs -0 cp -p --parents -t "$src")
+# A run interrupted while a mutant was applied left objects compiled from it, newer than the
+# restored file: make that file new so that it is compiled again.
+if [ -f "$work/mutated" ]; then
+  touch "$src/$(cat "$work/mutated")"
+  rm -f "$work/mutated"
+fi
 
-# MUTANTS_CHECK_ONLY=1: only check that every mutant applies (its text occurs exactly once).
-check_only=${MUTANTS_CHECK_ONLY:-0}
-if [ "$check_only" != 1 ]; then
-echo "mutants: copy in $work; configuring and building the unmutated suite"
-cmake -S "$src" -B "$build" -DCMAKE_BUILD_TYPE=Release >"$work/configure.log" 2>&1 ||
+echo "mutants: copy in $work; configuring and building the unmutated tree ($targets)"
+# shellcheck disable=SC2086  # MUTANTS_CMAKE_ARGS is a list of options
+cmake -S "$src" -B "$build" -DCMAKE_BUILD_TYPE=Release ${MUTANTS_CMAKE_ARGS:-} >"$work/configure.log" 2>&1 ||
   { cat "$work/configure.log"; exit 2; }
-build_tests() { cmake --build "$build" -j"$jobs" --target dt_tests delaunay2d >"$work/build.log" 2>&1; }
+build_tests() {
+  # shellcheck disable=SC2086  # targets is a list
+  cmake --build "$build" -j"$jobs" --target $targets >"$work/build.log" 2>&1
+}
 run_tests() {
   # One process, stopping at the first failing test case: a killed mutant costs seconds. A
   # crash or a hang (timeout) fails the run too.
@@ -49,41 +193,20 @@ run_tests() {
 }
 build_tests || { echo "mutants: the unmutated code does not build"; tail -30 "$work/build.log"; exit 2; }
 run_tests || { echo "mutants: the unmutated suite fails; fix it first"; tail -30 "$work/test.log"; exit 2; }
-fi
-
-unescape() { local s=$1; printf '%s' "${s//\\n/$'\n'}"; }
-trim() { local s=$1; s=${s#"${s%%[![:space:]]*}"}; printf '%s' "${s%"${s##*[![:space:]]}"}"; }
 
 killed=0 survived=0 invalid=0
 declare -a survivors=() invalids=()
-while IFS= read -r line || [ -n "$line" ]; do
-  [[ -z "$line" || "$line" == \#* ]] && continue
-  IFS=$'\x1f' read -r name file orig repl desc <<<"${line// @@ /$'\x1f'}"
-  name=$(trim "$name") file=$(trim "$file")
-  if [ $# -gt 0 ]; then
-    wanted=0
-    for w in "$@"; do [ "$w" = "$name" ] && wanted=1; done
-    [ $wanted = 1 ] || continue
-  fi
-  orig=$(unescape "$orig") repl=$(unescape "$repl")
+run_start=$(date +%s)
+for i in "${!M_name[@]}"; do
+  name=${M_name[$i]} file=${M_file[$i]}
   target="$src/$file"
-  if [ ! -f "$target" ] || [ -z "$orig" ]; then
-    echo "INVALID   $name: no file $file or empty original"; invalid=$((invalid + 1)); invalids+=("$name"); continue
-  fi
-  content=$(cat "$target"; printf x)  # the x keeps trailing newlines
-  content=${content%x}
-  rest=${content//"$orig"/}
-  count=$(( (${#content} - ${#rest}) / ${#orig} ))
-  if [ "$count" -ne 1 ]; then
-    echo "INVALID   $name: the original text occurs $count times in $file"
-    invalid=$((invalid + 1)); invalids+=("$name"); continue
-  fi
-  if [ "$check_only" = 1 ]; then
-    echo "APPLIES   $name"; continue
-  fi
-  cp "$target" "$work/saved"
-  printf '%s' "${content/"$orig"/"$repl"}" >"$target"
+  cp -p "$target" "$work/saved" 2>/dev/null || true
+  echo "$file" >"$work/mutated"
   start=$(date +%s)
+  if ! why=$(apply "$src" "$i"); then
+    rm -f "$work/mutated"
+    echo "INVALID   $name: $why"; invalid=$((invalid + 1)); invalids+=("$name"); continue
+  fi
   if ! build_tests; then
     status="INVALID  "; invalid=$((invalid + 1)); invalids+=("$name")
     detail="does not compile: $(grep -m1 'error' "$work/build.log" || true)"
@@ -101,12 +224,14 @@ while IFS= read -r line || [ -n "$line" ]; do
   fi
   # Restore the file; a plain cp gives it a new time, so the next build recompiles it.
   cp "$work/saved" "$target"
-  echo "$status $name ($file, $(( $(date +%s) - start )) s): $desc; $detail"
-done <"$list"
+  rm -f "$work/mutated"
+  echo "$status $name ($file, $(( $(date +%s) - start )) s): ${M_desc[$i]}; $detail"
+done
 
 total=$((killed + survived + invalid))
 echo
-echo "mutants: $total run, $killed killed, $survived survived, $invalid invalid"
+echo "mutants: $total run, $killed killed, $survived survived, $invalid invalid ($(( $(date +%s) - run_start )) s)"
 [ $survived -eq 0 ] || echo "survived: ${survivors[*]}"
 [ $invalid -eq 0 ] || echo "invalid: ${invalids[*]}"
-[ $survived -eq 0 ] && [ $invalid -eq 0 ]
+[ $survived -eq 0 ] && [ $invalid -eq 0 ] && exit 0
+exit 1

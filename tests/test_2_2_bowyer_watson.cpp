@@ -2,6 +2,8 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <random>
 #include <string>
 
 #include "bowyer_watson.h"
@@ -119,6 +121,57 @@ TEST_CASE("2.2.1 Figure 2.6: deleting the super-triangles' faces can leave part 
   }
   CHECK(found >= 5);     // the phenomenon is common when the super-triangles are close
   CHECK(foundFar == 0);  // and absent for these sets when they are a million times larger
+}
+
+TEST_CASE("2.2.1 a size computed from the input suffices: super-triangles beyond D^3/(2 delta) keep DT(S)") {
+  // The errata's correction of "impossible to decide a priori": a circle through three points of
+  // S has radius |ab||bc||ca| / (2|O(a,b,c)|) <= D^3 / (2 delta) = B (D the diameter, delta the
+  // smallest nonzero |O| over triples), and every point of its disk is within 2B of a point of
+  // S. Corners farther than 2B from the bounding box are therefore outside every circle of
+  // DT(S): factor = 1 + 2B / half-width, computed before triangulating. Coordinates on the grid
+  // k 2^-20 keep every O exact in doubles (43-bit products), so delta is computed exactly here.
+  std::vector<XY> sets;
+  for (int k : {7, 14, 20}) {
+    const double d = std::ldexp(1.0, -k);  // the flat hull triangle of the test below
+    sets.push_back({0, 0, 1, 0, 0.5, d, 0.5, 1});
+  }
+  for (unsigned seed : {3u, 4u, 5u}) {  // random points on the grid, one triple nearly collinear
+    XY p;
+    std::mt19937 g(seed);
+    std::uniform_int_distribution<int> c(0, 1 << 20);
+    for (int i = 0; i < 10; ++i) p.insert(p.end(), {std::ldexp(c(g), -20), std::ldexp(c(g), -20)});
+    p.insert(p.end(), {0, -0.5, 1, -0.5, 0.5, -0.5 + std::ldexp(1.0, -20)});  // flat hull triangle
+    sets.push_back(p);
+  }
+  for (const XY& p : sets) {
+    const std::size_t n = p.size() / 2;
+    double D = 0, delta = 0, xmin = p[0], xmax = p[0], ymin = p[1], ymax = p[1];
+    for (std::size_t i = 0; i < n; ++i) {
+      xmin = std::min(xmin, p[2 * i]), xmax = std::max(xmax, p[2 * i]);
+      ymin = std::min(ymin, p[2 * i + 1]), ymax = std::max(ymax, p[2 * i + 1]);
+      for (std::size_t j = 0; j < n; ++j) {
+        D = std::max(D, std::hypot(p[2 * i] - p[2 * j], p[2 * i + 1] - p[2 * j + 1]));
+        for (std::size_t k = 0; k < n; ++k) {
+          const double o = std::fabs((p[2 * i] - p[2 * k]) * (p[2 * j + 1] - p[2 * k + 1]) -
+                                     (p[2 * i + 1] - p[2 * k + 1]) * (p[2 * j] - p[2 * k]));
+          if (o > 0 && (delta == 0 || o < delta)) delta = o;
+        }
+      }
+    }
+    REQUIRE(delta > 0);
+    const double B = D * D * D / (2 * delta), half = 0.5 * std::max(xmax - xmin, ymax - ymin);
+    const double factor = 1.01 * (1 + 2 * B / half);
+    CAPTURE(factor);
+    const dt::BowyerWatsonResult bw = dt::bowyerWatson(p, factor);
+    REQUIRE(dt::checkDelaunay(bw.xy, bw.tri).ok);
+    CHECK(dt::hullEdgesNotCovered(bw.xy, bw.ids, bw.tri).empty());
+    // And the bound is not idle: for the four points, where delta is the flat triangle's own
+    // |O|, a thousandth of it lets that triangle's circle swallow a corner.
+    if (n == 4) {
+      const dt::BowyerWatsonResult small = dt::bowyerWatson(p, 1 + 2e-3 * B / half);
+      CHECK_FALSE(dt::hullEdgesNotCovered(small.xy, small.ids, small.tri).empty());
+    }
+  }
 }
 
 TEST_CASE("2.2.1 no super-triangle size is right a priori: for every factor a flat hull triangle defeats it") {

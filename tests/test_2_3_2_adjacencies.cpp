@@ -3,10 +3,12 @@
 
 #include <algorithm>
 #include <map>
+#include <random>
 #include <set>
 #include <stdexcept>
 
 #include "adjacency.h"
+#include "flip.h"
 #include "stats.h"
 #include "support.h"
 
@@ -73,9 +75,38 @@ TEST_CASE("2.3.2 n_f = 2(n-1) - n_h and n_e = 3(n-1) - n_h exactly with degenera
     CHECK(c.n == long(b.report.nVertices));
     CHECK(c.nh == long(b.report.nHull));
     CHECK(c.ne == long(b.report.nEdges));
+  }
+  // checkDelaunay (inside build) already refuses a mesh whose counts break Euler, so the
+  // counts above cannot disagree with Euler there. meshCounts alone: Euler holds for any
+  // triangulation of the points, not only the Delaunay one (random flips), and fails for a
+  // mesh that does not cover the hull of its vertices (a hole, two pieces).
+  for (unsigned seed : {1u, 2u}) {
+    dt::Triangulation T;
+    dt::delaunayTrglHull(T, dt::addVertices(T, dt::uniformPoints(400, 40 + seed)), dt::StartRule::LastCavity);
+    std::mt19937 g(seed);
+    int flips = 0;
+    for (int it = 0; it < 3000; ++it) {
+      std::vector<dt::Face*> live;
+      for (dt::Face& f : T.faces())
+        if (!f.isGhost()) live.push_back(&f);
+      flips += dt::flipEdge(live[g() % live.size()], int(g() % 3));
+    }
+    const dt::PlainMesh m = dt::extractMesh(T, true);
+    CHECK(flips > 1000);
+    CHECK_FALSE(dt::checkDelaunay(m.xy, m.tri).ok);  // no longer Delaunay
+    const dt::MeshCounts c = dt::meshCounts(m.xy.size() / 2, m.tri);
     CHECK(c.nf == c.eulerNF());
     CHECK(c.ne == c.eulerNE());
   }
+  // A square ring of 8 triangles (a hole in the middle) and two separate triangles.
+  // Ring: outer square 0-3 = (0,0) (3,0) (3,3) (0,3), inner square 4-7 = (1,1) (2,1) (2,2) (1,2).
+  const std::vector<std::array<int, 3>> ringTri = {{0, 1, 5}, {0, 5, 4}, {1, 2, 6}, {1, 6, 5},
+                                                   {2, 3, 7}, {2, 7, 6}, {3, 0, 4}, {3, 4, 7}};
+  const dt::MeshCounts r = dt::meshCounts(8, ringTri);
+  CHECK(r.nf == 8);
+  CHECK(r.nf != r.eulerNF());
+  const dt::MeshCounts two = dt::meshCounts(6, {{0, 1, 2}, {3, 4, 5}});
+  CHECK(two.nf != two.eulerNF());
 }
 
 TEST_CASE("2.3.2 eqs. (2.2)-(2.3): n n_vf = 3 n_f = 6n - 3n_h - 6 and n n_ve = 2 n_e = 6n - 2n_h - 6") {

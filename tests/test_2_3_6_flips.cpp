@@ -8,6 +8,7 @@
 
 #include "flip.h"
 #include "hull.h"
+#include "oracle.h"
 #include "predicates.h"
 #include "support.h"
 
@@ -326,4 +327,99 @@ TEST_CASE("2.3.6 superInCircle agrees with incircle on points of S and pushes su
   CHECK(dt::superInCircle(a, b, far, T.addVertex(0.5, -1e-9, 7)) < 0); // below
   // Two super vertices: the one with the larger id (p_{-1} before p_{-2}) decides.
   CHECK(dt::superInCircle(a, far, c, s) < 0);  // s is the query and outranks far
+}
+
+TEST_CASE("2.3.6 superInCircle is the incircle test with super vertices at ever larger distances (exact oracle)") {
+  // "p_{-1} infinitely farther than p_{-2}, ..., farther than every point of S", made finite:
+  // p_{-m} = R_m (direction), with R_{-4} >> the points' coordinates and each R_{-m} far above
+  // the square of the next one (R_{-1} = 2^400 >> R_{-2}^2 = 2^320, ...). Then the plain
+  // incircle determinant of the actual coordinates, computed exactly with GMP rationals
+  // (tests/oracle.h, no code of the predicate core), has the sign the symbolic rule gives. The
+  // points of S lie on a small integer grid on the lines through the super vertices'
+  // directions, so the first super vertex is often collinear with two others (ties that fall
+  // to the next super vertex, or to the plain incircle test).
+  dt::Triangulation T;
+  std::vector<dt::Vertex*> pool;
+  const int exps[4] = {400, 160, 60, 20};
+  const double dirs[4][2] = {{-1, 0}, {1, 1}, {0, -1}, {-1, 2}};
+  for (int m = 0; m < 4; ++m) {
+    const double R = std::ldexp(1.0, exps[m]);
+    pool.push_back(T.addVertex(dirs[m][0] * R, dirs[m][1] * R, -1 - m));
+  }
+  const int grid[][2] = {{0, 0}, {1, 0}, {2, 0}, {1, 1}, {2, 2}, {0, -1}, {0, 1}, {-1, 2},
+                         {1, -2}, {2, 1}, {-1, -1}, {3, 2}};
+  long id = 0;
+  for (const auto& g : grid) pool.push_back(T.addVertex(g[0], g[1], id++));
+  long compared = 0, wrong = 0, decidedBySecond = 0, superCount[5] = {0, 0, 0, 0, 0};
+  for (dt::Vertex* a : pool)
+    for (dt::Vertex* b : pool)
+      for (dt::Vertex* c : pool) {
+        if (a == b || b == c || a == c) continue;
+        if (dtoracle::orientQ(a->x, a->y, b->x, b->y, c->x, c->y) <= 0) continue;
+        for (dt::Vertex* d : pool) {
+          if (d == a || d == b || d == c) continue;
+          const double q[8] = {a->x, a->y, b->x, b->y, c->x, c->y, d->x, d->y};
+          const int want = dtoracle::incircleQ(q);
+          const int got = dt::superInCircle(a, b, c, d);
+          ++compared;
+          if (got != want) {
+            ++wrong;
+            if (wrong <= 5)
+              MESSAGE("superInCircle(" << a->id << ", " << b->id << ", " << c->id << ", " << d->id
+                                       << ") = " << got << ", oracle " << want);
+          }
+          const int supers = (a->id < 0) + (b->id < 0) + (c->id < 0) + (d->id < 0);
+          ++superCount[supers];
+          // The farthest super vertex present is collinear with the other three: a tie.
+          const dt::Vertex* q4[4] = {a, b, c, d};
+          const dt::Vertex* top = nullptr;
+          int topIndex = -1;
+          for (int i = 0; i < 4; ++i)
+            if (q4[i]->id < 0 && (top == nullptr || q4[i]->id > top->id)) top = q4[i], topIndex = i;
+          if (top != nullptr && supers >= 2) {
+            const dt::Vertex* r[3];
+            for (int i = 0, k = 0; i < 4; ++i)
+              if (i != topIndex) r[k++] = q4[i];
+            decidedBySecond += dtoracle::orientQ(r[0]->x, r[0]->y, r[1]->x, r[1]->y, r[2]->x, r[2]->y) == 0;
+          }
+        }
+      }
+  MESSAGE(compared << " quadruples, " << decidedBySecond << " with a tie at the farthest super vertex");
+  CHECK(wrong == 0);
+  for (int s = 0; s <= 4; ++s) CHECK(superCount[s] > 0);  // every number of super vertices
+  CHECK(decidedBySecond > 0);
+}
+
+TEST_CASE("2.3.6 recoverDelaunay counts its flips by kind as its log shows them") {
+  // The kinds of FlipStats (2.2.1's flips, super-real edges with a super opposite vertex,
+  // super-super and real-real edges) recounted from the log of the flips themselves.
+  std::uint64_t kinds[4] = {0, 0, 0, 0};
+  for (double factor : {1.01, 10.0}) {
+    for (const XY& p : {dt::uniformPoints(800, 61), bentLine(80, 1e-3, 62), dt::circlePoints(90, 63)}) {
+      dt::Triangulation T;
+      superDT(T, p, factor);
+      std::vector<std::array<const dt::Vertex*, 4>> log;
+      const dt::FlipStats st = dt::recoverDelaunay(T, dt::RecoveryRule::Full, &log);
+      REQUIRE(dt::checkTriangulation(T).ok);
+      auto super = [](const dt::Vertex* v) { return v->id < 0; };
+      std::uint64_t notes = 0, opposite = 0, superSuper = 0, realReal = 0;
+      for (const auto& f : log) {
+        const int edgeSupers = super(f[0]) + super(f[1]);
+        if (edgeSupers == 2) ++superSuper;
+        else if (edgeSupers == 0) ++realReal;
+        else if (super(f[2]) || super(f[3])) ++opposite;
+        else ++notes;
+      }
+      CHECK(log.size() == st.flips);
+      CHECK(st.notesFlips == notes);
+      CHECK(st.superOpposite == opposite);
+      CHECK(st.superSuper == superSuper);
+      CHECK(st.realReal == realReal);
+      kinds[0] += notes, kinds[1] += opposite, kinds[2] += superSuper, kinds[3] += realReal;
+    }
+  }
+  MESSAGE("flips by kind: 2.2.1's " << kinds[0] << ", super opposite " << kinds[1]
+          << ", super-super " << kinds[2] << ", real-real " << kinds[3]);
+  CHECK(kinds[0] > 0);
+  CHECK(kinds[1] > 0);
 }

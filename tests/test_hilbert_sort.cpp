@@ -270,3 +270,124 @@ TEST_CASE("Hilbert sort (2.3.5) adaptive: clusters nested two deep are toured li
   CHECK(pairs == 200);
   CHECK(misordered == 0);
 }
+
+namespace {
+
+// ---- the frame a refined cell is sorted in, computed with Listing 2.8's floating frames ----
+// (HilbertCoord and hilbertChild), not with the integer tables the sort uses.
+
+// The frame of the cell of (x, y) `depth` levels below frame f.
+dt::HilbertFrame cellFrame(dt::HilbertFrame f, double x, double y, int depth) {
+  std::vector<int> bits(std::size_t(depth) + 1);
+  dt::HilbertCoord(x, y, f.x0, f.y0, f.xRed, f.yRed, f.xBlue, f.yBlue, depth, bits.data());
+  for (int l = 0; l < depth; ++l) f = dt::hilbertChild(f, bits[std::size_t(l)]);
+  return f;
+}
+
+// f's orientation over the square box of the points `idx` (corner at their minima, side the
+// larger extent): the frame the refinement sorts those points in.
+dt::HilbertFrame boxFrame(const dt::HilbertFrame& f, const XY& p, const std::vector<std::size_t>& idx) {
+  double x0 = p[2 * idx[0]], x1 = x0, y0 = p[2 * idx[0] + 1], y1 = y0;
+  for (std::size_t i : idx) {
+    x0 = std::min(x0, p[2 * i]), x1 = std::max(x1, p[2 * i]);
+    y0 = std::min(y0, p[2 * i + 1]), y1 = std::max(y1, p[2 * i + 1]);
+  }
+  const double h = std::max(x1 / 2 - x0 / 2, y1 / 2 - y0 / 2);
+  auto unit = [](double v) { return double((v > 0) - (v < 0)); };
+  return {x0 + h, y0 + h, unit(f.xRed) * h, unit(f.yRed) * h, unit(f.xBlue) * h, unit(f.yBlue) * h};
+}
+
+std::uint64_t listingKey(const dt::HilbertFrame& f, double x, double y, int depth) {
+  std::vector<int> bits(std::size_t(depth) + 1);
+  dt::HilbertCoord(x, y, f.x0, f.y0, f.xRed, f.yRed, f.xBlue, f.yBlue, depth, bits.data());
+  return dt::hilbertPack(bits.data(), depth);
+}
+
+bool sameOrientation(const dt::HilbertFrame& f, const dt::HilbertFrame& g) {
+  auto sg = [](double v) { return (v > 0) - (v < 0); };
+  return sg(f.xRed) == sg(g.xRed) && sg(f.yRed) == sg(g.yRed) && sg(f.xBlue) == sg(g.xBlue) &&
+         sg(f.yBlue) == sg(g.yBlue);
+}
+
+// The points of `run` in the order o, in frame f at `depth`: their listing keys never decrease.
+bool alongCurve(const XY& p, const std::vector<std::size_t>& o, const std::vector<std::size_t>& run,
+                const dt::HilbertFrame& f, int depth) {
+  std::vector<char> in(p.size() / 2, 0);
+  for (std::size_t i : run) in[i] = 1;
+  std::uint64_t last = 0;
+  std::size_t seen = 0;
+  for (std::size_t i : o) {
+    if (!in[i]) continue;
+    const std::uint64_t k = listingKey(f, p[2 * i], p[2 * i + 1], depth);
+    if (seen++ > 0 && k < last) return false;
+    last = k;
+  }
+  return seen == run.size();
+}
+
+}  // namespace
+
+TEST_CASE("Hilbert sort (2.3.5) adaptive: a refined cell is ordered along the curve in the frame in which the curve enters it") {
+  // 4000 uniform points; cluster A (5000 points, side 1e-8: refined by the radix branch) holding
+  // cluster B (600 points, side 1e-13: refined again, inside A's refinement); cluster C (600
+  // points, side 1e-6: the comparison-sort branch). A and B sit near the origin, where doubles
+  // resolve their 43 levels of cells (the floating frames of the listing would not near 0.3). Each cluster sits in one cell of the grid
+  // above it, whose curve frame is not the frame of the grid above: sorting it in the wrong
+  // frame (the root's, or the parent cell's) visits it in another order.
+  XY p = dt::uniformPoints(4000, 31);
+  auto addCluster = [&p](std::size_t m, std::uint64_t seed, double x, double y, double side) {
+    const XY c = dt::uniformPoints(m, seed, 0, side);
+    std::vector<std::size_t> idx;
+    for (std::size_t i = 0; i < m; ++i) {
+      idx.push_back(p.size() / 2);
+      p.insert(p.end(), {x + c[2 * i], y + c[2 * i + 1]});
+    }
+    return idx;
+  };
+  std::vector<std::size_t> A = addCluster(5000, 32, 1.1e-7, 2.3e-7, 1e-8);
+  const std::vector<std::size_t> B = addCluster(600, 33, 1.1e-7 + 3.3e-9, 2.3e-7 + 6.1e-9, 1e-13);
+  const std::vector<std::size_t> C = addCluster(600, 34, 0.4302, 0.6204, 1e-6);
+  A.insert(A.end(), B.begin(), B.end());  // A's cell holds B
+
+  const std::size_t n = p.size() / 2;
+  const int top = dt::hilbertAutoDepth(n);
+  const std::vector<std::uint64_t> keys = dt::hilbertKeys(p, 0);
+  // The points of the top-level cell of a cluster (a uniform point could share it).
+  auto cellOf = [&](const std::vector<std::size_t>& cl) {
+    std::vector<std::size_t> run;
+    for (std::size_t i = 0; i < n; ++i)
+      if (keys[i] == keys[cl[0]]) run.push_back(i);
+    return run;
+  };
+  const std::vector<std::size_t> runA = cellOf(A), runC = cellOf(C);
+  REQUIRE(runA.size() >= A.size());
+  REQUIRE(runA.size() >= 4096);  // the radix branch of the refinement
+  REQUIRE(runC.size() >= C.size());
+  REQUIRE(runC.size() < 4096);   // the std::sort branch
+
+  const dt::HilbertBox box = dt::hilbertBox(p);
+  const dt::HilbertFrame root = {box.xmin + box.halfSide, box.ymin + box.halfSide, box.halfSide, 0, 0,
+                                 box.halfSide};
+  const dt::HilbertFrame fA = boxFrame(cellFrame(root, p[2 * A[0]], p[2 * A[0] + 1], top), p, runA);
+  const dt::HilbertFrame fC = boxFrame(cellFrame(root, p[2 * C[0]], p[2 * C[0] + 1], top), p, runC);
+  // B inside A's refinement: A's grid has hilbertAutoDepth(|runA|) levels over A's box.
+  const int depthA = dt::hilbertAutoDepth(runA.size());
+  std::vector<std::size_t> runB;
+  const std::uint64_t keyB = listingKey(fA, p[2 * B[0]], p[2 * B[0] + 1], depthA);
+  for (std::size_t i : runA)
+    if (listingKey(fA, p[2 * i], p[2 * i + 1], depthA) == keyB) runB.push_back(i);
+  REQUIRE(runB.size() == B.size());
+  const dt::HilbertFrame fB = boxFrame(cellFrame(fA, p[2 * B[0]], p[2 * B[0] + 1], depthA), p, runB);
+  // The test means something only if the frames differ from the frame above them.
+  REQUIRE_FALSE(sameOrientation(fA, root));
+  REQUIRE_FALSE(sameOrientation(fC, root));
+  REQUIRE_FALSE(sameOrientation(fB, fA));
+
+  const std::vector<std::size_t> o = dt::hilbertOrder(p);
+  REQUIRE(isPermutation(o, n));
+  CHECK(alongCurve(p, o, runA, fA, depthA));
+  CHECK(alongCurve(p, o, runB, fB, dt::hilbertAutoDepth(runB.size())));
+  CHECK(alongCurve(p, o, runC, fC, dt::hilbertAutoDepth(runC.size())));
+  // The same points in the root's frame are not in curve order: what a wrong frame gives.
+  CHECK_FALSE(alongCurve(p, o, runC, boxFrame(root, p, runC), dt::hilbertAutoDepth(runC.size())));
+}
