@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "star.h"
@@ -24,5 +25,12 @@ struct StuckRecovery {
   double factor;           ///< initSuperTriangles(T, box of xy, factor)
 };
 StuckRecovery stuckRecoveryExample();
+
+/// Exercise 2.3.5-5: the Hilbert index of cell (i, j) of the 2^depth x 2^depth grid on H_depth,
+/// the same number as hilbertIndex(i, j, depth) (Listing 2.8 started from red = +x, blue = +y;
+/// 0 <= i, j < 2^depth, 1 <= depth <= 31), computed with integer operations only: a loop over
+/// the levels and no branch (no if, switch, ?:, && or ||) and no call to the other Hilbert
+/// functions.
+std::uint64_t hilbertIndexBranchFree(std::uint32_t i, std::uint32_t j, int depth);
 
 }  // namespace dt

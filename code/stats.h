@@ -67,8 +67,11 @@ double halfEdgePointers(double n, double nh, bool exact);
 std::vector<Face*> vertexStar(Face* f, const Vertex* v, std::size_t maxFaces = 1u << 30);
 //! [vertexStar]
 
-/// Exercise 2.3.4-1: computeAdjacencies without std::map, O(N log N). Same contract as
-/// computeAdjacencies.
+/// Exercise 2.3.4-1: computeAdjacencies without std::map, O(N log N), with its contract: sets
+/// F[k] of every pair of faces of the list that share an edge (F[k] is the face across the edge
+/// V[k] V[k+1]); a link across an edge that only one face of the list has is left as it was (it
+/// borders a face outside the list). Throws std::logic_error if an edge is shared by more than
+/// two faces or two faces walk it in the same direction.
 void computeAdjacenciesSorted(std::vector<Face*>& faces);
 
 /// Exercise 2.3.4-2 (backward analysis of N_cavity): for T = DT(S0 u S) built on the

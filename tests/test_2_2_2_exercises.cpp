@@ -126,6 +126,8 @@ TEST_CASE("2.2.2 exercise 2.2.2-1 the answer agrees with far sample points on ra
   CHECK(unbounded >= 20);
 }
 
+// The test of a prove exercise states the claim and the idea: not in a released workspace.
+// BEGIN SOLUTION 2.2.2-2 (remove)
 TEST_CASE("2.2.2 exercise 2.2.2-2 a point lexicographically larger than every vertex sees an edge at the largest vertex") {
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> u(0, 1);
@@ -159,3 +161,4 @@ TEST_CASE("2.2.2 exercise 2.2.2-2 a point lexicographically larger than every ve
   }
   CHECK(cases == 800);
 }
+// END SOLUTION 2.2.2-2

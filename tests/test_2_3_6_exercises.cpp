@@ -43,6 +43,8 @@ TEST_CASE("2.3.6 exercise 2.3.6-1 three points where the notes' flips are stuck 
   CHECK(dt::checkDelaunay(m.xy, m.tri).ok);
 }
 
+// The test of a prove exercise states the claim and the idea: not in a released workspace.
+// BEGIN SOLUTION 2.3.6-2 (remove)
 TEST_CASE("2.3.6 exercise 2.3.6-2 after a flip of a non-locally-Delaunay edge the new edge is locally Delaunay") {
   // Triangles (a, b, c) and (b, a, d) with d strictly inside the circle of (a, b, c): the flip
   // makes (c, a, d) and (d, b, c); then b is strictly outside the circle of (c, a, d) and a
@@ -75,3 +77,4 @@ TEST_CASE("2.3.6 exercise 2.3.6-2 after a flip of a non-locally-Delaunay edge th
   MESSAGE(flips << " non-locally-Delaunay edges flipped");
   CHECK(flips >= 20000);
 }
+// END SOLUTION 2.3.6-2
