@@ -95,6 +95,8 @@ int prepare(const std::string& bookDir, const std::string& valuesDir, const std:
   std::vector<booktool::TestCase> tests;
   std::map<std::string, booktool::TestCase> byName;
   for (const std::string& f : listDir(testsDir, ".cpp"))
+    booktool::testBounds(booktool::readFile(testsDir + "/" + f), "tests/" + f, values);
+  for (const std::string& f : listDir(testsDir, ".cpp"))
     for (const auto& t : booktool::testCases(booktool::readFile(testsDir + "/" + f), "tests/" + f)) {
       tests.push_back(t);
       auto [it, fresh] = byName.emplace(t.name, t);

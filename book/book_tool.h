@@ -1256,7 +1256,9 @@ std::string reproduceBox(const ReproduceSpec& spec, const std::string& page,
     std::string e = htmlText(s);
     std::string out;
     for (std::size_t i = 0; i < e.size(); ++i)  // "--" must not become an en dash
-      out += (e[i] == '-' && i + 1 < e.size() && e[i + 1] == '-') ? std::string("&#45;") : std::string(1, e[i]);
+      out += (e[i] == '-' && ((i + 1 < e.size() && e[i + 1] == '-') || (i > 0 && e[i - 1] == '-')))
+                 ? std::string("&#45;")
+                 : std::string(1, e[i]);
     return "<code>" + out + "</code>";
   };
   std::ostringstream o;
@@ -1409,6 +1411,43 @@ std::string withListingCaptions(const std::string& page, Source source) {
     out += l + "\n";
   }
   return out;
+}
+
+// ---- bounds named in the tests --------------------------------------------------------------
+
+/// The bounds a test compares with, named for the book: a line of a test file that ends with
+/// "// book: <key>" gives <key> the last number literal before the comment ("CHECK(a > 0.38);
+/// // book: s234.bound_exp_lo" -> 0.38). The prose cites @{<key>}: the bound it states is then
+/// the very number the test compares with. A key without a number is an error.
+inline void testBounds(const std::string& text, const std::string& file,
+                       std::map<std::string, std::pair<std::string, std::string>>& out) {
+  int n = 0;
+  for (const std::string& l : splitLines(text)) {
+    ++n;
+    const std::size_t at = l.find("// book: ");
+    if (at == std::string::npos) continue;
+    const std::string key = squeeze(l.substr(at + 9));
+    // Only "key" alone to the end of the line (letters, digits, '_' and '.') is a name; the
+    // same text inside a string literal, as in test_book.cpp, is not.
+    bool name = !key.empty();
+    for (char c : key) name = name && (std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.');
+    if (!name) continue;
+    const std::string code = l.substr(0, at);
+    std::string last;
+    for (std::size_t i = 0; i < code.size(); ++i) {
+      const bool start = std::isdigit(static_cast<unsigned char>(code[i])) &&
+                         (i == 0 || !(std::isalnum(static_cast<unsigned char>(code[i - 1])) || code[i - 1] == '_' || code[i - 1] == '.'));
+      if (!start) continue;
+      std::size_t j = i;
+      while (j < code.size() && (std::isdigit(static_cast<unsigned char>(code[j])) || code[j] == '.')) ++j;
+      last = code.substr(i, j - i);
+      i = j;
+    }
+    const std::string where = file + ":" + std::to_string(n) + ": ";
+    if (key.empty() || last.empty()) throw std::runtime_error(where + "'// book:' needs a key and a number on its line");
+    if (out.count(key)) throw std::runtime_error(where + "key '" + key + "' is also written by " + out[key].second);
+    out[key] = {last, file + ":" + std::to_string(n)};
+  }
 }
 
 }  // namespace booktool

@@ -140,7 +140,7 @@ TEST_CASE("2.3.2 Figure 2.9: n = 12 and n_h = 9 give n_vf = 39/12 = 3.25") {
 TEST_CASE("2.3.2 on random points n_vf and n_ve tend to 6 (n >> n_h)") {
   // E[n_h] grows like log n for uniform points, so 6 - n_vf = (3 n_h + 6)/n is below 0.02 at 10^4.
   const dt::MeshCounts c = build(dt::uniformPoints(10000, 77)).counts;
-  CHECK(c.meanVF() > 5.98);
+  CHECK(c.meanVF() > 5.98);  // book: s232.bound_mean_lo
   CHECK(c.meanVF() < 6);
   CHECK(c.meanVE() > 5.98);
   CHECK(c.meanVE() < 6);

@@ -65,8 +65,8 @@ TEST_CASE("2.3.4 Table 2.1: N_search (faces visited by lineSearch) grows like sq
   }
   const double a = (3 * sxy - sx * sy) / (3 * sxx - sx * sx);
   MESSAGE("N_search exponent over 10^3..10^5: ", a);
-  CHECK(a > 0.38);
-  CHECK(a < 0.56);
+  CHECK(a > 0.38);  // book: s234.bound_exp_lo
+  CHECK(a < 0.56);  // book: s234.bound_exp_hi
 }
 
 TEST_CASE("2.3.4 Table 2.1: N_cavity tends to 4 on random points") {
@@ -81,7 +81,7 @@ TEST_CASE("2.3.4 Table 2.1: N_cavity tends to 4 on random points") {
   const double c4 = table21(10000, 42u).nCavity;
   MESSAGE("N_cavity: ", c3, " (10^3), ", c4, " (10^4)");
   CHECK(std::fabs(c3 - 4) < 0.25);
-  CHECK(std::fabs(c4 - 4) < 0.08);
+  CHECK(std::fabs(c4 - 4) < 0.08);  // book: s234.bound_cavity_tol
 }
 
 TEST_CASE("2.3.4 a cavity of size |C| gives |C| + 2 new triangles (4 -> 6)") {

@@ -596,15 +596,15 @@ void benchmark(const ch::Options& o, ch::Values& v) {
            std::to_string(c.incircle), std::to_string(c.incircleExact),
            pct(c.incircleExact, c.incircle), ch::fmt("%.2f", sec)});
     if (!key.empty()) {  // the book cites these shares (2.3.1 page)
-      v.set(key + "_orient_share", pct(c.orientExact, c.orient));
-      v.set(key + "_incircle_share", pct(c.incircleExact, c.incircle));
+      v.set(key + "orient_share", pct(c.orientExact, c.orient));
+      v.set(key + "incircle_share", pct(c.incircleExact, c.incircle));
     }
     std::cout << "  triangulated " << what << " (" << xy.size() / 2 << " points) in "
               << ch::fmt("%.2f", sec) << " s, checked exactly\n";
   };
   run("uniform in the unit square", dt::uniformPoints(std::size_t(nMax), 1));
   const int side = int(std::sqrt(double(nMax)));
-  run(ch::fmt("%d x %d grid", side, side), dt::gridPoints(side, side), "s231.grid");
+  run(ch::fmt("%d x %d grid", side, side), dt::gridPoints(side, side), "s231.grid_");
   run("near-circle (rounded cos, sin)",
       dt::circlePoints(std::size_t(std::min<long>(nMax, o.quick ? 2000 : 20000))));
   s.emit(o, "table_exact_share");
