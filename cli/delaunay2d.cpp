@@ -299,7 +299,8 @@ Options parse(int argc, char** argv) {
     o.out.resize(o.out.size() - 4);
   // -o is a base name: "-o dir/" or "-o dir" would write dir/.ele or dir.ele, never meant.
   struct stat st;
-  if (o.out.back() == '/' || (o.out != "-" && ::stat(o.out.c_str(), &st) == 0 && S_ISDIR(st.st_mode))) {
+  if (o.out.back() == '/' || (o.out != "-" &&
+                              ::stat(o.out.c_str(), &st) == 0 && S_ISDIR(st.st_mode))) {
     const std::string dir = o.out.back() == '/' ? o.out : o.out + "/";
     usageError("-o " + o.out + " names a directory; -o takes a base name (-o " + dir +
                "mesh writes " + dir + "mesh.ele)");

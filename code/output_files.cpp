@@ -485,6 +485,12 @@ void OutputFiles::commit(AfterCommit after) {
       if (!b.empty()) ::unlink(b.c_str());
     throw std::runtime_error(why);
   }
+  if (renamed.empty()) {  // streams only: they are complete, the commit is as final
+    if (after == AfterCommit::KeepSignalsBlocked)
+      blocked.keep();
+    else
+      blocked.dropPending();
+  }
   for (const std::string& b : backup)
     if (!b.empty()) ::unlink(b.c_str());
   for (File* f : files_) {

@@ -58,9 +58,9 @@ void writeFileAtomic(const std::string& path, const std::string& content);
 /// - a Stream is written straight into (it cannot be taken back); commit() sends its last bytes
 ///   before any rename, so a stream that fails leaves every File as it was.
 /// Until the first rename, a failure, an exception or SIGINT/SIGTERM/SIGHUP removes the
-/// temporaries and leaves every pre-existing file as it was; from the first rename on, the
-/// commit is final: those signals no longer end the process during the commit (see
-/// AfterCommit). SIGXFSZ is ignored (an oversized write fails with EFBIG) and so is SIGPIPE
+/// temporaries and leaves every pre-existing file as it was; from the first rename on (with
+/// streams only: once they are sent), the commit is final: those signals no longer end the
+/// process during the commit (see AfterCommit). SIGXFSZ is ignored (an oversized write fails with EFBIG) and so is SIGPIPE
 /// while a stream is open (a closed pipe fails with EPIPE). open() removes the temporaries of
 /// its target that processes no longer running left behind (killed with SIGKILL).
 class OutputFiles {
