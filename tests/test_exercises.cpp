@@ -15,11 +15,13 @@ struct Run {
 // Runs scripts/exercise.sh with `args` (already quoted), stdout and stderr together.
 Run exercise(const std::string& args) {
   const std::string log = dttest::tmpPath("exercise_" + std::to_string(::getpid()) + ".log");
-  const std::string cmd = std::string("bash '") + DT_SOURCE_DIR + "/scripts/exercise.sh' " + args +
-                          " > '" + log + "' 2>&1";
-  const int rc = std::system(cmd.c_str());
+  ch::ProcessIo io;  // the script's path reaches sh through the environment, never as code
+  io.stdoutPath = log;
+  io.stderrPath = "&1";
+  io.env = {{"DT_EXERCISE_SH", std::string(DT_SOURCE_DIR) + "/scripts/exercise.sh"}};
+  const int rc = ch::runProgram({"sh", "-c", "bash \"$DT_EXERCISE_SH\" " + args}, io);
   Run r;
-  r.status = WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
+  r.status = rc >= 0 && rc < 128 ? rc : -1;
   r.out = dttest::readText(log);
   return r;
 }
@@ -61,7 +63,7 @@ TEST_CASE("exercises start and check end to end in a temporary directory") {
   // One exercise through the student's path: a copy without the solution, a full build that
   // fails the check with the stub's message and the hint, then the solution put back passes.
   const std::string dir = dttest::tmpPath("exercise_e2e");
-  REQUIRE(std::system(("rm -rf '" + dir + "'").c_str()) == 0);
+  std::filesystem::remove_all(dir);
   const Run s = exercise("start 2.3.2-1 '" + dir + "'");
   INFO(s.out);
   REQUIRE(s.status == 0);
@@ -75,8 +77,7 @@ TEST_CASE("exercises start and check end to end in a temporary directory") {
   CHECK_FALSE(contains(solutions, "sol_2_3_2_1"));
   CHECK(contains(solutions, "sol_2_3_2_2"));
   // No page quotes the stripped code or links to the removed solution.
-  CHECK(std::system(("grep -rqE 'snippet code/stats.cpp gridCounts|ref sol_2_3_2_1' '" + dir +
-                     "/book'").c_str()) != 0);
+  CHECK(ch::runProgram({"grep", "-rqE", "snippet code/stats.cpp gridCounts|ref sol_2_3_2_1", dir + "/book"}) == 1);
   CHECK(contains(dttest::readText(dir + "/book/sec2_3_2.md"), "<!-- EXERCISE 2.3.2-1 -->"));
 
   const Run fail = exercise("check 2.3.2-1 '" + dir + "'");
@@ -92,5 +93,5 @@ TEST_CASE("exercises start and check end to end in a temporary directory") {
   INFO(pass.out);
   CHECK(pass.status == 0);
   CHECK(contains(pass.out, "PASS 2.3.2-1"));
-  std::system(("rm -rf '" + dir + "'").c_str());
+  std::filesystem::remove_all(dir);
 }
