@@ -162,7 +162,8 @@ check_table() {
 
 in_table() { awk -v c="$1" '$1 == c { found = 1 } END { exit !found }' <<< "$TABLE"; }
 
-# Prints "file: command" for every command word the scan finds.
+# Prints "file: command" for every command word the scan finds. Every grep may find nothing
+# (|| true): under set -e and pipefail a grep without a match would end the scan early, silently.
 scan_sources() {
   local f
   # Shell scripts: the first word of every pipeline segment (after VAR=value assignments);
@@ -189,25 +190,25 @@ scan_sources() {
   # C++ sources that run commands through a shell: literals that begin with a program name and
   # a space.
   while IFS= read -r f; do
-    grep -oE '"[a-z][a-z0-9+._-]* [^"]*' "$f" | sed -e 's/^"//' -e 's/^command -v //' |
+    { grep -oE '"[a-z][a-z0-9+._-]* [^"]*' "$f" || true; } | sed -e 's/^"//' -e 's/^command -v //' |
       awk -v file="$f" '{ print file ": " $1 }'
-  done < <(grep -rlE 'std::system\(|popen\(|exec[lv]p?\(' code chapters cli tests book 2>/dev/null)
+  done < <(grep -rlE 'std::system\(|popen\(|exec[lv]p?\(' code chapters cli tests book 2>/dev/null || true)
   # C++ sources that run commands without a shell (chapters/process.h): the call form
   # runProgram({"prog", ...}) names the program as the vector's first literal.
-  grep -roE 'runProgram\(\{ *"[a-z][a-z0-9+._-]*"' code chapters cli tests book 2>/dev/null |
+  { grep -roE 'runProgram\(\{ *"[a-z][a-z0-9+._-]*"' code chapters cli tests book 2>/dev/null || true; } |
     sed -E 's/^([^:]*):.*"([^"]*)"$/\1: \2/' 
   # gnuplot scripts: system("prog ...") and system(sprintf("prog ...")).
   for f in figures/*/*.gp; do
     [ -f "$f" ] || continue
-    grep -oE "system\((sprintf\()?[\"'][a-z][a-z0-9+._-]*" "$f" |
+    { grep -oE "system\((sprintf\()?[\"'][a-z][a-z0-9+._-]*" "$f" || true; } |
       sed -E "s/.*[\"']//" | awk -v file="$f" '{ print file ": " $1 }'
   done
   # CMake: find_program(VAR name ...), find_package(Doxygen), COMMAND <literal program>.
   for f in CMakeLists.txt */CMakeLists.txt */*/CMakeLists.txt book/*.cmake; do
     [ -f "$f" ] || continue
-    grep -oE 'find_program\([A-Za-z_]+ +[a-z][a-z0-9+._-]*' "$f" | awk -v file="$f" '{ print file ": " $2 }'
+    { grep -oE 'find_program\([A-Za-z_]+ +[a-z][a-z0-9+._-]*' "$f" || true; } | awk -v file="$f" '{ print file ": " $2 }'
     grep -qi 'find_package(Doxygen' "$f" && echo "$f: doxygen"
-    grep -oE 'COMMAND +[a-z][a-z0-9+._-]*' "$f" | awk -v file="$f" '{ print file ": " $2 }'
+    { grep -oE 'COMMAND +[a-z][a-z0-9+._-]*' "$f" || true; } | awk -v file="$f" '{ print file ": " $2 }'
   done
 }
 
