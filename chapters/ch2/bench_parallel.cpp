@@ -178,8 +178,9 @@ std::vector<int> parseList(const std::string& s) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const ch::Program p{"bench_parallel", "The parallel kernel against threads, and time per point.",
-                      1000, 10000000, {"fig_time_per_point"},
+  const ch::Program p{"bench_parallel",
+                      "The parallel kernel against threads, and time per point (--max-n 100000000: up to 10^8).",
+                      1000, 100000000, {"fig_time_per_point"},
                       {{"--reps", "N", "alternating runs, the best kept (default 3, 1 with --quick)", 1, 1000},
                        {"--threads", "LIST", "thread counts to measure, e.g. 1,2,4 (each 1 to 64)"}}};
   return ch::runMain(argc, argv, p, [&](const ch::Options& o) -> int {
