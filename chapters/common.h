@@ -5,11 +5,17 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <charconv>
 #include <chrono>
+#include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <map>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -17,64 +23,233 @@
 #include <vector>
 
 #include "io.h"
+#include "process.h"
 
 namespace ch {
 
-/// Command-line options common to all chapter programs.
+/// An option one program adds to the common ones, e.g. {"--reps", "N", "runs per kernel", 1,
+/// 1000}. An empty `value` makes a flag; "N" an integer checked against [lo, hi] while the
+/// options are read; any other value name (e.g. "LIST") text the program checks itself.
+struct ExtraOption {
+  std::string name, value, help;
+  long lo = 0, hi = 0;
+};
+
+/// What a chapter program declares about itself, so that every program reads its options the
+/// same way and --help lists them the same way.
+struct Program {
+  std::string name;     ///< as in messages, e.g. "sec2_1_kernel"
+  std::string purpose;  ///< one line for --help
+  long minN = 1000, maxN = 10000000;  ///< what --max-n may be, checked before anything is written
+  std::vector<std::string> figures;   ///< what --only accepts: the stems of its gnuplot scripts
+  std::vector<ExtraOption> extras;    ///< options of this program only
+};
+
+/// A usage error found after the options were read (e.g. a bad --threads list): runMain
+/// prints it as one line and exits with status 2.
+struct UsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+/// The options of a chapter program (ch::parseOptions reads them; `--help` lists them):
 ///   --out DIR    where to write (default: DT_OUTPUT_DIR/ch2, i.e. build/output/ch2)
 ///   --quick      a smaller run (smaller sizes; for slow laptops and smoke tests)
 ///   --max-n N    the largest point count of the size tables
 ///   --no-plot    write data and tables but do not call gnuplot
+///   --seed N     other random points than the book's fixed seeds
+///   --only FIG   draw that figure only; tables and values are left as they are
+///   --size WxH   the figures' size in pixels, instead of the style's
+/// and the program's own (Program::extras).
 struct Options {
-  std::string out = std::string(DT_OUTPUT_DIR) + "/ch2";
+  std::string out = std::string(DT_OUTPUT_DIR) + "/ch2";  ///< absolute after parseOptions
   bool quick = false;
   bool plot = true;
-  long maxN = 0;  // 0: the program's default
-  std::vector<std::string> rest;  // options a program handles itself
+  long maxN = 0;  ///< 0: the program's default
+  std::optional<std::uint64_t> seedOption;  ///< --seed
+  std::string only;                         ///< --only: one figure (a gnuplot script's stem)
+  int width = 0, height = 0;                ///< --size; 0: the style's size
+  std::map<std::string, std::string> extra;  ///< the program's own options given ("" for a flag)
+
+  /// The seed to use where the book uses `bookSeed`: `bookSeed` itself unless --seed N was
+  /// given, else a seed made of N and `bookSeed` (so two random sets of one program stay
+  /// different from each other, and each changes with N).
+  std::uint64_t seed(std::uint64_t bookSeed) const {
+    if (!seedOption) return bookSeed;
+    auto mix = [](std::uint64_t z) {  // splitmix64's finaliser
+      z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+      z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+      return z ^ (z >> 31);
+    };
+    return mix(*seedOption + 0x9e3779b97f4a7c15ULL * (bookSeed + 1)) & 0xffffffffULL;
+  }
+  /// False when --only names another figure: the program skips the work of this one.
+  bool wants(const std::string& figure) const { return only.empty() || only == figure; }
+  /// True unless --only was given: tables and values_<program>.txt are written only then.
+  bool everything() const { return only.empty(); }
+  bool has(const std::string& name) const { return extra.count(name) > 0; }
+  /// An integer option of the program's own (checked when read), or `dflt` if not given.
+  long number(const std::string& name, long dflt) const {
+    const auto it = extra.find(name);
+    return it == extra.end() ? dflt : std::stol(it->second);
+  }
 };
 
-inline Options parseOptions(int argc, char** argv) {
+/// The one-line usage of a program: every option, in the same order everywhere.
+inline std::string usageLine(const Program& p) {
+  std::string u = p.name + " [--out DIR] [--quick] [--max-n N] [--no-plot] [--seed N] [--only FIG] [--size WxH]";
+  for (const ExtraOption& e : p.extras) u += " [" + e.name + (e.value.empty() ? "" : " " + e.value) + "]";
+  return u + " [--help]";
+}
+
+/// What --help prints: the usage, the purpose, one line per option.
+inline std::string helpText(const Program& p) {
+  std::ostringstream s;
+  auto line = [&](const std::string& opt, const std::string& what) {
+    s << "  " << opt << std::string(opt.size() < 14 ? 14 - opt.size() : 1, ' ') << what << "\n";
+  };
+  s << "usage: " << usageLine(p) << "\n" << p.purpose << "\n";
+  line("--out DIR", "where to write figures, tables and data (default: " + std::string(DT_OUTPUT_DIR) + "/ch2)");
+  line("--quick", "a smaller run: smaller sizes, a few seconds");
+  line("--max-n N", "the largest point count, " + std::to_string(p.minN) + " to " +
+                        std::to_string(p.maxN) + " (1e5 is read as 100000)");
+  line("--no-plot", "write data and tables, do not call gnuplot");
+  line("--seed N", "other random points than the book's fixed seeds (N from 0 to 2^64-1)");
+  std::string figs;
+  for (const std::string& f : p.figures) figs += " " + f;
+  line("--only FIG", p.figures.empty() ? std::string("draw one figure only (this program draws none)")
+                                      : "draw one figure only, tables and values left as they are; FIG:" + figs);
+  line("--size WxH", "the figures' size in pixels instead of the style's, e.g. 800x450 (each 64 to 8192)");
+  for (const ExtraOption& e : p.extras) line(e.name + (e.value.empty() ? "" : " " + e.value), e.help);
+  line("--help", "this list");
+  return s.str();
+}
+
+/// Reads a whole integer: digits, or a number in scientific notation that is a whole number
+/// (1e5, 2.5e3). Returns nothing for anything else (1.5, 12abc, 0x10, an overflow).
+inline std::optional<long> parseWhole(const std::string& text) {
+  const char* b = text.data();
+  const char* e = b + text.size();
+  long v = 0;
+  auto r = std::from_chars(b, e, v);
+  if (r.ec == std::errc() && r.ptr == e) return v;
+  double d = 0;
+  auto rd = std::from_chars(b, e, d);
+  if (rd.ec != std::errc() || rd.ptr != e || !std::isfinite(d) || d != std::floor(d) ||
+      std::fabs(d) > 9.0e15)
+    return std::nullopt;
+  return long(d);
+}
+
+/// Reads the options of program `p` (see Options). A usage error (an unknown option, a missing
+/// or malformed value, an option given twice, an extra argument, a --max-n outside what the
+/// program can do) is one line on stderr and exit status 2, before anything is written.
+/// --help prints helpText and exits 0. Creates the output directory (exit 1 if it cannot).
+inline Options parseOptions(int argc, char** argv, const Program& p) {
   Options o;
+  auto refuse = [&](const std::string& what) {
+    std::cerr << p.name << ": " << what << "; usage: " << usageLine(p) << "\n";
+    std::exit(2);
+  };
+  std::map<std::string, bool> seen;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    if (a == "--out" && i + 1 < argc) {
-      o.out = argv[++i];
+    if (a == "--help" || a == "-h") {
+      std::cout << helpText(p);
+      std::exit(0);
+    }
+    const ExtraOption* extra = nullptr;
+    for (const ExtraOption& e : p.extras)
+      if (e.name == a) extra = &e;
+    const bool takesValue = a == "--out" || a == "--max-n" || a == "--seed" || a == "--only" ||
+                            a == "--size" || (extra && !extra->value.empty());
+    const bool known = takesValue || a == "--quick" || a == "--no-plot" || extra;
+    if (!known) {
+      if (a.size() > 1 && a[0] == '-') refuse("unknown option '" + a + "'");
+      refuse("unexpected argument '" + a + "'");
+    }
+    if (seen[a]) refuse("option " + a + " given twice");
+    seen[a] = true;
+    std::string v;
+    if (takesValue) {
+      if (i + 1 >= argc) refuse("option " + a + " needs a value");
+      v = argv[++i];
+    }
+    if (a == "--out") {
+      if (v.empty()) refuse("--out needs a directory name, not ''");
+      if (v.find('\n') != std::string::npos) refuse("--out: a directory name with a newline is not supported");
+      o.out = v;
     } else if (a == "--quick") {
       o.quick = true;
     } else if (a == "--no-plot") {
       o.plot = false;
-    } else if (a == "--max-n" && i + 1 < argc) {
-      o.maxN = std::atol(argv[++i]);
-      if (o.maxN <= 0) {
-        std::cerr << argv[0] << ": --max-n needs a positive integer\n";
-        std::exit(2);
+    } else if (a == "--max-n") {
+      const std::optional<long> n = parseWhole(v);
+      if (!n || *n < p.minN || *n > p.maxN)
+        refuse("--max-n needs a whole number from " + std::to_string(p.minN) + " to " +
+               std::to_string(p.maxN) + " (what this program can do), not '" + v + "'");
+      o.maxN = *n;
+    } else if (a == "--seed") {
+      std::uint64_t s = 0;
+      auto r = std::from_chars(v.data(), v.data() + v.size(), s);
+      if (r.ec != std::errc() || r.ptr != v.data() + v.size())
+        refuse("--seed needs a whole number from 0 to 2^64-1, not '" + v + "'");
+      o.seedOption = s;
+    } else if (a == "--only") {
+      bool ok = false;
+      std::string figs;
+      for (const std::string& f : p.figures) {
+        ok = ok || f == v;
+        figs += " " + f;
       }
+      if (!ok)
+        refuse(p.figures.empty() ? "--only " + v + ": this program draws no figure"
+                                 : "--only: no figure '" + v + "' here (its figures:" + figs + ")");
+      o.only = v;
+    } else if (a == "--size") {
+      const std::size_t x = v.find('x');
+      const std::optional<long> w = x == std::string::npos ? std::nullopt : parseWhole(v.substr(0, x));
+      const std::optional<long> h = x == std::string::npos ? std::nullopt : parseWhole(v.substr(x + 1));
+      if (!w || !h || *w < 64 || *w > 8192 || *h < 64 || *h > 8192)
+        refuse("--size needs WIDTHxHEIGHT in pixels, each 64 to 8192 (e.g. 800x450), not '" + v + "'");
+      o.width = int(*w);
+      o.height = int(*h);
+    } else if (extra->value == "N") {
+      const std::optional<long> n = parseWhole(v);
+      if (!n || *n < extra->lo || *n > extra->hi)
+        refuse(a + " needs a whole number from " + std::to_string(extra->lo) + " to " +
+               std::to_string(extra->hi) + ", not '" + v + "'");
+      o.extra[a] = std::to_string(*n);
     } else {
-      o.rest.push_back(a);
+      o.extra[a] = v;
     }
   }
-  std::string cmd = "mkdir -p '" + o.out + "'";
-  if (std::system(cmd.c_str()) != 0) {
-    std::cerr << argv[0] << ": cannot create " << o.out << "\n";
+  std::error_code ec;
+  o.out = std::filesystem::absolute(o.out, ec).lexically_normal().string();
+  if (!ec) std::filesystem::create_directories(o.out, ec);
+  if (ec) {
+    std::cerr << p.name << ": cannot create the output directory '" << o.out << "': " << ec.message() << "\n";
     std::exit(1);
   }
   return o;
 }
 
-/// The main() of a chapter program: parses the options, runs `body(options)`, and reports an
-/// exception on stderr (prefixed with `name`) with exit status 1. A body that returns an int
-/// gives the exit status itself (2 for a usage error, say).
+/// The main() of a chapter program: reads the options (parseOptions), runs `body(options)`,
+/// and reports an exception on stderr (prefixed with the program's name) with exit status 1,
+/// a UsageError with status 2. A body that returns an int gives the exit status itself.
 template <class Body>
-int runMain(int argc, char** argv, const char* name, Body&& body) {
-  const Options o = parseOptions(argc, argv);
+int runMain(int argc, char** argv, const Program& p, Body&& body) {
+  const Options o = parseOptions(argc, argv, p);
   try {
     if constexpr (std::is_void_v<decltype(body(o))>) {
       body(o);
     } else {
       return body(o);
     }
+  } catch (const UsageError& e) {
+    std::cerr << p.name << ": " << e.what() << "; usage: " << usageLine(p) << "\n";
+    return 2;
   } catch (const std::exception& e) {
-    std::cerr << name << ": " << e.what() << "\n";
+    std::cerr << p.name << ": " << e.what() << "\n";
     return 1;
   }
   return 0;
@@ -106,21 +281,44 @@ inline std::vector<std::string> gnuplotOutputs(const std::string& scriptPath) {
   return names;
 }
 
-/// Runs figures/ch2/<script> with gnuplot; the script reads its data from `datadir` and
-/// writes into `outdir` (both set with -e). A figure the book embeds must not go missing
-/// quietly: if gnuplot fails, or a file the script names is not written by this run, this
-/// throws (runMain turns that into exit status 1) with the script and the file named.
+/// `text` as a gnuplot single-quoted string: gnuplot reads nothing inside one but '' (one
+/// quote), so a path with ", $(...), ;, \ or a space stays the path. (parseOptions refuses a
+/// newline in --out.)
+inline std::string gnuplotQuote(const std::string& text) {
+  std::string q = "'";
+  for (char c : text) q += c == '\'' ? std::string("''") : std::string(1, c);
+  return q + "'";
+}
+
+/// Runs figures/ch2/<script> with gnuplot, without a shell: gnuplot runs in figures/ch2 (the
+/// scripts load style.gp from there) and gets `datadir` and `outdir` (both --out) as gnuplot
+/// strings on its command line, plus the environment variable DT_DATADIR for scripts that
+/// hand the data directory to a command (`system("cat \"$DT_DATADIR/...\"")`: the shell
+/// expands it without reading it as code); --size adds `fig_size_w`, `fig_size_h`, which
+/// style.gp's fig_open prefers to its table. Skipped with --no-plot, and with --only naming
+/// another figure. A figure the book embeds must not go missing quietly: if gnuplot fails, or
+/// a file the script names is not written by this run, this throws (runMain turns that into
+/// exit status 1) with the script and the file named.
 inline void runGnuplot(const Options& o, const std::string& script) {
   if (!o.plot) return;
-  const std::string path = std::string(DT_SOURCE_DIR) + "/figures/ch2/" + script;
+  if (!o.wants(script.substr(0, script.rfind(".gp")))) return;
+  const std::string dir = std::string(DT_SOURCE_DIR) + "/figures/ch2";
+  const std::string path = dir + "/" + script;
   const std::vector<std::string> promised = gnuplotOutputs(path);
   for (const auto& name : promised) std::remove((o.out + "/" + name).c_str());
-  const std::string cmd = "gnuplot -e \"datadir='" + o.out + "'; outdir='" + o.out + "'\" '" +
-                          path + "'";
-  const int rc = std::system(cmd.c_str());
+  std::string vars = "datadir = " + gnuplotQuote(o.out) + "; outdir = " + gnuplotQuote(o.out);
+  if (o.width > 0)
+    vars += "; fig_size_w = " + std::to_string(o.width) + "; fig_size_h = " + std::to_string(o.height);
+  ProcessIo io;
+  io.cwd = dir;
+  io.env = {{"DT_DATADIR", o.out}};
+  const int rc = runProgram({"gnuplot", "-e", vars, script}, io);
+  if (rc == 127)
+    throw std::runtime_error("could not run gnuplot on " + path +
+                             ": its figures were not drawn (is gnuplot installed? bash scripts/deps.sh)");
   if (rc != 0)
     throw std::runtime_error("gnuplot failed (status " + std::to_string(rc) + ") on " + path +
-                             ": its figures were not drawn (is gnuplot installed? bash scripts/deps.sh)");
+                             ": its figures were not drawn");
   for (const auto& name : promised) {
     struct stat st;
     if (stat((o.out + "/" + name).c_str(), &st) != 0 || st.st_size == 0)
@@ -194,7 +392,9 @@ struct Table {
     return s.str();
   }
   /// Prints the Markdown and writes <stem>.md, <stem>.csv, <stem>.html.
+  /// Nothing with --only (a figure alone leaves the tables of the last full run as they are).
   void emit(const Options& o, const std::string& stem) const {
+    if (!o.everything()) return;
     std::cout << "\n" << markdown() << "\n";
     writeOut(o, stem + ".md", markdown());
     writeOut(o, stem + ".csv", csv());
@@ -235,7 +435,9 @@ class Values {
     set(key, condition ? ifTrue : ifFalse);
   }
   /// Writes values_<program>.txt into the output directory.
+  /// Nothing with --only: the values of the last full run stay as they are.
   void write() const {
+    if (!o_.everything()) return;
     std::string text;
     for (const auto& kv : kv_) text += kv.first + " " + kv.second + "\n";
     writeOut(o_, "values_" + program_ + ".txt", text);

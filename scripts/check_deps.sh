@@ -27,7 +27,7 @@ c++          g++                cmake (the compiler of every target)
 cmake        cmake              scripts/main.sh scripts/test.sh scripts/fuzz.sh
 ctest        cmake              scripts/test.sh
 make         make               cmake (the generator)
-gnuplot      gnuplot-nox        chapters/common.h runGnuplot
+gnuplot      gnuplot-nox        chapters/common.h runGnuplot (runProgram)
 doxygen      doxygen            book/CMakeLists.txt
 clang++      clang              scripts/fuzz.sh
 chromium     chromium           book/layout_check.sh (the book's layout, measured) and tests of the book
@@ -40,7 +40,7 @@ sed          base               figures/ch2/*.gp system(), scripts
 cat          base               figures/ch2/*.gp system()
 grep         base               scripts
 script       base               tests/test_progress.cpp (a terminal for the progress display)
-mkdir        base               chapters/common.h tests/support.h
+mkdir        base               scripts
 mktemp       base               scripts
 rm           base               scripts
 tee          base               scripts/test.sh
@@ -55,6 +55,7 @@ tail         base               scripts
 ls           base               scripts/fuzz.sh
 cp           base               scripts
 git          git                scripts/mutants.sh (a temporary copy of the tree)
+shellcheck   shellcheck         CMakeLists.txt (the ctest entry shellcheck: every script of scripts/)
 tar          base               scripts/mutants.sh
 touch        base               scripts/mutants.sh
 mv           base               scripts
@@ -71,7 +72,7 @@ diff         base               tests
 env          base               scripts (#!/usr/bin/env bash)
 bash         base               scripts
 perl         base               scripts/check_deps.sh (perl-base)
-sh           base               tests/test_cli.cpp tests/test_bad_input.cpp (a signal during the writes, a pipe)
+sh           base               tests/support.h (runCli) tests/test_cli.cpp tests/test_bad_input.cpp (a signal during the writes, a pipe)
 ln           base               tests/test_cli.cpp (a hard link to the input)
 mkfifo       base               tests/test_bad_input.cpp (a named pipe as input)
 '
@@ -162,7 +163,8 @@ check_table() {
 
 in_table() { awk -v c="$1" '$1 == c { found = 1 } END { exit !found }' <<< "$TABLE"; }
 
-# Prints "file: command" for every command word the scan finds.
+# Prints "file: command" for every command word the scan finds. Every grep may find nothing
+# (|| true): under set -e and pipefail a grep without a match would end the scan early, silently.
 scan_sources() {
   local f
   # Shell scripts: the first word of every pipeline segment (after VAR=value assignments);
@@ -186,23 +188,28 @@ scan_sources() {
         }
       }' "$f"
   done
-  # C++ sources that run commands: literals that begin with a program name and a space.
-  for f in $(grep -rlE 'std::system\(|popen\(|exec[lv]p?\(' code chapters cli tests 2>/dev/null); do
-    grep -oE '"[a-z][a-z0-9+._-]* [^"]*' "$f" | sed -e 's/^"//' -e 's/^command -v //' |
+  # C++ sources that run commands through a shell: literals that begin with a program name and
+  # a space.
+  while IFS= read -r f; do
+    { grep -oE '"[a-z][a-z0-9+._-]* [^"]*' "$f" || true; } | sed -e 's/^"//' -e 's/^command -v //' |
       awk -v file="$f" '{ print file ": " $1 }'
-  done
+  done < <(grep -rlE 'std::system\(|popen\(|exec[lv]p?\(' code chapters cli tests book 2>/dev/null || true)
+  # C++ sources that run commands without a shell (chapters/process.h): the call form
+  # runProgram({"prog", ...}) names the program as the vector's first literal.
+  { grep -roE 'runProgram\(\{ *"[a-z][a-z0-9+._-]*"' code chapters cli tests book 2>/dev/null || true; } |
+    sed -E 's/^([^:]*):.*"([^"]*)"$/\1: \2/' 
   # gnuplot scripts: system("prog ...") and system(sprintf("prog ...")).
   for f in figures/*/*.gp; do
     [ -f "$f" ] || continue
-    grep -oE "system\((sprintf\()?[\"'][a-z][a-z0-9+._-]*" "$f" |
+    { grep -oE "system\((sprintf\()?[\"'][a-z][a-z0-9+._-]*" "$f" || true; } |
       sed -E "s/.*[\"']//" | awk -v file="$f" '{ print file ": " $1 }'
   done
   # CMake: find_program(VAR name ...), find_package(Doxygen), COMMAND <literal program>.
   for f in CMakeLists.txt */CMakeLists.txt */*/CMakeLists.txt book/*.cmake; do
     [ -f "$f" ] || continue
-    grep -oE 'find_program\([A-Za-z_]+ +[a-z][a-z0-9+._-]*' "$f" | awk -v file="$f" '{ print file ": " $2 }'
+    { grep -oE 'find_program\([A-Za-z_]+ +[a-z][a-z0-9+._-]*' "$f" || true; } | awk -v file="$f" '{ print file ": " $2 }'
     grep -qi 'find_package(Doxygen' "$f" && echo "$f: doxygen"
-    grep -oE 'COMMAND +[a-z][a-z0-9+._-]*' "$f" | awk -v file="$f" '{ print file ": " $2 }'
+    { grep -oE 'COMMAND +[a-z][a-z0-9+._-]*' "$f" || true; } | awk -v file="$f" '{ print file ": " $2 }'
   done
 }
 
@@ -223,7 +230,8 @@ if [ "${1:-}" = --self-test ]; then
   tmp=$(mktemp)
   trap 'rm -f "$tmp"' EXIT
   status=0
-  for pkg in $(awk 'NF { sub(/^optional:/, "", $2); if ($2 != "base") print $2 }' <<< "$TABLE" | sort -u); do
+  mapfile -t packages < <(awk 'NF { sub(/^optional:/, "", $2); if ($2 != "base") print $2 }' <<< "$TABLE" | sort -u)
+  for pkg in "${packages[@]}"; do
     re=$(sed 's/[+.]/\\&/g' <<< "$pkg")
     sed -E "s/(^|[[:space:](])$re([[:space:])]|$)/\1\2/" scripts/deps.sh > "$tmp"
     if out=$(DT_DEPS_FILE=$tmp DT_CHECK_LISTS_ONLY=1 bash "$0" 2>&1); then

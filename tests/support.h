@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -17,6 +18,7 @@
 #include "check.h"
 #include "generators.h"
 #include "triangulate.h"
+#include "../chapters/process.h"
 
 namespace dttest {
 
@@ -42,8 +44,10 @@ inline dt::CheckReport triangulateAndCheck(const XY& p, dt::InsertionStats* st =
 
 // ---- running the command-line triangulator -------------------------------------------------
 
+// DT_TEST_TMP is <build>/test_tmp, or a directory of /tmp when the build's path holds a
+// character a shell would read (CMakeLists.txt): the tests quote the paths they build with '...'.
 inline std::string tmpPath(const std::string& name) {
-  std::system((std::string("mkdir -p '") + DT_TEST_TMP + "'").c_str());
+  std::filesystem::create_directories(DT_TEST_TMP);
   return std::string(DT_TEST_TMP) + "/" + name;
 }
 
@@ -65,15 +69,21 @@ struct CliResult {
   std::string out, err; // its stdout and stderr
 };
 
-/// Runs build/delaunay2d with the given arguments (shell-quoted by the caller if needed).
+/// Runs build/delaunay2d with the given arguments, a shell command line the caller writes (and
+/// quotes: paths of tmpPath() are safe in '...'). The program's own path reaches the shell
+/// through the environment ("$DT_CLI_BIN"), so a build under any path works.
 inline CliResult runCli(const std::string& args) {
   static int counter = 0;
   // The pid keeps parallel ctest entries (one process per test file) apart.
   const std::string tag = std::to_string(::getpid()) + "_" + std::to_string(counter++);
   const std::string o = tmpPath("cli_out_" + tag), e = tmpPath("cli_err_" + tag);
-  const int rc = std::system((std::string(DT_CLI) + " " + args + " > '" + o + "' 2> '" + e + "'").c_str());
+  ch::ProcessIo io;
+  io.stdoutPath = o;
+  io.stderrPath = e;
+  io.env = {{"DT_CLI_BIN", DT_CLI}};
+  const int rc = ch::runProgram({"sh", "-c", "\"$DT_CLI_BIN\" " + args}, io);
   CliResult r;
-  r.status = WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
+  r.status = rc >= 0 && rc < 128 ? rc : -1;
   r.out = readText(o);
   r.err = readText(e);
   return r;

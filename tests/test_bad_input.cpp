@@ -2,6 +2,7 @@
 #include <doctest/doctest.h>
 
 #include <sys/resource.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -235,10 +236,11 @@ TEST_CASE("bad input devices are refused and named pipes are read") {
   // A named pipe is what a user means by "the output of another program": it is read.
   const std::string fifo = dttest::tmpPath("points_fifo.xy"), out = dttest::tmpPath("fifo_out");
   std::remove(fifo.c_str());
-  REQUIRE(std::system(("mkfifo '" + fifo + "'").c_str()) == 0);
-  const std::string cmd = "sh -c \"printf '0 0\\n1 0\\n0 1\\n1 1\\n' > '" + fifo + "' & " +
-                          std::string(DT_CLI) + " '" + fifo + "' -o '" + out + "'\"";
-  CHECK(std::system(cmd.c_str()) == 0);
+  REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+  ch::ProcessIo io;  // the paths reach sh through the environment, never as code
+  io.env = {{"FIFO", fifo}, {"OUT", out}, {"DT_CLI_BIN", DT_CLI}};
+  CHECK(ch::runProgram({"sh", "-c", "printf '0 0\\n1 0\\n0 1\\n1 1\\n' > \"$FIFO\" & \"$DT_CLI_BIN\" \"$FIFO\" -o \"$OUT\""},
+                       io) == 0);
   CHECK(dttest::readEle(out + ".ele", 1).size() == 2);
   std::remove(fifo.c_str());
 }

@@ -133,19 +133,19 @@ namespace {
 
 // The files of a directory whose name starts with `prefix` (temporaries left behind).
 std::vector<std::string> filesStartingWith(const std::string& dir, const std::string& prefix) {
-  const std::string list = dttest::tmpPath("listing_" + std::to_string(::getpid()));
-  std::system(("ls -a '" + dir + "' > '" + list + "'").c_str());
-  std::istringstream in(dttest::readText(list));
   std::vector<std::string> found;
-  for (std::string name; std::getline(in, name);)
+  for (const auto& e : std::filesystem::directory_iterator(dir)) {
+    const std::string name = e.path().filename().string();
     if (name.compare(0, prefix.size(), prefix) == 0) found.push_back(name);
+  }
   return found;
 }
 
 // A directory of its own for each test of the outputs.
 std::string freshDir(const std::string& name) {
   const std::string d = dttest::tmpPath("outputs_" + name);
-  std::system(("rm -rf '" + d + "' && mkdir -p '" + d + "'").c_str());
+  std::filesystem::remove_all(d);
+  std::filesystem::create_directories(d);
   return d;
 }
 
@@ -175,7 +175,7 @@ TEST_CASE("cli a failed run leaves every pre-existing output as it was") {
   CHECK(dttest::readText(out + ".ele") == "OLD ELE\n");
   CHECK(dttest::readText(d + "/old.svg") == "OLD SVG\n");
   // A target that is a directory is refused before anything is read.
-  std::system(("mkdir -p '" + d + "/adir'").c_str());
+  std::filesystem::create_directories(d + "/adir");
   r = dttest::runCli("'" + in + "' -o '" + out + "' --svg '" + d + "/adir'");
   CHECK(r.status == 2);
   CHECK(dttest::readText(out + ".ele") == "OLD ELE\n");
@@ -202,7 +202,7 @@ TEST_CASE("cli an output that is the input file or another output is refused") {
       // the same file under another name: a hard link (device and inode, not names)
       {q + " -o '" + d + "/o' --svg '" + d + "/alias.svg'", "--svg: " + d + "/alias.svg is the input file"},
   };
-  std::system(("ln '" + in + "' '" + d + "/alias.svg'").c_str());
+  std::filesystem::create_hard_link(in, d + "/alias.svg");
   for (const Case& c : cases) {
     CAPTURE(c.args);
     const dttest::CliResult r = dttest::runCli(c.args);
@@ -227,13 +227,17 @@ TEST_CASE("cli killed while its outputs are written it leaves no temporary and k
   dttest::writeText(out + ".ele", "OLD ELE\n");
   // DELAUNAY2D_TEST_HOLD_OUTPUTS: the CLI stops once the temporaries are written, says
   // "holding", and waits; the signal comes then.
+  // The paths reach the script through the environment (D, DT_CLI_BIN), never as code.
   const std::string script =
-      "DELAUNAY2D_TEST_HOLD_OUTPUTS=60 " + std::string(DT_CLI) + " '" + in + "' -o '" + out +
-      "' --svg '" + d + "/s.svg' 2> '" + d + "/err' & pid=$!; "
-      "for i in $(seq 300); do grep -q holding '" + d + "/err' && break; sleep 0.1; done; "
-      "ls '" + d + "' > '" + d + "/during'; kill -TERM $pid; wait $pid; echo $? > '" + d + "/status'";
+      "DELAUNAY2D_TEST_HOLD_OUTPUTS=60 \"$DT_CLI_BIN\" \"$D/in.xy\" -o \"$D/out\" "
+      "--svg \"$D/s.svg\" 2> \"$D/err\" & pid=$!; "
+      "for i in $(seq 300); do grep -q holding \"$D/err\" && break; sleep 0.1; done; "
+      "ls \"$D\" > \"$D/during\"; kill -TERM $pid; wait $pid; echo $? > \"$D/status\"";
   dttest::writeText(d + "/kill.sh", script + "\n");
-  REQUIRE(std::system(("sh '" + d + "/kill.sh' 2> /dev/null").c_str()) == 0);
+  ch::ProcessIo io;
+  io.stderrPath = "/dev/null";
+  io.env = {{"D", d}, {"DT_CLI_BIN", DT_CLI}};
+  REQUIRE(ch::runProgram({"sh", d + "/kill.sh"}, io) == 0);
   const std::string during = dttest::readText(d + "/during");
   CHECK(during.find("out.ele.dttmp-") != std::string::npos);  // the signal came while they existed
   CHECK(during.find("s.svg.dttmp-") != std::string::npos);

@@ -16,11 +16,13 @@ struct Run {
 // Runs scripts/exercise.sh with `args` (already quoted), stdout and stderr together.
 Run exercise(const std::string& args, const std::string& env = "") {
   const std::string log = dttest::tmpPath("exercise_" + std::to_string(::getpid()) + ".log");
-  const std::string cmd = env + " bash '" + DT_SOURCE_DIR + "/scripts/exercise.sh' " + args +
-                          " > '" + log + "' 2>&1";
-  const int rc = std::system(cmd.c_str());
+  ch::ProcessIo io;  // the script's path reaches sh through the environment, never as code
+  io.stdoutPath = log;
+  io.stderrPath = "&1";
+  io.env = {{"DT_EXERCISE_SH", std::string(DT_SOURCE_DIR) + "/scripts/exercise.sh"}};
+  const int rc = ch::runProgram({"sh", "-c", env + " bash \"$DT_EXERCISE_SH\" " + args}, io);
   Run r;
-  r.status = WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
+  r.status = rc >= 0 && rc < 128 ? rc : -1;
   r.out = dttest::readText(log);
   return r;
 }
@@ -64,7 +66,7 @@ TEST_CASE("exercises release check hint and watch end to end in a temporary dire
   // back passes under watch. The workspace lies outside the repository (inside is refused).
   const std::string dir = (std::filesystem::temp_directory_path() /
                            ("dt_exercise_e2e_" + std::to_string(::getpid()))).string();
-  REQUIRE(std::system(("rm -rf '" + dir + "'").c_str()) == 0);
+  std::filesystem::remove_all(dir);
   const Run s = exercise("release 2.3.2-1 '" + dir + "'");
   INFO(s.out);
   REQUIRE(s.status == 0);
@@ -77,8 +79,7 @@ TEST_CASE("exercises release check hint and watch end to end in a temporary dire
   CHECK_FALSE(contains(solutions, "sol_2_3_2_1"));
   CHECK_FALSE(contains(solutions, "sol_2_3_2_2"));
   // No page quotes the stripped code or links to the removed solution.
-  CHECK(std::system(("grep -rqE 'snippet code/stats.cpp gridCounts|ref sol_2_3_2_1' '" + dir +
-                     "/book'").c_str()) != 0);
+  CHECK(ch::runProgram({"grep", "-rqE", "snippet code/stats.cpp gridCounts|ref sol_2_3_2_1", dir + "/book"}) == 1);
   CHECK(contains(dttest::readText(dir + "/book/sec2_3_2.md"), "<!-- EXERCISE 2.3.2-1 -->"));
 
   // No exercise named: the workspace's own (.exercise).
@@ -102,7 +103,7 @@ TEST_CASE("exercises release check hint and watch end to end in a temporary dire
   INFO(pass.out);
   CHECK(pass.status == 0);
   CHECK(contains(pass.out, "PASS 2.3.2-1"));
-  std::system(("rm -rf '" + dir + "'").c_str());
+  std::filesystem::remove_all(dir);
 }
 
 TEST_CASE("exercises a handout is self-contained and stops on a missing figure") {

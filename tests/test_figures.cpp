@@ -21,6 +21,8 @@
 #include <string>
 #include <vector>
 
+#include "../chapters/process.h"
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -260,16 +262,18 @@ const Run& figureRun() {
                               "sec2_3_5_hilbert", "sec2_3_6_flips", "opt_ladder",
                               "bench_parallel"};
     // All at once (they are independent and each writes its own files): on two cores the run
-    // takes about half its CPU time. Each program's exit status goes to <prog>.rc.
+    // takes about half its CPU time. Each program's exit status goes to <prog>.rc. The paths
+    // reach bash through the environment, never as code.
     std::string script;
     for (const std::string prog : programs) {
       const std::string extra = prog == "sec2_3_4_algorithms" ? " --no-profile" : "";
-      const fs::path stem = r.dir / prog;
-      script += "( '" + (bin / prog).string() + "' --quick --max-n 2000" + extra + " --out '" + r.dir.string() +
-                "' > '" + stem.string() + ".log' 2>&1; echo \\$? > '" + stem.string() + ".rc' ) & ";
+      script += "( \"$DT_BIN/" + prog + "\" --quick --max-n 2000" + extra + " --out \"$DT_DIR\" > \"$DT_DIR/" +
+                prog + ".log\" 2>&1; echo $? > \"$DT_DIR/" + prog + ".rc\" ) & ";
     }
     script += "wait";
-    std::system(("bash -c \"" + script + "\"").c_str());
+    ch::ProcessIo io;
+    io.env = {{"DT_BIN", bin.string()}, {"DT_DIR", r.dir.string()}};
+    ch::runProgram({"bash", "-c", script}, io);
     for (const std::string prog : programs) {
       const fs::path stem = r.dir / prog;
       if (readAll(stem.string() + ".rc") != "0\n") r.failures.push_back(prog + " (log: " + stem.string() + ".log)");

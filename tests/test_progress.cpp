@@ -56,11 +56,15 @@ TEST_CASE("progress is reported with --progress on any stderr and never with --n
 
 TEST_CASE("progress on a terminal is rewritten in place") {
   // script(1) runs the command on a pseudo-terminal and copies what it writes.
-  REQUIRE_MESSAGE(std::system("command -v script > /dev/null") == 0, "script (util-linux) is needed");
+  // script -c takes a shell command: the paths reach it through the environment, never as code.
   const std::string log = dttest::tmpPath("progress_tty.log");
-  const std::string cmd = std::string(DT_CLI) + " '" + slowInput() + "' -o '" +
-                          dttest::tmpPath("progress_tty") + "'" + kSlow;
-  const int rc = std::system(("script -qec \"" + cmd + "\" /dev/null > '" + log + "' 2>&1").c_str());
+  ch::ProcessIo io;
+  io.stdoutPath = log;
+  io.stderrPath = "&1";
+  io.env = {{"DT_CLI_BIN", DT_CLI}, {"DT_IN", slowInput()}, {"DT_OUT", dttest::tmpPath("progress_tty")}};
+  const int rc = ch::runProgram(
+      {"script", "-qec", std::string("\"$DT_CLI_BIN\" \"$DT_IN\" -o \"$DT_OUT\"") + kSlow, "/dev/null"}, io);
+  REQUIRE_MESSAGE(rc != 127, "script (util-linux) is needed");
   REQUIRE(rc == 0);
   const std::string t = dttest::readText(log);
   CHECK(t.find("\rdelaunay2d: ") != std::string::npos);

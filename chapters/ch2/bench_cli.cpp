@@ -111,16 +111,10 @@ int main(int argc, char** argv) {
 #else
   const bool haveCgal = false;
 #endif
-  return ch::runMain(argc, argv, "bench_cli", [&](const ch::Options& o) {
-    int reps = o.quick ? 1 : 5;
-    for (std::size_t i = 0; i < o.rest.size(); ++i) {
-      if (o.rest[i] == "--reps" && i + 1 < o.rest.size()) {
-        reps = std::max(1, std::atoi(o.rest[++i].c_str()));
-      } else {
-        std::cerr << "bench_cli: unknown option " << o.rest[i] << "\n";
-        return 2;
-      }
-    }
+  const ch::Program p{"bench_cli", "delaunay2d end to end against a CGAL program (no figure).", 1000,
+                      10000000, {}, {{"--reps", "N", "alternating runs of each program (default 5, 1 with --quick)", 1, 1000}}};
+  return ch::runMain(argc, argv, p, [&](const ch::Options& o) {
+    const int reps = int(o.number("--reps", o.quick ? 1 : 5));
     const std::size_t n = o.maxN > 0 ? std::size_t(o.maxN) : (o.quick ? 100000 : 1000000);
     const std::string cli = selfDir() + "/delaunay2d";
     const std::string input = o.out + "/bench_cli_points.node", out = o.out + "/bench_cli_out";

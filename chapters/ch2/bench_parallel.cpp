@@ -167,32 +167,29 @@ std::vector<int> parseList(const std::string& s) {
   std::stringstream in(s);
   std::string item;
   while (std::getline(in, item, ',')) {
-    const int t = std::atoi(item.c_str());
-    if (t < 1 || t > 64) throw std::invalid_argument("--threads: '" + item + "' is not in 1..64");
-    v.push_back(t);
+    const std::optional<long> t = ch::parseWhole(item);
+    if (!t || *t < 1 || *t > 64) throw ch::UsageError("--threads: '" + item + "' is not a whole number from 1 to 64");
+    v.push_back(int(*t));
   }
+  if (v.empty()) throw ch::UsageError("--threads needs a list such as 1,2,4");
   return v;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  return ch::runMain(argc, argv, "bench_parallel", [&](const ch::Options& o) -> int {
-    int reps = o.quick ? 1 : 3;
+  const ch::Program p{"bench_parallel",
+                      "The parallel kernel against threads, and time per point (--max-n 100000000: up to 10^8).",
+                      1000, 100000000, {"fig_time_per_point"},
+                      {{"--reps", "N", "alternating runs, the best kept (default 3, 1 with --quick)", 1, 1000},
+                       {"--threads", "LIST", "thread counts to measure, e.g. 1,2,4 (each 1 to 64)"}}};
+  return ch::runMain(argc, argv, p, [&](const ch::Options& o) -> int {
+    const int reps = int(o.number("--reps", o.quick ? 1 : 3));
     const int hw = dt::defaultThreadCount();
     std::vector<int> threadList = {1, 2};
     if (hw > 2) threadList.push_back(hw);
     threadList.push_back(2 * std::max(2, hw));  // more threads than cores: how it degrades
-    for (std::size_t i = 0; i < o.rest.size(); ++i) {
-      if (o.rest[i] == "--reps" && i + 1 < o.rest.size()) {
-        reps = std::max(1, std::atoi(o.rest[++i].c_str()));
-      } else if (o.rest[i] == "--threads" && i + 1 < o.rest.size()) {
-        threadList = parseList(o.rest[++i]);
-      } else {
-        std::cerr << "bench_parallel: unknown option " << o.rest[i] << "\n";
-        return 2;
-      }
-    }
+    if (o.has("--threads")) threadList = parseList(o.extra.at("--threads"));
     const std::size_t maxN = o.maxN > 0 ? std::size_t(o.maxN) : (o.quick ? 100000 : 1000000);
 #ifdef DT_HAVE_CGAL
     const bool haveCgal = true;

@@ -72,18 +72,13 @@ Run runStep(const Step& s, const std::vector<double>& xy) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  ch::Options o = ch::parseOptions(argc, argv);
-  int reps = o.quick ? 1 : 2;
-  for (std::size_t i = 0; i < o.rest.size(); ++i) {
-    if (o.rest[i] == "--reps" && i + 1 < o.rest.size()) {
-      reps = std::max(1, std::atoi(o.rest[++i].c_str()));
-    } else {
-      std::cerr << "opt_ladder: unknown option " << o.rest[i] << "\n";
-      return 2;
-    }
-  }
+  const ch::Program p{"opt_ladder", "The optimisation ladder of the fast kernel, one change per step.",
+                      1000, 10000000, {"fig_ladder_time"},
+                      {{"--reps", "N", "runs per step, the best kept (default 2, 1 with --quick)", 1, 1000}}};
+  const ch::Options o = ch::parseOptions(argc, argv, p);
+  const int reps = int(o.number("--reps", o.quick ? 1 : 2));
   const std::size_t n = o.maxN > 0 ? std::size_t(o.maxN) : (o.quick ? 100000 : 1000000);
-  std::mt19937_64 rng(2026);
+  std::mt19937_64 rng(o.seed(2026));
   std::uniform_real_distribution<double> u(0, 1);
   std::vector<double> xy(2 * n);
   for (double& v : xy) v = u(rng);

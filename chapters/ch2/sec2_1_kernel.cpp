@@ -519,9 +519,11 @@ void kernelChecks(const ch::Options& o) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  return ch::runMain(argc, argv, "sec2_1_kernel", [](const ch::Options& o) {
-    figure22(o);
-    figures21to24(o);
-    kernelChecks(o);
+  const ch::Program p{"sec2_1_kernel", "Section 2.1: Figures 2.1-2.4 and the kernel checks.", 100,
+                      10000000, {"fig2_1", "fig2_2", "fig2_3", "fig2_4"}, {}};
+  return ch::runMain(argc, argv, p, [](const ch::Options& o) {
+    if (o.wants("fig2_2")) figure22(o);
+    if (o.wants("fig2_1") || o.wants("fig2_3") || o.wants("fig2_4")) figures21to24(o);
+    if (o.everything()) kernelChecks(o);
   });
 }

@@ -191,10 +191,12 @@ void table(const ch::Options& o, ch::Values& v) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  return ch::runMain(argc, argv, "sec2_2_2_outside_hull", [](const ch::Options& o) {
+  const ch::Program p{"sec2_2_2_outside_hull", "Section 2.2.2: inserting a point outside the hull.",
+                      100, 10000000, {"fig_outside_hull"}, {}};
+  return ch::runMain(argc, argv, p, [](const ch::Options& o) {
     ch::Values v(o, "sec2_2_2_outside_hull");
     figure(o);
-    table(o, v);
+    if (o.everything()) table(o, v);
     v.write();
   });
 }

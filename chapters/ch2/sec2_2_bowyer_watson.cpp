@@ -206,7 +206,7 @@ void figure26(const ch::Options& o) {
   bool chosenLike = false;
   for (int seed = 1; seed <= 500; ++seed) {
     ++tried;
-    const XY q = dt::uniformPoints(10, 2600 + seed);
+    const XY q = dt::uniformPoints(10, o.seed(2600 + seed));
     dt::BowyerWatsonResult r = dt::bowyerWatson(q, factor);
     const auto m = dt::hullEdgesNotCovered(r.xy, r.ids, r.tri);
     if (m.empty()) continue;
@@ -302,7 +302,7 @@ void figure26(const ch::Options& o) {
   for (double f : {1.5, 3.0, 10.0, 100.0, 1000.0}) {
     int lost = 0;
     for (int seed = 1; seed <= 500; ++seed) {
-      const dt::BowyerWatsonResult r = dt::bowyerWatson(dt::uniformPoints(10, 2600 + seed), f);
+      const dt::BowyerWatsonResult r = dt::bowyerWatson(dt::uniformPoints(10, o.seed(2600 + seed)), f);
       lost += !dt::hullEdgesNotCovered(r.xy, r.ids, r.tri).empty();
     }
     tab.add({ch::fmt("%g", f), "500", std::to_string(lost), ch::fmt("%.1f%%", 100.0 * lost / 500)});
@@ -362,9 +362,12 @@ void algorithm1Table(const ch::Options& o) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  return ch::runMain(argc, argv, "sec2_2_bowyer_watson", [](const ch::Options& o) {
-    figure25(o);
-    figure26(o);
-    algorithm1Table(o);
+  const ch::Program p{"sec2_2_bowyer_watson",
+                      "Section 2.2: Bowyer-Watson, super-triangles, Algorithm 1 (Figures 2.5, 2.6).",
+                      1000, 1000000, {"fig2_5", "fig2_5_anim", "fig2_6"}, {}};
+  return ch::runMain(argc, argv, p, [](const ch::Options& o) {
+    if (o.wants("fig2_5") || o.wants("fig2_5_anim")) figure25(o);
+    if (o.wants("fig2_6")) figure26(o);
+    if (o.everything()) algorithm1Table(o);
   });
 }

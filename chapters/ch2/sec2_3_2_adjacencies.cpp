@@ -72,7 +72,7 @@ void countsTable(const ch::Options& o) {
   const long maxN = o.maxN > 0 ? o.maxN : (o.quick ? 10000 : 100000);
   std::vector<Input> inputs;
   for (long n : {100L, 10000L, 100000L})
-    if (n <= maxN) inputs.push_back({"uniform random", dt::uniformPoints(std::size_t(n), 232u + unsigned(n))});
+    if (n <= maxN) inputs.push_back({"uniform random", dt::uniformPoints(std::size_t(n), o.seed(232u + unsigned(n)))});
   for (long k : {10L, 100L, 300L})
     if (k * k <= maxN) {
       std::vector<double> g = dt::gridPoints(int(k), int(k));
@@ -133,8 +133,10 @@ void countsTable(const ch::Options& o) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  return ch::runMain(argc, argv, "sec2_3_2_adjacencies", [](const ch::Options& o) {
+  const ch::Program p{"sec2_3_2_adjacencies", "Section 2.3.2: adjacencies and Euler counts (Figure 2.9).",
+                      100, 10000000, {"fig2_9"}, {}};
+  return ch::runMain(argc, argv, p, [](const ch::Options& o) {
     figure29(o);
-    countsTable(o);
+    if (o.everything()) countsTable(o);
   });
 }

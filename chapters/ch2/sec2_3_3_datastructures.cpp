@@ -94,7 +94,7 @@ void footprint(const ch::Options& o) {
   // previous ball is short and the run takes seconds); memory does not depend on the order.
   // Drawn straight into pairs (not through dt::uniformPoints): a second copy of the input would
   // count in the peak memory measured below.
-  std::mt19937_64 rng(333);
+  std::mt19937_64 rng(o.seed(333));
   std::uniform_real_distribution<double> u(0, 1);
   std::vector<std::array<double, 2>> pts(static_cast<std::size_t>(n));
   for (auto& p : pts) {
@@ -155,7 +155,10 @@ void footprint(const ch::Options& o) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  return ch::runMain(argc, argv, "sec2_3_3_datastructures", [](const ch::Options& o) {
+  const ch::Program p{"sec2_3_3_datastructures",
+                      "Section 2.3.3: pointer counts and the memory footprint (no figure).", 1000,
+                      10000000, {}, {}};
+  return ch::runMain(argc, argv, p, [](const ch::Options& o) {
     pointerTable(o);
     footprint(o);
   });

@@ -352,13 +352,18 @@ bool perfProfile(const ch::Options& o, long n, double& orientShare) {
   char self[4096] = {0};
   if (readlink("/proc/self/exe", self, sizeof self - 1) <= 0) return false;
   const std::string data = o.out + "/perf_2_3_4.data", rep = o.out + "/perf_2_3_4.txt";
-  const std::string rec = "perf record -q -F 2000 -o '" + data + "' -- '" + self +
-                          "' --profile-child " + std::to_string(n) + " > /dev/null 2>&1";
-  if (std::system(rec.c_str()) != 0) return false;
-  const std::string report = "perf report -i '" + data +
-                             "' --no-children --sort symbol --stdio -q > '" + rep +
-                             "' 2>/dev/null";
-  if (std::system(report.c_str()) != 0) return false;
+  ch::ProcessIo quiet;
+  quiet.stdoutPath = "/dev/null";
+  quiet.stderrPath = "/dev/null";
+  if (ch::runProgram({"perf", "record", "-q", "-F", "2000", "-o", data, "--", self, "--profile-child",
+                      std::to_string(n)},
+                     quiet) != 0)
+    return false;
+  ch::ProcessIo toFile = quiet;
+  toFile.stdoutPath = rep;
+  if (ch::runProgram({"perf", "report", "-i", data, "--no-children", "--sort", "symbol", "--stdio", "-q"},
+                     toFile) != 0)
+    return false;
   std::ifstream in(rep);
   std::map<std::string, double> group;
   std::string line;
@@ -589,22 +594,20 @@ int main(int argc, char** argv) {
     table21Run(std::atol(argv[2]), false);
     return 0;
   }
-  return ch::runMain(argc, argv, "sec2_3_4_algorithms", [](const ch::Options& o) {
-    bool profile = true;
-    for (const std::string& a : o.rest) {
-      if (a == "--no-profile") {
-        profile = false;
-      } else {
-        // scripts/main.sh passes its options to every chapter program: ignore other programs' ones
-        std::cerr << "sec2_3_4_algorithms: ignoring option " << a << "\n";
-      }
-    }
+  const ch::Program p{"sec2_3_4_algorithms",
+                      "Section 2.3.4: Figure 2.10, Table 2.1, the search variants, the parabola.",
+                      1000, 10000000, {"fig2_10", "fig_table2_1_search", "fig_parabola_cavity"},
+                      {{"--no-profile", "", "skip the perf profile of one Table 2.1 run"}}};
+  return ch::runMain(argc, argv, p, [](const ch::Options& o) {
+    const bool profile = !o.has("--no-profile");
     ch::Values v(o, "sec2_3_4_algorithms");
-    figure210(o);
-    table21(o, v);
-    nsearchVariants(o, v);
-    predicateShare(o, profile, v);
-    parabola(o);
+    if (o.wants("fig2_10")) figure210(o);
+    if (o.wants("fig_table2_1_search")) table21(o, v);
+    if (o.everything()) {
+      nsearchVariants(o, v);
+      predicateShare(o, profile, v);
+    }
+    if (o.wants("fig_parabola_cavity")) parabola(o);
     v.write();
   });
 }

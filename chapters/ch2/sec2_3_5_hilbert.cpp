@@ -136,7 +136,7 @@ void figure211(const ch::Options& o) {
 
 void figure212(const ch::Options& o, ch::Values& v) {
   for (std::size_t n : {std::size_t(1000), std::size_t(10000)}) {
-    const XY p = dt::uniformPoints(n, 2012 + n);
+    const XY p = dt::uniformPoints(n, o.seed(2012 + n));
     const std::vector<std::size_t> idx = dt::hilbertOrder(p);
     // Tour lengths, sorted and in input order, for the page's sentence on Figure 2.12.
     double sorted = 0, input = 0;
@@ -504,18 +504,13 @@ void outlierComparison(const ch::Options& o, const std::vector<std::size_t>& siz
 }  // namespace
 
 int main(int argc, char** argv) {
-  return ch::runMain(argc, argv, "sec2_3_5_hilbert", [&](const ch::Options& o) {
-    bool huge = false;
-    for (const std::string& a : o.rest) {
-      if (a == "--huge") {
-        huge = true;
-      } else {
-        std::cerr << argv[0] << ": unknown option " << a
-                  << "\nusage: " << argv[0]
-                  << " [--out DIR] [--quick] [--max-n N] [--huge] [--no-plot]\n";
-        return 2;
-      }
-    }
+  const ch::Program p{"sec2_3_5_hilbert",
+                      "Section 2.3.5: Hilbert curves, BRIO, Table 2.2 (Figures 2.11, 2.12).", 1000,
+                      10000000,
+                      {"fig2_11", "fig2_12", "fig_brio_rounds", "fig_brio_compare", "fig_outlier_walk"},
+                      {{"--huge", "", "Table 2.2 up to 10^7 points (the default --max-n becomes 10^7)"}}};
+  return ch::runMain(argc, argv, p, [&](const ch::Options& o) {
+    const bool huge = o.has("--huge");
     const std::size_t maxN = o.maxN > 0 ? std::size_t(o.maxN)
                                         : (o.quick ? 10000 : (huge ? 10000000 : 1000000));
     auto upTo = [&](std::vector<std::size_t> v) {
@@ -524,16 +519,20 @@ int main(int argc, char** argv) {
       return v;
     };
     ch::Values values(o, "sec2_3_5_hilbert");
-    figure211(o);
-    figure212(o, values);
-    // Every triangulation is checked exactly, outside the timings (about 2 s at 10^6).
-    table22(o, upTo({1000, 10000, 100000, 1000000, 10000000}), 10000000, values);
-    depthTable(o, std::min<std::size_t>(maxN, o.quick ? 10000 : 100000));
-    keysVersusSort(o, std::min<std::size_t>(maxN, o.quick ? 100000 : 1000000), values);
-    brioFigure(o);
-    brioComparison(o, upTo({1000, 10000, 100000, 1000000}), o.quick ? 10000 : 30000, 1000000, values);
-    outlierComparison(o, upTo({1000, 3000, 10000, 30000, 100000, 300000, 1000000}),
-                      o.quick ? 10000 : 100000, o.quick ? 10000 : 100000);
+    if (o.wants("fig2_11")) figure211(o);
+    if (o.wants("fig2_12")) figure212(o, values);
+    if (o.everything()) {
+      // Every triangulation is checked exactly, outside the timings (about 2 s at 10^6).
+      table22(o, upTo({1000, 10000, 100000, 1000000, 10000000}), 10000000, values);
+      depthTable(o, std::min<std::size_t>(maxN, o.quick ? 10000 : 100000));
+      keysVersusSort(o, std::min<std::size_t>(maxN, o.quick ? 100000 : 1000000), values);
+    }
+    if (o.wants("fig_brio_rounds")) brioFigure(o);
+    if (o.wants("fig_brio_compare"))
+      brioComparison(o, upTo({1000, 10000, 100000, 1000000}), o.quick ? 10000 : 30000, 1000000, values);
+    if (o.wants("fig_outlier_walk"))
+      outlierComparison(o, upTo({1000, 3000, 10000, 30000, 100000, 300000, 1000000}),
+                        o.quick ? 10000 : 100000, o.quick ? 10000 : 100000);
     values.write();
     return 0;
   });

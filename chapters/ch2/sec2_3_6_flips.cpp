@@ -162,7 +162,7 @@ void figureFlip(const ch::Options& o) {
 void tableDegrees(const ch::Options& o) {
   dt::Triangulation T;
   // Points and flipped edges come from one stream (so not from dt::uniformPoints).
-  std::mt19937_64 rng(233);
+  std::mt19937_64 rng(o.seed(233));
   std::uniform_real_distribution<double> u(0, 1);
   XY p;
   for (int i = 0; i < 2000; ++i) p.push_back(u(rng)), p.push_back(u(rng));
@@ -515,10 +515,13 @@ void tableSizes(const ch::Options& o, ch::Values& v) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  return ch::runMain(argc, argv, "sec2_3_6_flips", [](const ch::Options& o) {
-    figureFlip(o);
-    tableDegrees(o);
-    figureRecovery(o);
+  const ch::Program p{"sec2_3_6_flips", "Section 2.3.6: edge flips, DT(S) from DT(S0 u S).", 1000,
+                      10000000, {"fig_flip", "fig_recovery_frames"}, {}};
+  return ch::runMain(argc, argv, p, [](const ch::Options& o) {
+    if (o.wants("fig_flip")) figureFlip(o);
+    if (o.everything()) tableDegrees(o);
+    if (o.wants("fig_recovery_frames")) figureRecovery(o);
+    if (!o.everything()) return;
     ch::Values v(o, "sec2_3_6_flips");
     tableSizes(o, v);
     tableMethods(o, v);

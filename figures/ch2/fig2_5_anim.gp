@@ -30,7 +30,7 @@ do for [pass=0:1] {
     eval fig_open("png", "fig2_5_anim")
     set output outdir.sprintf("/fig2_5_anim_%02d.png", f)
   }
-  set title system(sprintf("sed -n '%dp' '%s/fig2_5_anim_titles.dat'", f + 1, datadir))
+  set title system(sprintf('sed -n %dp -- "${DT_DATADIR:-.}/fig2_5_anim_titles.dat"', f + 1))
   stem = datadir.sprintf("/fig2_5_anim_%02d", f)
   # Cavity frames are odd, ball frames even (frame 0: DT_0). Each colour is its own plot
   # element, filtered by the frame's parity: gnuplot's gif terminal keeps the first colour an

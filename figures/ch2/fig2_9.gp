@@ -3,7 +3,7 @@
 # Data: fig2_9_tri.dat (edges, each once), fig2_9_vertices.dat (x y n_vf n_ve on_hull),
 # fig2_9_title.txt (the mean and eq. (2.2)).
 load system("dirname '".ARG0."'")."/style.gp"
-title = system("cat '".datadir."/fig2_9_title.txt'")
+title = system('cat -- "${DT_DATADIR:-.}/fig2_9_title.txt"')
 set offsets 0.15, 0.15, 0.15, 0.15
 set key outside bottom center horizontal samplen 1 width 2
 do for [term in "png svg"] {

@@ -2,9 +2,9 @@
 # rounds, joined in its own Hilbert order, over the points of the earlier rounds (grey).
 # Data (sec2_3_5_hilbert): fig_brio_rounds.dat, one gnuplot block (index) per round.
 load system("dirname '".ARG0."'")."/style.gp"
-info = system("cat '".datadir."/fig_brio_rounds.info'")
+info = system('cat -- "${DT_DATADIR:-.}/fig_brio_rounds.info"')
 R = int(word(substr(info, strstrt(info, "=") + 1, strlen(info)), 1))
-sizes = system("sed -n 2p '".datadir."/fig_brio_rounds.info'")
+sizes = system('sed -n 2p -- "${DT_DATADIR:-.}/fig_brio_rounds.info"')
 set border
 set tics out nomirror
 set xrange [0:1]

@@ -4,7 +4,7 @@
 load system("dirname '".ARG0."'")."/style.gp"
 small = datadir.'/time_per_point.dat'
 large = datadir.'/time_per_point_large.dat'
-haveLarge = strlen(system("ls '".large."' 2>/dev/null")) > 0
+haveLarge = strlen(system('ls -- "${DT_DATADIR:-.}/time_per_point_large.dat" 2>/dev/null')) > 0
 set size noratio
 set border 3
 set tics out nomirror

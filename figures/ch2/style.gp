@@ -9,6 +9,10 @@
 
 if (!exists("datadir")) datadir = "."
 if (!exists("outdir")) outdir = "."
+# A path never goes into a command line: a script that hands a data file to a command names it
+# through the environment, system('cat -- "${DT_DATADIR:-.}/x.txt"'), which the shell expands
+# without reading it as code (chapters/common.h's runGnuplot sets DT_DATADIR to datadir; set
+# it too when you run a script by hand with another datadir).
 set encoding utf8
 
 # ---- sizes (name width height) -----------------------------------------------------------
@@ -41,8 +45,9 @@ FIGSIZES = " fig2_1 1400 780" . \
 
 fig_known(n) = strstrt(FIGSIZES, " ".n." ") > 0
 fig_word(n, k) = int(word(FIGSIZES, words(substr(FIGSIZES, 1, strstrt(FIGSIZES, " ".n." "))) + k))
-figw(n) = fig_word(n, 2)
-figh(n) = fig_word(n, 3)
+# A chapter program's --size WxH sets fig_size_w, fig_size_h: they win over the table.
+figw(n) = exists("fig_size_w") ? int(fig_size_w) : fig_word(n, 2)
+figh(n) = exists("fig_size_h") ? int(fig_size_h) : fig_word(n, 3)
 # The font size in the terminal's own unit for a figure of width w (see the header).
 fig_font(t, w) = (t eq "svg" ? w / 50.0 : w / 66.6)
 

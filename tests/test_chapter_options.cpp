@@ -1,0 +1,227 @@
+/// \file test_chapter_options.cpp The options of the chapter programs (chapters/common.h): a hostile --out directory is a directory and never code, every bad option is one line and exit status 2 before anything is written, and --max-n, --only, --size, --seed do what --help says.
+#include <doctest/doctest.h>
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "../chapters/process.h"
+#include "support.h"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Run {
+  int status = -1;
+  std::string out, err;
+};
+
+// Runs build/<program> with `args` (no shell), in `cwd`, stdout and stderr to files.
+Run chapter(const std::string& program, const std::vector<std::string>& args, const fs::path& cwd) {
+  static int counter = 0;
+  const std::string tag = std::to_string(::getpid()) + "_" + std::to_string(counter++);
+  const std::string o = dttest::tmpPath("chapter_out_" + tag), e = dttest::tmpPath("chapter_err_" + tag);
+  std::vector<std::string> argv = {(fs::path(DT_CLI).parent_path() / program).string()};
+  argv.insert(argv.end(), args.begin(), args.end());
+  ch::ProcessIo io;
+  io.cwd = cwd.string();
+  io.stdoutPath = o;
+  io.stderrPath = e;
+  Run r;
+  r.status = ch::runProgram(argv, io);
+  r.out = dttest::readText(o);
+  r.err = dttest::readText(e);
+  fs::remove(o);
+  fs::remove(e);
+  return r;
+}
+
+// A fresh empty directory under the test tree.
+fs::path freshDir(const std::string& name) {
+  const fs::path d = fs::path(dttest::tmpPath(name + "_" + std::to_string(::getpid())));
+  fs::remove_all(d);
+  fs::create_directories(d);
+  return d;
+}
+
+// Width and height of a PNG, from its IHDR chunk (0 0 if it is not one).
+std::pair<unsigned, unsigned> pngSize(const fs::path& p) {
+  const std::string s = dttest::readText(p.string());
+  if (s.size() < 24 || s.compare(1, 3, "PNG") != 0) return {0, 0};
+  auto be = [&](std::size_t at) {
+    unsigned v = 0;
+    for (std::size_t k = 0; k < 4; ++k) v = (v << 8) | unsigned(static_cast<unsigned char>(s[at + k]));
+    return v;
+  };
+  return {be(16), be(20)};
+}
+
+std::vector<std::string> listing(const fs::path& d) {
+  std::vector<std::string> names;
+  for (const auto& e : fs::directory_iterator(d)) names.push_back(e.path().filename().string());
+  return names;
+}
+
+}  // namespace
+
+TEST_CASE("chapter options a hostile --out directory gets the figures and runs nothing") {
+  // The names a shell would run: $(...), a quote closing a quoted string then ;, and a name
+  // that starts with '-' (an option to mkdir or cat), with a space and an accented letter.
+  const fs::path base = freshDir("hostile");
+  const std::string name = "q'uo\"te $(touch pwned_dollar); touch pwned_semicolon; é '";
+  const fs::path abs = base / name;
+  const Run a = chapter("sec2_3_2_adjacencies", {"--quick", "--out", abs.string()}, base);
+  INFO(a.err);
+  REQUIRE(a.status == 0);
+  // fig2_9.gp also reads a file of the output directory through a command (its title).
+  CHECK(fs::file_size(abs / "fig2_9.png") > 1000);
+  CHECK(fs::file_size(abs / "fig2_9.svg") > 1000);
+  CHECK(dttest::readText((abs / "fig2_9.svg").string()).find("n = 12") != std::string::npos);
+  CHECK(fs::exists(abs / "table_adjacency_counts.md"));
+  // A relative --out that starts with '-'.
+  const Run b = chapter("sec2_3_2_adjacencies", {"--quick", "--no-plot", "--out", "-dash é"}, base);
+  INFO(b.err);
+  REQUIRE(b.status == 0);
+  CHECK(fs::exists(base / "-dash é" / "fig2_9_tri.dat"));
+  // Nothing else appeared: not in the working directory, nor where gnuplot runs.
+  std::vector<std::string> names = listing(base);
+  std::sort(names.begin(), names.end());
+  CHECK(names == std::vector<std::string>{"-dash é", name});
+  for (const fs::path& d : {base, fs::path(DT_SOURCE_DIR) / "figures/ch2", fs::path(DT_SOURCE_DIR),
+                            fs::current_path()})
+    for (const char* stray : {"pwned_dollar", "pwned_semicolon"}) {
+      INFO((d / stray).string());
+      CHECK_FALSE(fs::exists(d / stray));
+    }
+  fs::remove_all(base);
+}
+
+TEST_CASE("chapter options every bad option is one line and exit status 2 before anything is written") {
+  const fs::path base = freshDir("bad_options");
+  const std::vector<std::vector<std::string>> bad = {
+      {"--bogus"},
+      {"--out"},                                // no value
+      {"extra"},                                // a positional argument
+      {"--quick", "--quick"},                   // twice
+      {"--max-n", "1"},                         // below what the program can do
+      {"--max-n", "2e9"},                       // above it
+      {"--max-n", "1.5"},
+      {"--max-n", "1e3x"},
+      {"--max-n", "99999999999999999999"},
+      {"--max-n", "-5"},
+      {"--max-n", ""},
+      {"--seed", "-1"},
+      {"--seed", "12abc"},
+      {"--only", "fig2_1"},                     // another program's figure
+      {"--size", "800"},
+      {"--size", "10x10"},
+      {"--size", "800x450x2"},
+      {"--huge"},                               // another program's option
+      {"--out", ""}};
+  for (const char* program : {"sec2_1_kernel", "sec2_3_2_adjacencies", "bench_parallel"})
+    for (std::vector<std::string> args : bad) {
+      if (std::string(program) == "sec2_1_kernel" && args[0] == "--only") args[1] = "fig2_9";
+      const fs::path out = base / "never";
+      std::vector<std::string> full = {"--out", out.string()};
+      if (args[0] == "--out") full.clear();  // the case is about --out itself
+      full.insert(full.end(), args.begin(), args.end());
+      const Run r = chapter(program, full, base);
+      std::string shown = program;
+      for (const auto& a : args) shown += " [" + a + "]";
+      INFO(shown << "\nstderr: " << r.err);
+      CHECK(r.status == 2);
+      CHECK(r.out.empty());
+      CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+      CHECK(r.err.rfind(std::string(program) + ": ", 0) == 0);
+      CHECK(r.err.find("usage: " + std::string(program) + " [--out DIR]") != std::string::npos);
+      CHECK_FALSE(fs::exists(out));
+    }
+  // A program's own options are checked the same way (--reps with a value out of range, a
+  // --threads list the program reads itself).
+  for (const std::vector<std::string>& args : {std::vector<std::string>{"--reps", "0"},
+                                               std::vector<std::string>{"--reps"},
+                                               std::vector<std::string>{"--threads", "1,x"}}) {
+    std::vector<std::string> full = {"--out", (base / "reps").string()};
+    full.insert(full.end(), args.begin(), args.end());
+    const Run r = chapter("bench_parallel", full, base);
+    INFO(args[0] << " " << r.err);
+    CHECK(r.status == 2);
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+  }
+  fs::remove_all(base);
+}
+
+TEST_CASE("chapter options --help lists every option the same way on every program") {
+  for (const char* program : {"sec2_1_kernel", "sec2_3_4_algorithms", "bench_kernels", "opt_ladder"}) {
+    const Run r = chapter(program, {"--help"}, fs::current_path());
+    INFO(program << "\n" << r.out << r.err);
+    CHECK(r.status == 0);
+    CHECK(r.out.rfind(std::string("usage: ") + program + " [--out DIR] [--quick] [--max-n N] [--no-plot] "
+                      "[--seed N] [--only FIG] [--size WxH]", 0) == 0);
+    for (const char* opt : {"\n  --out DIR ", "\n  --quick ", "\n  --max-n N ", "\n  --no-plot ",
+                            "\n  --seed N ", "\n  --only FIG ", "\n  --size WxH ", "\n  --help "})
+      CHECK(r.out.find(opt) != std::string::npos);
+  }
+}
+
+TEST_CASE("chapter options --max-n reads 1e3 as 1000") {
+  // atol read "1e3" as 1 and the table showed a 1x1 grid.
+  const fs::path d = freshDir("max_n_1e3");
+  const Run r = chapter("sec2_3_2_adjacencies", {"--quick", "--no-plot", "--max-n", "1e3", "--out", d.string()},
+                        d);
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  const std::string table = dttest::readText((d / "table_adjacency_counts.csv").string());
+  CHECK(table.find("1000") != std::string::npos);
+  CHECK(table.find("1x1") == std::string::npos);
+  fs::remove_all(d);
+}
+
+TEST_CASE("chapter options --only draws one figure at the --size given and leaves the tables alone") {
+  const fs::path d = freshDir("only_size");
+  const Run r = chapter("sec2_3_5_hilbert", {"--quick", "--only", "fig2_12", "--size", "640x360", "--out",
+                                             d.string()},
+                        d);
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  CHECK(pngSize(d / "fig2_12.png") == std::make_pair(640u, 360u));
+  CHECK(dttest::readText((d / "fig2_12.svg").string()).find("width=\"640\"") != std::string::npos);
+  for (const char* absent : {"fig2_11.png", "fig_brio_rounds.png", "table2_2.md", "values_sec2_3_5_hilbert.txt"}) {
+    INFO(absent);
+    CHECK_FALSE(fs::exists(d / absent));
+  }
+  // Without --size: the style's size (fig2_12 1400x780 in style.gp's table).
+  const Run s = chapter("sec2_3_5_hilbert", {"--quick", "--only", "fig2_12", "--out", d.string()}, d);
+  REQUIRE(s.status == 0);
+  CHECK(pngSize(d / "fig2_12.png") == std::make_pair(1400u, 780u));
+  fs::remove_all(d);
+}
+
+TEST_CASE("chapter options --seed changes the random points and no --seed keeps the book's") {
+  const fs::path d = freshDir("seed");
+  auto points = [&](const std::vector<std::string>& extra) {
+    std::vector<std::string> args = {"--quick", "--no-plot", "--only", "fig2_12", "--out", d.string()};
+    args.insert(args.end(), extra.begin(), extra.end());
+    const Run r = chapter("sec2_3_5_hilbert", args, d);
+    REQUIRE(r.status == 0);
+    return dttest::readText((d / "fig2_12_1000.dat").string());
+  };
+  const std::string book = points({}), again = points({}), one = points({"--seed", "1"}),
+                    oneAgain = points({"--seed", "1"}), two = points({"--seed", "2"});
+  CHECK(book.size() > 1000);
+  CHECK(book == again);
+  CHECK(one == oneAgain);
+  CHECK(one != book);
+  CHECK(two != one);
+  // The book's points are the program's fixed seed: the same as the generator's.
+  const dt::XY p = dt::uniformPoints(1000, 2012 + 1000);
+  std::ostringstream first;
+  first << p[0];
+  CHECK(book.find("\n" + first.str() + " ") != std::string::npos);
+  fs::remove_all(d);
+}
