@@ -90,7 +90,8 @@ void figure25(const ch::Options& o) {
   std::vector<std::vector<ch::Seg>> shown = {ch::triangleSegs(xy, tri)};  // the edges of each panel
   // Animation frames: 00 is DT_0; then for each point, the cavity (odd) and the ball (even).
   int frame = 0;
-  std::string titles;
+  std::string titles;  // one line per frame: the PNG's title, a tab, the GIF's
+  std::vector<std::vector<ch::Seg>> allFrames;  // the edges of each frame
   auto writeFrame = [&](const std::vector<dt::Tri>& mesh, const std::vector<dt::Tri>& fill, int ip,
                         const std::string& title) {
     const std::string stem = ch::fmt("fig2_5_anim_%02d", frame);
@@ -108,9 +109,10 @@ void figure25(const ch::Options& o) {
     dt::writeFileAtomic(o.out + "/" + stem + "_p.dat",
                         ip < 0 ? "" : num(xy[2 * ip]) + " " + num(xy[2 * ip + 1]) + " " + pname(all.ids[ip]) + "\n");
     titles += title + "\n";
+    allFrames.push_back(ch::triangleSegs(xy, mesh));
     ++frame;
   };
-  writeFrame(tri, {}, -1, "DT_0: the two super-triangles");
+  writeFrame(tri, {}, -1, "DT_" + ch::mathText("0") + ": the two super-triangles\tDT_0: the two super-triangles");
   for (int k = 1; k <= 9; ++k) {
     const int ip = 3 + k;
     const std::vector<dt::Tri> before = tri;
@@ -121,34 +123,53 @@ void figure25(const ch::Options& o) {
         cavity.push_back(t);
     const dt::KernelStep s = dt::delaunayKernelStep(xy, tri, ip);
     std::vector<dt::Tri> ball(tri.end() - long(s.ball), tri.end());
-    writeFrame(before, cavity, ip, "inserting " + pname(all.ids[ip]) + ": the cavity (" + std::to_string(s.cavity) + " triangles)");
-    writeFrame(tri, ball, ip, "inserting " + pname(all.ids[ip]) + ": the ball (" + std::to_string(s.ball) + " triangles)");
+    // Titles: the PNG frames in the notes' notation; the GIF (libgd) cannot show 𝒞, so words.
+    const std::string name = pname(all.ids[ip]);
+    writeFrame(before, cavity, ip, "inserting " + ch::mathText(name) + ": the cavity " + ch::mathText("\\mathscr{C}") + " (" +
+                                       std::to_string(s.cavity) + " triangles)\tinserting " + ch::mathTextGif(name) + ": the cavity (" +
+                                       std::to_string(s.cavity) + " triangles)");
+    writeFrame(tri, ball, ip, "inserting " + ch::mathText(name) + ": the ball " + ch::mathText("\\mathscr{B}") + " (" +
+                                  std::to_string(s.ball) + " triangles)\tinserting " + ch::mathTextGif(name) + ": the ball (" + std::to_string(s.ball) + " triangles)");
     tab.add({std::to_string(k), std::to_string(s.cavity), std::to_string(s.ball), std::to_string(tri.size())});
     if (k <= 4 || k == 9) {
       ch::writeOut(o, ch::fmt("fig2_5_%d.dat", k), ch::gnuplotEdges(xy, tri));
       shown.push_back(ch::triangleSegs(xy, tri));
     }
   }
-  // Points and labels (x y name, then lx ly for each of the six panels, away from its edges;
-  // the animation has its own, the last two).
+  // Points and labels: x y name lx ly ax ay gifname. A point's label has one place in all six
+  // panels of Figure 2.5 (lx ly: placed once, clear of the edges of every panel, of every point
+  // marker and of the labels placed before it), and one in all the animation's frames (ax ay:
+  // clear of every frame's edges; the frames' dashed circles change too often to avoid).
   {
-    double x0 = xy[0], x1 = xy[0];
-    for (std::size_t i = 0; i < xy.size(); i += 2) x0 = std::min(x0, xy[i]), x1 = std::max(x1, xy[i]);
-    const double em = 0.045 * (x1 - x0);  // the text em in data units (fig2_5.gp's panels)
+    double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
+    for (std::size_t i = 0; i < xy.size(); i += 2)
+      x0 = std::min(x0, xy[i]), x1 = std::max(x1, xy[i]), y0 = std::min(y0, xy[i + 1]), y1 = std::max(y1, xy[i + 1]);
+    const double m = 0.08 * (x1 - x0);  // room for the super-vertices' labels outside the square
+    const ch::FigureSize fs = ch::figureSize("fig2_5"), fa = ch::figureSize("fig2_5_anim");
+    const ch::Panel pf = ch::cellPanel(fs, 2, 3, 0, x0 - m, x1 + m, y0 - m, y1 + m);
+    const ch::Panel pa = ch::cellPanel(fa, 1, 1, 0, x0 - m, x1 + m, y0 - m, y1 + m, 2.5);
+    // The labels of Figure 2.5 are set at 0.85 em (7.2 pt at 15 cm): one place must suit six panels.
+    ch::LabelPlacer placeF(pf, 0.85 * fs.em), placeA(pa, fa.em);
+    for (const auto& segs : shown) placeF.segments(segs, 1.5 * std::max(1.5, fs.em / 18));
+    for (const auto& segs : allFrames) placeA.segments(segs, 1.5 * std::max(1.5, fa.em / 18));
+    for (std::size_t i = 0; i < xy.size(); i += 2) {
+      placeF.marker(xy[i], xy[i + 1], ch::pointRadius(fs, 1.3));
+      placeA.marker(xy[i], xy[i + 1], ch::pointRadius(fa, 1.8));
+    }
     std::string pts, sup;
     for (std::size_t i = 0; i < all.ids.size(); ++i) {
-      std::string line = num(xy[2 * i]) + " " + num(xy[2 * i + 1]) + " " + pname(all.ids[i]);
-      for (const std::vector<ch::Seg>& segs : shown) {
-        const auto [lx, ly] = ch::labelSpot(xy[2 * i], xy[2 * i + 1], 0.6 * em, 0.9 * em, 0.45 * em, segs);
-        line += " " + num(lx) + " " + num(ly);
-      }
-      // The animation's frames have a smaller text: one more label place, for its last frame.
-      const auto [ax, ay] = ch::labelSpot(xy[2 * i], xy[2 * i + 1], 0.6 * 0.5 * em, 0.9 * 0.5 * em, 0.45 * 0.5 * em, shown.back());
-      line += " " + num(ax) + " " + num(ay) + "\n";
-      (all.ids[i] < 0 ? sup : pts) += line;
+      const std::string name = ch::mathText(pname(all.ids[i]));
+      const auto [lx, ly] = placeF.place(xy[2 * i], xy[2 * i + 1], name, NAN, 1.5);
+      const auto [ax, ay] = placeA.place(xy[2 * i], xy[2 * i + 1], name);
+      (all.ids[i] < 0 ? sup : pts) += num(xy[2 * i]) + " " + num(xy[2 * i + 1]) + " " + ch::quoted(name) + " " + num(lx) + " " +
+                                      num(ly) + " " + num(ax) + " " + num(ay) + " " + ch::quoted(ch::mathTextGif(pname(all.ids[i]))) + "\n";
     }
     ch::writeOut(o, "fig2_5_points.dat", pts);
     ch::writeOut(o, "fig2_5_super.dat", sup);
+    std::string view;
+    for (int k = 0; k < 6; ++k)
+      view += ch::fmt("P%d = \"", k + 1) + ch::cellPanel(fs, 2, 3, k, x0 - m, x1 + m, y0 - m, y1 + m).gnuplot() + "\"\n";
+    ch::writeOut(o, "fig2_5_view.gp", view + "VIEWA = \"" + pa.gnuplot() + "\"\n");
   }
   std::cout << "wrote " << frame << " animation data sets " << o.out << "/fig2_5_anim_NN_*.dat\n";
   ch::writeOut(o, "fig2_5_anim_titles.dat", titles);

@@ -4,16 +4,16 @@
 # Data (sec2_3_5_hilbert): fig2_11_h{1,2}.dat (cell centres in curve order, with their
 # Hilbert coordinates), fig2_11_frames{1,2}.dat (x0 y0 xRed yRed xBlue yBlue).
 load system("dirname '".ARG0."'")."/style.gp"
-set border
-set tics out nomirror
-set xrange [-0.05:1.05]
-set yrange [-0.05:1.05]
-set grid back lt 1 lc rgb "#c8c8c8" lw 1
-set style arrow 1 head filled size 0.035,20 lw 3 lc rgb C_NEW
-set style arrow 2 head filled size 0.035,20 lw 3 lc rgb C_NEIGH_EDGE
 do for [term in "png svg"] {
   eval fig_open(term, "fig2_11")
   set output (term eq "png" ? outdir."/fig2_11.png" : outdir."/fig2_11.svg")
+  set border
+  set tics out nomirror
+  set xrange [-0.05:1.05]
+  set yrange [-0.05:1.05]
+  set grid back lt 1 lc rgb "#c8c8c8" lw 1
+  set style arrow 1 head filled size 0.035,20 lw 3 lc rgb C_NEW
+  set style arrow 2 head filled size 0.035,20 lw 3 lc rgb C_NEIGH_EDGE
   eval layout(1, 2)
   do for [k=1:2] {
     eval panel(k, k == 1 ? "H_1 and the root frame" : "H_2 and the frames of level 1")

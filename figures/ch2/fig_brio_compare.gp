@@ -9,18 +9,18 @@ f = datadir."/brio_compare.dat"
 g = datadir."/brio_compare_stops.dat"
 names = "uniform clustered parabola jittered-grid"
 orders = "random Hilbert BRIO"
-set size noratio
-set border
-set tics out nomirror
-set logscale x
-set format x "10^{%T}"
-set grid lc rgb "#d8d8d8"
-set xlabel "n"
 stats f using 2 nooutput
-set xrange [STATS_min / 1.5:STATS_max * 1.5]
 do for [term in "png svg"] {
   eval fig_open(term, "fig_brio_compare")
   set output (term eq "png" ? outdir."/fig_brio_compare.png" : outdir."/fig_brio_compare.svg")
+  set size noratio
+  set border
+  set tics out nomirror
+  set logscale x
+  set format x "10^{%T}"
+  set grid lc rgb "#d8d8d8"
+  set xlabel "n"
+  set xrange [STATS_min / 1.5:STATS_max * 1.5]
   eval layout(1, 3)
   # One legend for the three panels, below them.
   set bmargin at screen 0.42

@@ -5,15 +5,15 @@ load system("dirname '".ARG0."'")."/style.gp"
 info = system("cat '".datadir."/fig_brio_rounds.info'")
 R = int(word(substr(info, strstrt(info, "=") + 1, strlen(info)), 1))
 sizes = system("sed -n 2p '".datadir."/fig_brio_rounds.info'")
-set border
-set tics out nomirror
-set xrange [0:1]
-set yrange [0:1]
-set xtics 0, 0.5, 1
-set ytics 0, 0.5, 1
 do for [term in "png svg"] {
   eval fig_open(term, "fig_brio_rounds")
   set output (term eq "png" ? outdir."/fig_brio_rounds.png" : outdir."/fig_brio_rounds.svg")
+  set border
+  set tics out nomirror
+  set xrange [0:1]
+  set yrange [0:1]
+  set xtics 0, 0.5, 1
+  set ytics 0, 0.5, 1
   eval layout(1, 3)
   do for [r = R-3:R-1] {
     eval panel(r - R + 4, sprintf("round %d of %d: %s points", r + 1, R, word(sizes, r + 1)))

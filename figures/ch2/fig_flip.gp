@@ -3,11 +3,11 @@
 # The two faces of the flip in the cavity's colour before and the ball's after, the four
 # adjacent faces in the neighbours' colour. Labels: each vertex's number of triangles.
 load system("dirname '".ARG0."'")."/style.gp"
-set xrange [-3.5:7]
-set yrange [-5:4.6]
 do for [t in "png svg"] {
   eval fig_open(t, "fig_flip")
   set output (t eq "png" ? outdir.'/fig_flip.png' : outdir.'/fig_flip.svg')
+  set xrange [-3.5:7]
+  set yrange [-5:4.6]
   eval layout(1, 2)
   eval panel(1, "before: edge ab")
   load datadir.'/flip_before.gp'

@@ -6,10 +6,10 @@ load system("dirname '".ARG0."'")."/style.gp"
 load datadir.'/rec_frames.gp'
 cols = (nframes <= 4) ? nframes : ((nframes <= 6) ? 3 : 4)
 rows = (nframes + cols - 1) / cols
-set xrange [xlo:xhi]; set yrange [ylo:yhi]
 do for [t in "png svg"] {
   eval fig_open(t, "fig_recovery_frames")
   set output (t eq "png" ? outdir.'/fig_recovery_frames.png' : outdir.'/fig_recovery_frames.svg')
+  set xrange [xlo:xhi]; set yrange [ylo:yhi]
   eval layout(rows, cols)
   do for [k = 0:nframes-1] {
     load sprintf('%s/rec_frame_%d.gp', datadir, k)
