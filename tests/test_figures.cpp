@@ -916,3 +916,123 @@ TEST_CASE("figures no blank band wider than 10 percent of the canvas at any side
     CHECK_MESSAGE(svg.height - ink.y1 <= 0.1 * svg.height, name << ".svg: blank band at the bottom, " << svg.height - ink.y1 << " px of " << svg.height);
   }
 }
+
+// ---- the style's roles -----------------------------------------------------------------------
+
+namespace {
+
+/// "#rrggbb" for what gnuplot writes: "rgb( 60,  60,  60)", "#3c3c3c", "black", "white".
+std::string hexColour(const std::string& c) {
+  int r, g, b;
+  if (std::sscanf(c.c_str(), "rgb(%d,%d,%d)", &r, &g, &b) == 3 || std::sscanf(c.c_str(), "rgb( %d, %d, %d)", &r, &g, &b) == 3) {
+    char buf[8];
+    std::snprintf(buf, sizeof buf, "#%02x%02x%02x", r, g, b);
+    return buf;
+  }
+  if (c == "black") return "#000000";
+  if (c == "white") return "#ffffff";
+  std::string l = c;
+  for (char& ch : l) ch = char(std::tolower(static_cast<unsigned char>(ch)));
+  return l;
+}
+
+/// The colour roles of figures/ch2/style.gp: C_NAME = "#rrggbb".
+std::map<std::string, std::string> styleRoles() {
+  const std::string text = readAll(kRoot / "figures/ch2/style.gp");
+  std::map<std::string, std::string> roles;
+  const std::regex role(R"((C_[A-Z_]+) = "(#[0-9a-fA-F]{6})")");
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), role); it != std::sregex_iterator(); ++it)
+    roles[(*it)[1]] = hexColour((*it)[2]);
+  return roles;
+}
+
+/// A stroke that is a circle: closed, at least 48 points, all at one distance from their mean.
+bool isCircle(const Stroke& st) {
+  if (st.pts.size() < 48) return false;
+  double cx = 0, cy = 0;
+  for (const auto& [x, y] : st.pts) cx += x, cy += y;
+  cx /= double(st.pts.size()), cy /= double(st.pts.size());
+  double lo = 1e300, hi = 0;
+  for (const auto& [x, y] : st.pts) {
+    const double r = std::hypot(x - cx, y - cy);
+    lo = std::min(lo, r), hi = std::max(hi, r);
+  }
+  return hi > 10 && hi - lo < 0.03 * hi;
+}
+
+/// Every breach of the style's roles in one figure: circles not dark-blue dashed, super-vertex
+/// labels without their purple square, role colours where the figure shows no such object.
+std::vector<std::string> roleBreaches(const std::string& name, const Svg& svg, const std::map<std::string, std::string>& roles) {
+  std::vector<std::string> out;
+  auto colourOf = [&](const std::string& role) { return roles.at(role); };
+  // (Figure 2.9's discs are vertex markers with a count inside, drawn as filled circles.)
+  for (const Stroke& st : svg.strokes)
+    if (name != "fig2_9" && isCircle(st) && (hexColour(st.colour) != colourOf("C_CIRCLE") || st.dash.empty()))
+      out.push_back("a circle in panel " + std::to_string(st.panel) + " is " + hexColour(st.colour) + (st.dash.empty() ? " solid" : " dashed") +
+                    ", not the circumcircles' dark-blue dashed");
+  for (const Text& t : svg.texts) {
+    if (t.str.rfind("\xf0\x9d\x91\x9d\xe2\x88\x92", 0) != 0) continue;  // "𝑝−": a super-vertex p_{-k}
+    if (hexColour(t.colour) != colourOf("C_SUPER")) out.push_back("super-vertex label " + t.str + " is not purple");
+    const Box b = textBox(t);
+    bool square = false;
+    for (const Marker& m : svg.markers)
+      if (m.panel == t.panel && m.shape == "#gpPt4" && hexColour(m.colour) == colourOf("C_SUPER") &&
+          std::hypot(m.x - 0.5 * (b.x0 + b.x1), m.y - 0.5 * (b.y0 + b.y1)) < 4 * (b.y1 - b.y0))
+        square = true;
+    if (!square) out.push_back("super-vertex label " + t.str + " (panel " + std::to_string(t.panel) + ") has no purple square beside it");
+  }
+  // Colours that name an object only where the figure shows that object.
+  const std::map<std::string, std::set<std::string>> only = {
+      {"C_CONFLICT", {"fig2_6", "fig_recovery_frames", "fig_outside_hull"}},
+      {"C_CAVITY_EDGE", {"fig2_1", "fig2_3", "fig2_10", "fig_flip", "fig_outside_hull"}},
+      {"C_SUPER", {"fig2_5", "fig2_6", "fig_recovery_frames"}},
+      {"C_KERNEL_EDGE", {"fig2_2"}},
+      {"C_SIGHT", {"fig2_2"}}};
+  for (const auto& [role, figures] : only) {
+    if (figures.count(name)) continue;
+    const std::string c = colourOf(role);
+    for (const Stroke& st : svg.strokes)
+      if (hexColour(st.colour) == c) {
+        out.push_back("a line in " + role + "'s colour " + c + ", which this figure has no object of");
+        break;
+      }
+    for (const Marker& m : svg.markers)
+      if (hexColour(m.colour) == c) {
+        out.push_back("a marker in " + role + "'s colour " + c + ", which this figure has no object of");
+        break;
+      }
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("figures the role check finds a solid circle and a super-vertex without its square") {
+  const auto roles = styleRoles();
+  REQUIRE(roles.count("C_CIRCLE") == 1);
+  REQUIRE(roles.at("C_CIRCLE") == "#1a3f8f");
+  Svg svg;
+  Stroke circle{{}, {0}, 2, "rgb( 26,  63, 143)", "6,4", 1, 1};
+  for (int k = 0; k <= 96; ++k) circle.pts.push_back({100 + 40 * std::cos(k * M_PI / 48), 100 + 40 * std::sin(k * M_PI / 48)});
+  svg.strokes.push_back(circle);
+  CHECK(roleBreaches("fig2_1", svg, roles).empty());
+  svg.strokes[0].dash = "";  // solid: not the circumcircles' style
+  CHECK(roleBreaches("fig2_1", svg, roles).size() == 1);
+  svg.strokes[0].dash = "6,4";
+  svg.strokes[0].colour = "rgb( 46, 125,  50)";  // the ball's green
+  CHECK(roleBreaches("fig2_1", svg, roles).size() == 1);
+  svg.strokes.clear();
+  Text super{"\xf0\x9d\x91\x9d\xe2\x88\x92" "1", 50, 50, 0, "middle", "rgb(123,  50, 148)", {{"DejaVu Math TeX Gyre", "\xf0\x9d\x91\x9d\xe2\x88\x92" "1", 20, 0}}, 1, true};
+  svg.texts.push_back(super);
+  CHECK(roleBreaches("fig2_5", svg, roles).size() == 1);  // no square
+  svg.markers.push_back({60, 70, 5, "#gpPt4", "rgb(123,  50, 148)", 1, 2});
+  CHECK(roleBreaches("fig2_5", svg, roles).empty());
+  CHECK(roleBreaches("fig_brio_rounds", svg, roles).size() == 1);  // purple where no super-vertex is
+}
+
+TEST_CASE("figures every figure keeps the style's roles for circles super-vertices and named objects") {
+  REQUIRE(svgs().size() >= 20);
+  const auto roles = styleRoles();
+  for (const auto& [name, svg] : svgs())
+    for (const std::string& b : roleBreaches(name, svg, roles)) FAIL_CHECK(name << ".svg: " << b);
+}
