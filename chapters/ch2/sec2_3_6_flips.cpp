@@ -255,7 +255,7 @@ void figureRecovery(const ch::Options& o) {
   double x0, y0, x1, y1;
   bbox(p, x0, y0, x1, y1);
   const double cx = 0.5 * (x0 + x1), cy = 0.5 * (y0 + y1);
-  const double R2 = factor * 0.5 * std::max(x1 - x0, y1 - y0) * 1.12;
+  const double R2 = factor * 0.5 * std::max(x1 - x0, y1 - y0) * 1.3;  // room for the corners' labels
   const ch::FigureSize fs = ch::figureSize("fig_recovery_frames");
   const double lw = std::max(1.5, fs.em / 18);
   const ch::Panel p0 = ch::cellPanel(fs, rows, cols, 0, cx - R2, cx + R2, cy - R2, cy + R2);

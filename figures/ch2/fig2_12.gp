@@ -7,10 +7,11 @@ do for [term in "png svg"] {
   set output (term eq "png" ? outdir."/fig2_12.png" : outdir."/fig2_12.svg")
   set border
   set tics out nomirror
+  set xtics nomirror; set ytics nomirror
   set xrange [0:1]
   set yrange [0:1]
-  set xtics 0, 0.5, 1
-  set ytics 0, 0.5, 1
+  set xtics 0, 0.5, 1 nomirror
+  set ytics 0, 0.5, 1 nomirror
   set palette defined (0 "#20206a", 0.5 "#c03060", 1 "#e0b000")
   set cbrange [0:1]
   set cbtics ("first" 0, "last" 1) scale 0
@@ -21,7 +22,7 @@ do for [term in "png svg"] {
     set rmargin at screen (n eq "1000" ? 0.42 : 0.86)
     eval panel(n eq "1000" ? 1 : 2, n." points")
     if (n eq "1000") { unset colorbox } else { set colorbox }
-    plot datadir."/fig2_12_".n.".dat" using 1:2:($3 / (n + 0.0)) with lines lw (n eq "1000" ? 1.5 : 0.8) lc palette notitle
+    plot datadir."/fig2_12_".n.".dat" using 1:2:($3 / (n + 0.0)) with lines lw (n eq "1000" ? 1.5 : 1) lc palette notitle
   }
   unset multiplot
 }

@@ -26,6 +26,7 @@ do for [term in "png svg"] {
   set size noratio
   set border 3
   set tics out nomirror
+  set xtics nomirror; set ytics nomirror
   set logscale x
   set format x "10^{%T}"
   set grid lc rgb "#d8d8d8" lw 1
@@ -35,11 +36,7 @@ do for [term in "png svg"] {
   set tmargin 2.5
   eval panel(1, M."𝑁}_{cavity}: Hilbert (dashed) and BRIO (solid)")
   set yrange [0:*]
-  # The legend: one entry per input (colour and marker), in panel (a).
-  set key inside top left Left reverse samplen 1.5 spacing 1.0 maxrows 3 width -2
-  eval "plot " . series(5, 1, 2) . ", " . series(5, 2, 1) . stopped(5, 0) . \
-       ", for [i = 0:ninputs - 1] NaN with linespoints lw 2 pt int(word(marks, i + 1)) ps (1.1*PS) lc rgb word(C_SERIES, i + 1) title word(names, i + 1)"
-  unset key
+  eval "plot " . series(5, 1, 2) . ", " . series(5, 2, 1) . stopped(5, 0)
   eval panel(2, M."𝑁}_{search} (log scale)")
   set logscale y
   set yrange [*:*]
@@ -51,6 +48,10 @@ do for [term in "png svg"] {
   eval panel(4, "random order: ".M."𝑁}_{search} (log scale)")
   set logscale y
   set yrange [*:*]
-  eval "plot " . series(4, 0, 1) . stopped(4, 1)
+  # The legend: one entry per input (colour and marker), in (d), whose large sizes are empty
+  # (random order is only run at the small ones).
+  set key inside top right Left reverse samplen 1.5 spacing 1.0 width -1
+  eval "plot " . series(4, 0, 1) . stopped(4, 1) . \
+       ", for [i = 0:ninputs - 1] NaN with linespoints lw 2 pt int(word(marks, i + 1)) ps (1.1*PS) lc rgb word(C_SERIES, i + 1) title word(names, i + 1)"
   unset multiplot
 }

@@ -10,10 +10,11 @@ do for [term in "png svg"] {
   set output (term eq "png" ? outdir."/fig_brio_rounds.png" : outdir."/fig_brio_rounds.svg")
   set border
   set tics out nomirror
+  set xtics nomirror; set ytics nomirror
   set xrange [0:1]
   set yrange [0:1]
-  set xtics 0, 0.5, 1
-  set ytics 0, 0.5, 1
+  set xtics 0, 0.5, 1 nomirror
+  set ytics 0, 0.5, 1 nomirror
   eval layout(1, 3)
   do for [r = R-3:R-1] {
     eval panel(r - R + 4, sprintf("round %d of %d: %s points", r + 1, R, word(sizes, r + 1)))

@@ -7,6 +7,7 @@ do for [t in "png svg"] {
   set size noratio
   set border 3
   set tics out nomirror
+  set xtics nomirror; set ytics nomirror
   set style data histograms
   set style fill solid 0.85 border -1
   set boxwidth 0.7
@@ -14,7 +15,7 @@ do for [t in "png svg"] {
   set xlabel "step (each adds one change to the previous one)"
   set yrange [0:*]
   set offsets 0, 0, graph 0.18, 0
-  set grid ytics lc rgb "#d8d8d8"
+  set grid ytics lc rgb "#d8d8d8" lw 1
   set xtics rotate by -30 left nomirror
   set ytics nomirror
   set rmargin 6

@@ -11,9 +11,10 @@ do for [term in "png svg"] {
   set size noratio
   set border
   set tics out nomirror
+  set xtics nomirror; set ytics nomirror
   set logscale xy
   set format x "10^{%T}"
-  set grid lc rgb "#d8d8d8"
+  set grid lc rgb "#d8d8d8" lw 1
   set xlabel "n (uniform in the unit square + one outlier)"
   set xrange [STATS_min / 1.5:STATS_max * 1.5]
   eval layout(1, 2)

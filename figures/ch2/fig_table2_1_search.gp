@@ -7,11 +7,12 @@ do for [term in "png svg"] {
   set size noratio
   set border
   set tics out nomirror
+  set xtics nomirror; set ytics nomirror
   set logscale xy
   set xlabel "n (random points, random order)"
   set ylabel "N_{search}"
   set key top left
-  set grid lc rgb "#d8d8d8"
+  set grid lc rgb "#d8d8d8" lw 1
   set xrange [500:2e6]
   set format x "10^{%T}"
   set yrange [10:1000]

@@ -18,6 +18,7 @@ do for [t in "png svg"] {
   set size noratio
   set border 3
   set tics out nomirror
+  set xtics nomirror; set ytics nomirror
   set logscale x
   set format x "10^{%T}"
   set xlabel "points n (uniform random)"
@@ -25,7 +26,9 @@ do for [t in "png svg"] {
   set xrange [500:*]
   set yrange [0:*]
   set offsets 0, graph 0.06, graph 0.05, 0
-  set grid lc rgb "#d8d8d8"
-  set key center right
+  set grid xtics ytics lc rgb "#c4c4c4" lw 1
+  unset x2tics; unset y2tics
+  set xtics nomirror; set ytics nomirror
+  set key inside top left Left reverse samplen 1.5 spacing 1.0
   eval(plot_cmd)
 }
