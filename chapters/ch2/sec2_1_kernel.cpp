@@ -199,9 +199,19 @@ void figure22(const ch::Options& o) {
   for (const auto& q : K) kx += q.x / double(K.size()), ky += q.y / double(K.size());
   const double ax = 0.5 * (kx + K[low].x), ay = 0.5 * (ky + K[low].y);
   const std::string kerName = "ker(" + ch::mathText("\\Sigma") + ")";
-  const double tx = X0 + 0.22 * (X1 - X0), ty = Y0 + 0.1 * (Y1 - Y0);
+  // Its place: the clearest in the lower left quarter of the view (left-aligned text).
   const double kerW = ch::textWidthEm(kerName) * fs.em;  // px
-  placer.box({pv.px(tx) - 2, pv.py(ty) - 0.8 * fs.em, pv.px(tx) + kerW + 2, pv.py(ty) + 0.3 * fs.em});
+  auto kerBox = [&](double x, double y) {
+    return ch::PxBox{pv.px(x) - 3, pv.py(y) - 0.5 * fs.em - 3, pv.px(x) + kerW + 3, pv.py(y) + 0.65 * fs.em + 3};
+  };
+  double tx = X0 + 0.22 * (X1 - X0), ty = Y0 + 0.1 * (Y1 - Y0), bestC = -1e300;
+  for (int i = 0; i <= 20; ++i)
+    for (int j = 0; j <= 20; ++j) {
+      const double x = X0 + (0.02 + 0.3 * i / 20) * (X1 - X0), y = Y0 + (0.04 + 0.3 * j / 20) * (Y1 - Y0);
+      const double c = std::min(placer.clearance(kerBox(x, y)), 12.0) - 0.001 * (i + j);
+      if (c > bestC) bestC = c, tx = x, ty = y;
+    }
+  placer.box(kerBox(tx, ty));
   const double tailx = tx + (kerW + 0.3 * fs.em) / pv.scale(), taily = ty + 0.3 * fs.em / pv.scale();
   placer.segment(tailx, taily, ax, ay, 1.5 * lw);
   // Corner labels, then x's, then ker(Σ)'s (its place is fixed: it only has to be clear).
@@ -420,13 +430,14 @@ void figures21to24(const ch::Options& o) {
         const double a = 2 * M_PI * t / 72, qx = c.x + c.r * std::cos(a), qy = c.y + c.r * std::sin(a);
         if (std::fabs(std::hypot(qx - other.x, qy - other.y) - other.r) < 0.25 * c.r) continue;
         const auto [lx, ly] = std::pair{qx, qy};
-        const double hw = 0.5 * ch::textWidthEm(name) * fs.em + 1, hh = 0.55 * fs.em + 1;
-        const double cx = pb.px(lx) + (hw + 0.3 * fs.em) * std::cos(a), cy = pb.py(ly) - (hh + 0.3 * fs.em) * std::sin(a);
-        const double cl = placerB.clearance({cx - hw, cy - hh, cx + hw, cy + hh});
+        // (the box as the placer's: 0.47 em above the anchor, 0.85 em below with a subscript)
+        const double hw = 0.5 * ch::textWidthEm(name) * fs.em + 2, up = 0.5 * fs.em + 2, down = 0.9 * fs.em + 2;
+        const double cx = pb.px(lx) + (hw + 0.4 * fs.em) * std::cos(a), cy = pb.py(ly) - (0.7 * fs.em + 0.4 * fs.em) * std::sin(a);
+        const double cl = placerB.clearance({cx - hw, cy - up, cx + hw, cy + down});
         if (cl > best) best = cl, bx = cx, by = cy;
       }
-      const double hw = 0.5 * ch::textWidthEm(name) * fs.em + 1, hh = 0.55 * fs.em + 1;
-      placerB.box({bx - hw, by - hh, bx + hw, by + hh});
+      const double hw = 0.5 * ch::textWidthEm(name) * fs.em + 2, up = 0.5 * fs.em + 2, down = 0.9 * fs.em + 2;
+      placerB.box({bx - hw, by - up, bx + hw, by + down});
       const double dx = pb.x0 + (bx - pb.left) / pb.scale(), dy = pb.y1 - (by - pb.top) / pb.scale();
       return num(dx) + " " + num(dy) + " " + ch::quoted(name) + "\n";
     };

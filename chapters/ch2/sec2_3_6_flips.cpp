@@ -68,18 +68,6 @@ std::string segment(const dt::Vertex* a, const dt::Vertex* b, const char* color,
     << " nohead lc rgb \"" << color << "\" lw " << lw << " dt " << dash << " front\n";
   return s.str();
 }
-// A label beside v where no segment of `segs` crosses it (em: the text height in data units).
-// `taken`: points to keep clear (other vertices, labels placed before); this one is added.
-std::string label(const dt::Vertex* v, const std::string& text, const std::vector<ch::Seg>& segs,
-                  double em, std::size_t chars, std::vector<double>& taken) {
-  const auto [x, y] = ch::labelSpot(v->x, v->y, 0.65 * em, 0.3 * em * double(chars), 0.45 * em, segs, taken);
-  taken.insert(taken.end(), {x, y});
-  std::ostringstream s;
-  s.precision(17);
-  s << "set label \"" << text << "\" at " << x << "," << y << " center front\n";
-  return s.str();
-}
-
 std::map<const dt::Vertex*, int> degrees(const dt::Triangulation& T) {
   std::map<const dt::Vertex*, int> d;
   for (const dt::Face* f : T.finiteFaces())
@@ -134,15 +122,25 @@ void figureFlip(const ch::Options& o) {
       }
     }
     obj += segment(e0, e1, after ? "#2e7d32" : "#c51b7d", 3.5);
-    const std::vector<ch::Seg> segs = ch::faceSegs(T.finiteFaces());
-    std::vector<double> taken;
+    // The panel, laid out in pixels (VIEW), and each label placed clear of every edge and
+    // label of it.
+    const ch::FigureSize fs = ch::figureSize("fig_flip");
+    const double lw = std::max(1.5, fs.em / 18);
+    const ch::Panel pv = ch::cellPanel(fs, 1, 2, after ? 1 : 0, -3.5, 7, -5, 4.6);
+    ch::LabelPlacer placer(pv, fs.em);
+    placer.segments(ch::faceSegs(T.finiteFaces()), 1.2 * lw);
+    placer.segment(e0->x, e0->y, e1->x, e1->y, 3.5 * lw);
+    std::ostringstream lab;
+    lab.precision(17);
     for (int i = 0; i < 4; ++i) {
       const dt::Vertex* v = S[std::size_t(i)];
       const int before = d0.at(v), now = d1.at(v);
-      std::string t = std::string(names[i]) + ": " + std::to_string(after ? now : before);
-      if (after) t += std::string(" (") + (now > before ? "+" : "") + std::to_string(now - before) + ")";
-      obj += label(v, t, segs, 0.45, after ? 9 : 4, taken);
+      std::string t = ch::mathText(names[i]) + ": " + std::to_string(after ? now : before);
+      if (after) t += std::string(" (") + (now > before ? "+" : "\u2212") + std::to_string(std::abs(now - before)) + ")";
+      const auto [x, y] = placer.place(v->x, v->y, t);
+      lab << "set label \"" << t << "\" at " << x << "," << y << " center front\n";
     }
+    obj += lab.str() + "VIEW = \"" + pv.gnuplot() + "\"\n";
     ch::writeOut(o, stem + ".gp", obj);
     ch::writeOut(o, stem + "_tri.dat", triData(T.finiteFaces()));
   };

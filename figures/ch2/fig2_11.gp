@@ -30,9 +30,9 @@ do for [term in "png svg"] {
          f using 1:2:($3*0.82):($4*0.82) with vectors head filled size 0.035,20 lw 3 lc rgb C_NEW, \
          f using 1:2:($5*0.82):($6*0.82) with vectors head filled size 0.035,20 lw 3 lc rgb C_NEIGH_EDGE, \
          f using 1:2 with points pt 7 ps (1.2*PS) lc rgb "black", \
-         f using ($1+$3*0.3-$5*0.16):($2+$4*0.3-$6*0.16):(M."𝑟}") with labels tc rgb C_NEW, \
-         f using ($1+$5*0.3-$3*0.16):($2+$6*0.3-$4*0.16):(M."𝑏}") with labels tc rgb C_NEIGH_EDGE, \
-         f using ($1-$3*0.16-$5*0.16):($2-$4*0.16-$6*0.16):(M."𝑥_0}") with labels, \
+         f using ($1+$3*0.3-$5*(k == 1 ? 0.16 : 0.22)):($2+$4*0.3-$6*(k == 1 ? 0.16 : 0.22)):(M."𝑟}") with labels tc rgb C_NEW, \
+         f using ($1+$5*0.3-$3*(k == 1 ? 0.16 : 0.22)):($2+$6*0.3-$4*(k == 1 ? 0.16 : 0.22)):(M."𝑏}") with labels tc rgb C_NEIGH_EDGE, \
+         f using ($1-($3+$5)*(k == 1 ? 0.16 : 0.25)):($2-($4+$6)*(k == 1 ? 0.16 : 0.25)):(M."𝑥_0}") with labels, \
          c using ($1 + 0.28 * cs * sg($1 - qc($1))):($2 + 0.28 * cs * sg($2 - qc($2))):(k == 1 ? strcol(3) : substr(strcol(3), 2, strlen(strcol(3)) - 1)) with labels tc rgb "#505050" font sprintf(",%.1f", 0.85 * FS)
   }
   unset multiplot
