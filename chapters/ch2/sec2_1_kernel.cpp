@@ -164,34 +164,82 @@ void figure22(const ch::Options& o) {
             << " corners; the kernel point sees " << seen << "/" << P.size()
             << " corners (exact test); in the open kernel: " << dt::inOpenKernel(P, x) << "\n";
   std::string poly, ker, sight, lines, labels;
-  // The view (fig2_2.gp reads it from fig2_2_view.gp): the edge lines are clipped to it here.
-  const double X0 = -1.3, X1 = 1.3, Y0 = -1.3, Y1 = 1.3;
-  std::vector<ch::Seg> drawn;
+  // The view: the polygon with room for the labels, laid out in pixels (fig2_2_view.gp) so that
+  // the labels are placed clear of everything drawn; the edge lines are clipped to it here.
+  const ch::FigureSize fs = ch::figureSize("fig2_2");
+  const ch::Panel pv = ch::fitPanel(fs.W, fs.H, 0, 0, fs.W, fs.H, -1.22, 1.22, -1.22, 1.22, 0.2 * fs.em);
+  const double X0 = pv.x0, X1 = pv.x1, Y0 = pv.y0, Y1 = pv.y1, lw = std::max(1.5, fs.em / 18);
+  ch::LabelPlacer placer(pv, fs.em);
   for (std::size_t i = 0; i <= P.size(); ++i)
     poly += num(P[i % P.size()].x) + " " + num(P[i % P.size()].y) + "\n";
-  for (std::size_t i = 0; i <= K.size(); ++i)
+  for (std::size_t i = 0; i <= K.size(); ++i) {
     ker += num(K[i % K.size()].x) + " " + num(K[i % K.size()].y) + "\n";
-  for (std::size_t j = 0; j < P.size(); ++j) {
-    const dt::Point2 a = P[j], b = P[(j + 1) % P.size()];
-    drawn.push_back({a.x, a.y, b.x, b.y});
-    drawn.push_back({x.x, x.y, a.x, a.y});
+    if (i > 0) placer.segment(K[i - 1].x, K[i - 1].y, K[i % K.size()].x, K[i % K.size()].y, 2 * lw);
   }
   for (std::size_t j = 0; j < P.size(); ++j) {
+    const dt::Point2 a = P[j], b = P[(j + 1) % P.size()];
+    placer.segment(a.x, a.y, b.x, b.y, 2.5 * lw);
+    placer.segment(x.x, x.y, a.x, a.y, 1.2 * lw);
+    placer.marker(a.x, a.y, ch::pointRadius(fs, 0.9));
     sight += num(x.x) + " " + num(x.y) + "\n" + num(P[j].x) + " " + num(P[j].y) + "\n\n";
-    // Corner labels where no edge or sight line crosses them.
-    const auto [lx, ly] = ch::labelSpot(P[j].x, P[j].y, 0.07, 0.06, 0.04, drawn);
-    labels += num(lx) + " " + num(ly) + " σ_{" + std::to_string(j + 1) + "}\n";
     // The line of each edge, the border of its half-plane, clipped to the view.
-    const dt::Point2 a = P[j], b = P[(j + 1) % P.size()];
     ch::Seg l;
-    if (ch::clipLine(a.x, a.y, b.x - a.x, b.y - a.y, X0, X1, Y0, Y1, l))
+    if (ch::clipLine(a.x, a.y, b.x - a.x, b.y - a.y, X0, X1, Y0, Y1, l)) {
       lines += num(l.x0) + " " + num(l.y0) + "\n" + num(l.x1) + " " + num(l.y1) + "\n\n";
+      placer.segment(l.x0, l.y0, l.x1, l.y1, 1.2 * lw);
+    }
   }
-  ch::writeOut(o, "fig2_2_view.gp", ch::fmt("X0 = %g; X1 = %g; Y0 = %g; Y1 = %g\n", X0, X1, Y0, Y1));
+  placer.marker(x.x, x.y, ch::pointRadius(fs, 1.5));
+  // ker(Σ): in the free corner at the lower left, with an arrow to a kernel point near its
+  // lowest-left corner (the sight lines fill the kernel's middle). The arrow is an obstacle.
+  std::size_t low = 0;
+  for (std::size_t i = 0; i < K.size(); ++i)
+    if (K[i].x + K[i].y < K[low].x + K[low].y) low = i;
+  double kx = 0, ky = 0;
+  for (const auto& q : K) kx += q.x / double(K.size()), ky += q.y / double(K.size());
+  const double ax = 0.5 * (kx + K[low].x), ay = 0.5 * (ky + K[low].y);
+  const std::string kerName = "ker(" + ch::mathText("\\Sigma") + ")";
+  // Its place: the clearest in the lower left quarter of the view (left-aligned text).
+  const double kerW = ch::textWidthEm(kerName) * fs.em;  // px
+  auto kerBox = [&](double x, double y) {
+    return ch::PxBox{pv.px(x) - 3, pv.py(y) - 0.5 * fs.em - 3, pv.px(x) + kerW + 3, pv.py(y) + 0.65 * fs.em + 3};
+  };
+  double tx = X0 + 0.22 * (X1 - X0), ty = Y0 + 0.1 * (Y1 - Y0), bestC = -1e300;
+  for (int i = 0; i <= 20; ++i)
+    for (int j = 0; j <= 20; ++j) {
+      const double x = X0 + (0.02 + 0.3 * i / 20) * (X1 - X0), y = Y0 + (0.04 + 0.3 * j / 20) * (Y1 - Y0);
+      const double c = std::min(placer.clearance(kerBox(x, y)), 12.0) - 0.001 * (i + j);
+      if (c > bestC) bestC = c, tx = x, ty = y;
+    }
+  placer.box(kerBox(tx, ty));
+  const double tailx = tx + (kerW + 0.3 * fs.em) / pv.scale(), taily = ty + 0.3 * fs.em / pv.scale();
+  placer.segment(tailx, taily, ax, ay, 1.5 * lw);
+  // Corner labels, then x's, then ker(Σ)'s (its place is fixed: it only has to be clear).
+  for (std::size_t j = 0; j < P.size(); ++j) {
+    const std::string name = ch::mathText("\\sigma_{" + std::to_string(j + 1) + "}");
+    // Prefer the direction away from x: outside the polygon, where the corner is alone.
+    const double away = std::atan2(P[j].y - x.y, P[j].x - x.x) * 180 / M_PI;
+    const auto [lx, ly] = placer.place(P[j].x, P[j].y, name, away);
+    labels += num(lx) + " " + num(ly) + " " + ch::quoted(name) + "\n";
+  }
   {
-    const auto [lx, ly] = ch::labelSpot(x.x, x.y, 0.06, 0.03, 0.04, drawn);
-    ch::writeOut(o, "fig2_2_xlabel.dat", num(lx) + " " + num(ly) + "\n");
+    // x's label in the widest angle between two of its sight lines.
+    std::vector<double> ang;
+    for (const auto& q : P) ang.push_back(std::atan2(q.y - x.y, q.x - x.x));
+    std::sort(ang.begin(), ang.end());
+    double gapMid = 0, gapWidth = -1;
+    for (std::size_t j = 0; j < ang.size(); ++j) {
+      const double a0 = ang[j], a1 = j + 1 < ang.size() ? ang[j + 1] : ang[0] + 2 * M_PI;
+      if (a1 - a0 > gapWidth) gapWidth = a1 - a0, gapMid = 0.5 * (a0 + a1);
+    }
+    const std::string name = ch::mathText("x");
+    const auto [lx, ly] = placer.place(x.x, x.y, name, gapMid * 180 / M_PI);
+    ch::writeOut(o, "fig2_2_xlabel.dat", num(lx) + " " + num(ly) + " " + ch::quoted(name) + "\n");
   }
+  ch::writeOut(o, "fig2_2_view.gp", ch::fmt("X0 = %.10g; X1 = %.10g; Y0 = %.10g; Y1 = %.10g\n", X0, X1, Y0, Y1) +
+                                       "VIEW = \"" + pv.gnuplot() + "\"\n" +
+                                       ch::fmt("AX = %.10g; AY = %.10g; TX = %.10g; TY = %.10g; TAILX = %.10g; TAILY = %.10g\n", ax, ay, tx, ty, tailx, taily) +
+                                       "KER = \"" + kerName + "\"\n");
   ch::writeOut(o, "fig2_2_polygon.dat", poly);
   ch::writeOut(o, "fig2_2_kernel.dat", ker);
   ch::writeOut(o, "fig2_2_sight.dat", sight);
@@ -263,20 +311,33 @@ void figures21to24(const ch::Options& o) {
   for (std::size_t i = 0; i <= sigma.size(); ++i)
     cavity += num(sigma[i % sigma.size()]->x) + " " + num(sigma[i % sigma.size()]->y) + "\n";
   const std::vector<ch::Seg> dtnSegs = ch::triangleSegs(before.xy, before.tri);
-  // Label sizes in data units: the panels show about 1.25 units across 650 px, em 28 px.
-  const double em = 0.05;
   {
-    // The label of p_{n+1} avoids the edges and the cavity's circles (as 72-gons) of (b).
-    std::vector<ch::Seg> drawn1 = dtnSegs;
+    // Both panels show one view, laid out here in pixels (fig2_1_view.gp), so the label of
+    // p_{n+1} is placed once, clear of everything either panel draws: the edges, the cavity's
+    // boundary and circles, the points.
+    double bx0 = 1e300, bx1 = -1e300, by0 = 1e300, by1 = -1e300;
+    for (const dt::Vertex* v : S) bx0 = std::min(bx0, v->x), bx1 = std::max(bx1, v->x), by0 = std::min(by0, v->y), by1 = std::max(by1, v->y);
+    const double m = 0.04 * (bx1 - bx0);
+    const ch::FigureSize fs = ch::figureSize("fig2_1");
+    const ch::Panel pa = ch::cellPanel(fs, 1, 2, 0, bx0 - m, bx1 + m, by0 - m, by1 + m);
+    const ch::Panel pb = ch::cellPanel(fs, 1, 2, 1, bx0 - m, bx1 + m, by0 - m, by1 + m);
+    const double lw = std::max(1.5, fs.em / 18);
+    ch::LabelPlacer placer(pa, fs.em);
+    placer.segments(dtnSegs, 1.5 * lw);
+    for (std::size_t i = 0; i < sigma.size(); ++i) {
+      const dt::Vertex *a = sigma[i], *b = sigma[(i + 1) % sigma.size()];
+      placer.segment(a->x, a->y, b->x, b->y, 3 * lw);
+    }
     for (const dt::Face* f : C) {
       const Circle c = circumcircle(f->V[0], f->V[1], f->V[2]);
-      for (int k = 0; k < 72; ++k) {
-        const double a = 2 * M_PI * k / 72, b = 2 * M_PI * (k + 1) / 72;
-        drawn1.push_back({c.x + c.r * std::cos(a), c.y + c.r * std::sin(a), c.x + c.r * std::cos(b), c.y + c.r * std::sin(b)});
-      }
+      placer.circle(c.x, c.y, c.r, 1.5 * lw);
     }
-    const auto [lx, ly] = ch::labelSpot(p->x, p->y, 0.9 * em, 1.2 * em, 0.5 * em, drawn1);
-    ch::writeOut(o, "fig2_1_p.dat", num(p->x) + " " + num(p->y) + " " + num(lx) + " " + num(ly) + "\n");
+    for (const dt::Vertex* v : S) placer.marker(v->x, v->y, ch::pointRadius(fs, 1.0));
+    placer.marker(p->x, p->y, ch::pointRadius(fs, 1.6));
+    const std::string name = ch::mathText("p_{n+1}");
+    const auto [lx, ly] = placer.place(p->x, p->y, name);
+    ch::writeOut(o, "fig2_1_p.dat", num(p->x) + " " + num(p->y) + " " + num(lx) + " " + num(ly) + " " + ch::quoted(name) + "\n");
+    ch::writeOut(o, "fig2_1_view.gp", "P1 = \"" + pa.gnuplot() + "\"\nP2 = \"" + pb.gnuplot() + "\"\n");
   }
   ch::writeOut(o, "fig2_1_dtn.dat", ch::gnuplotSegs(dtnSegs));
   ch::writeOut(o, "fig2_1_points.dat", ptsText);
@@ -308,17 +369,27 @@ void figures21to24(const ch::Options& o) {
     cx0 = std::min(cx0, v->x), cx1 = std::max(cx1, v->x), cy0 = std::min(cy0, v->y), cy1 = std::max(cy1, v->y);
   const double cm = 0.12 * std::max(cx1 - cx0, cy1 - cy0);
   cx0 -= cm, cx1 += cm, cy0 -= cm, cy1 += cm;
-  const double aem = 0.045 * std::max(cx1 - cx0, cy1 - cy0);
-  std::vector<ch::Seg> drawn3 = dtnSegs;
-  drawn3.push_back({apex->x, apex->y, p->x, p->y});
+  // Both panels are laid out here in pixels (fig2_3_view.gp: PA, PB), so that every label is
+  // placed clear of everything its panel draws.
+  const ch::FigureSize fs = ch::figureSize("fig2_3");
+  const double lw = std::max(1.5, fs.em / 18);
+  const ch::Panel pa = ch::cellPanel(fs, 1, 2, 0, cx0, cx1, cy0, cy1);
+  ch::LabelPlacer placerA(pa, fs.em);
+  placerA.segments(dtnSegs, 1.2 * lw);
+  for (std::size_t i = 0; i < sigma.size(); ++i)
+    placerA.segment(sigma[i]->x, sigma[i]->y, sigma[(i + 1) % sigma.size()]->x, sigma[(i + 1) % sigma.size()]->y, 3 * lw);
+  placerA.segment(apex->x, apex->y, p->x, p->y, 2.5 * lw);
+  for (const dt::Vertex* v : S) placerA.marker(v->x, v->y, ch::pointRadius(fs, 1.0));
+  placerA.marker(p->x, p->y, ch::pointRadius(fs, 1.5));
+  const auto [plx, ply] = placerA.place(p->x, p->y, ch::mathText("p_{n+1}"));
   for (std::size_t i = 1; i < names.size(); ++i) {
-    const auto [lx, ly] = ch::labelSpot(names[i]->x, names[i]->y, 0.65 * aem, 0.5 * aem, 0.4 * aem, drawn3);
-    nameText += num(lx) + " " + num(ly) + " p_" + std::to_string(i) + "\n";
+    const std::string name = ch::mathText("p_" + std::to_string(i));
+    const auto [lx, ly] = placerA.place(names[i]->x, names[i]->y, name);
+    nameText += num(lx) + " " + num(ly) + " " + ch::quoted(name) + "\n";
   }
   std::cout << "Figure 2.3: the segment from a cavity vertex to p_{n+1} crosses " << chain.size()
             << " cavity triangles; in the notes' shape p2p3p4 -> p2p4p5 -> p2p5p1 -> p1p5p6: "
             << (names.empty() ? "no" : "yes") << "\n";
-  const auto [plx, ply] = ch::labelSpot(p->x, p->y, 0.7 * aem, 1.1 * aem, 0.4 * aem, drawn3);
   const dt::Face *d1 = chain[0], *d2 = chain[1];
   const Circle c1 = circumcircle(d1->V[0], d1->V[1], d1->V[2]);
   const Circle c2 = circumcircle(d2->V[0], d2->V[1], d2->V[2]);
@@ -328,41 +399,49 @@ void figures21to24(const ch::Options& o) {
   const double m = 0.06 * (std::max(c1.x + c1.r, c2.x + c2.r) - std::min(c1.x - c1.r, c2.x - c2.r));
   const double zx0 = std::min(c1.x - c1.r, c2.x - c2.r) - m, zx1 = std::max(c1.x + c1.r, c2.x + c2.r) + m;
   const double zy0 = std::min(c1.y - c1.r, c2.y - c2.r) - m, zy1 = std::max(c1.y + c1.r, c2.y + c2.r) + m;
+  const ch::Panel pb = ch::cellPanel(fs, 1, 2, 1, zx0, zx1, zy0, zy1);
   ch::Seg line;
-  ch::clipLine(a->x, a->y, b->x - a->x, b->y - a->y, zx0, zx1, zy0, zy1, line);
+  ch::clipLine(a->x, a->y, b->x - a->x, b->y - a->y, pb.x0, pb.x1, pb.y0, pb.y1, line);
   std::string stepLabels;
   {
-    const double zem = 0.045 * std::max(zx1 - zx0, zy1 - zy0);  // the text size in the zoomed units
-    std::vector<ch::Seg> drawnZ = {line, {apex->x, apex->y, p->x, p->y}};
+    ch::LabelPlacer placerB(pb, fs.em);
+    placerB.segment(line.x0, line.y0, line.x1, line.y1, 1.5 * lw);
+    placerB.segment(apex->x, apex->y, p->x, p->y, 2 * lw);
     for (const dt::Face* f : {d1, d2})
-      for (int e = 0; e < 3; ++e) drawnZ.push_back({f->V[e]->x, f->V[e]->y, f->V[(e + 1) % 3]->x, f->V[(e + 1) % 3]->y});
-    std::vector<double> taken;  // vertex positions, and the labels placed so far
-    for (std::size_t i = 2; i < 6; ++i) taken.push_back(names[i]->x), taken.push_back(names[i]->y);
-    // A circle's label: just outside it, at the angle farthest from the other circle, the
-    // segments and the vertices.
-    auto circleLabel = [&](const Circle& c, const Circle& other, const char* name) {
-      double best = -1, bx = 0, by = 0;
-      for (int t = 0; t < 36; ++t) {
-        const double a = 2 * M_PI * t / 36, x = c.x + (c.r + 0.6 * zem) * std::cos(a),
-                     y = c.y + (c.r + 0.6 * zem) * std::sin(a);
-        if (x < zx0 + zem || x > zx1 - zem || y < zy0 + zem || y > zy1 - zem) continue;
-        double d = std::fabs(std::hypot(x - other.x, y - other.y) - other.r);
-        for (const ch::Seg& sg : drawnZ) d = std::min(d, ch::segDistance(sg, x, y));
-        for (std::size_t i = 0; i + 1 < taken.size(); i += 2) d = std::min(d, std::hypot(x - taken[i], y - taken[i + 1]));
-        if (d > best) best = d, bx = x, by = y;
-      }
-      taken.insert(taken.end(), {bx, by});
-      return num(bx) + " " + num(by) + " " + name + "\n";
-    };
-    stepLabels = circleLabel(c1, c2, "C_I");
-    stepLabels += circleLabel(c2, c1, "C_J");
-    for (std::size_t i = 1; i < names.size(); ++i) {
-      if (i == 1 || i == 6) continue;  // p1 and p6 are not in the first step
-      const auto [lx, ly] = ch::labelSpot(names[i]->x, names[i]->y, 0.65 * zem, 0.5 * zem, 0.4 * zem, drawnZ, {taken[taken.size() - 4], taken[taken.size() - 3], taken[taken.size() - 2], taken.back()});
-      stepLabels += num(lx) + " " + num(ly) + " p_" + std::to_string(i) + "\n";
+      for (int e = 0; e < 3; ++e) placerB.segment(f->V[e]->x, f->V[e]->y, f->V[(e + 1) % 3]->x, f->V[(e + 1) % 3]->y, 4 * lw);
+    placerB.circle(c1.x, c1.y, c1.r, 2 * lw);
+    placerB.circle(c2.x, c2.y, c2.r, 2 * lw);
+    for (const dt::Face* f : {d1, d2})
+      for (const dt::Vertex* v : f->V) placerB.marker(v->x, v->y, ch::pointRadius(fs, 1.0));
+    placerB.marker(p->x, p->y, ch::pointRadius(fs, 1.5));
+    for (std::size_t i = 2; i < 6; ++i) {  // p1 and p6 are not in the first step
+      const std::string name = ch::mathText("p_" + std::to_string(i));
+      const auto [lx, ly] = placerB.place(names[i]->x, names[i]->y, name);
+      stepLabels += num(lx) + " " + num(ly) + " " + ch::quoted(name) + "\n";
     }
-    const auto [zx, zy] = ch::labelSpot(p->x, p->y, 0.7 * zem, 1.1 * zem, 0.4 * zem, drawnZ, {taken[taken.size() - 4], taken[taken.size() - 3], taken[taken.size() - 2], taken.back()});
-    stepLabels += num(zx) + " " + num(zy) + " p_{n+1}\n";
+    const std::string pname = ch::mathText("p_{n+1}");
+    const auto [zx, zy] = placerB.place(p->x, p->y, pname);
+    stepLabels += num(zx) + " " + num(zy) + " " + ch::quoted(pname) + "\n";
+    // A circle's label: beside its own circle, on the outside, where it is clearest; the
+    // circle's point nearest the label must not be near the other circle.
+    auto circleLabel = [&](const Circle& c, const Circle& other, const std::string& name) {
+      double best = -1e300, bx = 0, by = 0;
+      for (int t = 0; t < 72; ++t) {
+        const double a = 2 * M_PI * t / 72, qx = c.x + c.r * std::cos(a), qy = c.y + c.r * std::sin(a);
+        if (std::fabs(std::hypot(qx - other.x, qy - other.y) - other.r) < 0.25 * c.r) continue;
+        const auto [lx, ly] = std::pair{qx, qy};
+        // (the box as the placer's: 0.47 em above the anchor, 0.85 em below with a subscript)
+        const double hw = 0.5 * ch::textWidthEm(name) * fs.em + 2, up = 0.5 * fs.em + 2, down = 0.9 * fs.em + 2;
+        const double cx = pb.px(lx) + (hw + 0.4 * fs.em) * std::cos(a), cy = pb.py(ly) - (0.7 * fs.em + 0.4 * fs.em) * std::sin(a);
+        const double cl = placerB.clearance({cx - hw, cy - up, cx + hw, cy + down});
+        if (cl > best) best = cl, bx = cx, by = cy;
+      }
+      const double hw = 0.5 * ch::textWidthEm(name) * fs.em + 2, up = 0.5 * fs.em + 2, down = 0.9 * fs.em + 2;
+      placerB.box({bx - hw, by - up, bx + hw, by + down});
+      const double dx = pb.x0 + (bx - pb.left) / pb.scale(), dy = pb.y1 - (by - pb.top) / pb.scale();
+      return num(dx) + " " + num(dy) + " " + ch::quoted(name) + "\n";
+    };
+    stepLabels = circleLabel(c1, c2, ch::mathText("C_I")) + circleLabel(c2, c1, ch::mathText("C_J")) + stepLabels;
   }
   std::cout << "Figure 2.3: circle centres of the first step " << std::hypot(c1.x - c2.x, c1.y - c2.y) / std::max(c1.r, c2.r)
             << " radii apart\n";
@@ -381,15 +460,14 @@ void figures21to24(const ch::Options& o) {
   ch::writeOut(o, "fig2_3_names.dat", nameText);
   ch::writeOut(o, "fig2_3_segment.dat", num(apex->x) + " " + num(apex->y) + "\n" + num(p->x) + " " +
                                            num(p->y) + "\n");
-  ch::writeOut(o, "fig2_3_plabel.dat", num(plx) + " " + num(ply) + "\n");
+  ch::writeOut(o, "fig2_3_plabel.dat", num(plx) + " " + num(ply) + " " + ch::quoted(ch::mathText("p_{n+1}")) + "\n");
   ch::writeOut(o, "fig2_3_circles.dat", circleLine(c1) + circleLine(c2));
   ch::writeOut(o, "fig2_3_edge.dat", num(a->x) + " " + num(a->y) + "\n" + num(b->x) + " " + num(b->y) +
                                         "\n\n\n" + ch::gnuplotSegs({line}));
   ch::writeOut(o, "fig2_3_cap.dat", capText);
   ch::writeOut(o, "fig2_3_steptri.dat", triangleBlock(d1) + triangleBlock(d2));
   ch::writeOut(o, "fig2_3_steplabels.dat", stepLabels);
-  ch::writeOut(o, "fig2_3_view.gp", ch::fmt("cx0 = %.10g; cx1 = %.10g; cy0 = %.10g; cy1 = %.10g\n", cx0, cx1, cy0, cy1) +
-                                       ch::fmt("zx0 = %.10g; zx1 = %.10g; zy0 = %.10g; zy1 = %.10g\n", zx0, zx1, zy0, zy1));
+  ch::writeOut(o, "fig2_3_view.gp", "PA = \"" + pa.gnuplot() + "\"\nPB = \"" + pb.gnuplot() + "\"\n");
   ch::runGnuplot(o, "fig2_3.gp");
 
   // Figure 2.4: insert p, then pick the boundary edge sigma_i sigma_{i+1} whose outside triangle
@@ -430,19 +508,45 @@ void figures21to24(const ch::Options& o) {
     vx0 = std::min(vx0, afterMesh.xy[i]), vx1 = std::max(vx1, afterMesh.xy[i]);
     vy0 = std::min(vy0, afterMesh.xy[i + 1]), vy1 = std::max(vy1, afterMesh.xy[i + 1]);
   }
-  // em4: the text em in data units (16 px of about 750 px across the view)
-  const double vm = 0.05 * std::max(vx1 - vx0, vy1 - vy0), em4 = 0.022 * std::max(vx1 - vx0, vy1 - vy0);
+  // The view, laid out in pixels (fig2_4_view.gp) so that the labels are placed clear of every
+  // edge, circle, point and other label.
+  const ch::FigureSize fs4 = ch::figureSize("fig2_4");
+  const double lw4 = std::max(1.5, fs4.em / 18);
+  const ch::Panel pv = ch::fitPanel(fs4.W, fs4.H, 0, 0, fs4.W, fs4.H, vx0, vx1, vy0, vy1, 1.2 * fs4.em);
+  ch::LabelPlacer placer(pv, fs4.em);
+  placer.segments(afterSegs, 1.5 * lw4);
+  for (std::size_t i = 0; i < sigma.size(); ++i)
+    placer.segment(sigma[i]->x, sigma[i]->y, sigma[(i + 1) % sigma.size()]->x, sigma[(i + 1) % sigma.size()]->y, 3 * lw4);
+  for (const dt::Vertex* v : {si, si1, pj}) {
+    const dt::Vertex* w = v == si ? si1 : v == si1 ? pj : si;
+    placer.segment(v->x, v->y, w->x, w->y, 3 * lw4);
+  }
+  placer.circle(cOut.x, cOut.y, cOut.r, 2 * lw4);
+  placer.circle(cNew.x, cNew.y, cNew.r, 2 * lw4);
+  for (const dt::Vertex* v : S) placer.marker(v->x, v->y, ch::pointRadius(fs4, 1.0));
+  placer.marker(p->x, p->y, ch::pointRadius(fs4, 1.6));
   std::string labels4, special;
-  std::vector<double> taken;
-  auto label = [&](const dt::Vertex* v, const std::string& name) {
-    const auto [lx, ly] = ch::labelSpot(v->x, v->y, 0.8 * em4, 0.3 * em4 * double(name.size() > 4 ? 4 : 2), 0.5 * em4, afterSegs, taken);
-    taken.insert(taken.end(), {lx, ly});
-    labels4 += num(lx) + " " + num(ly) + " " + name + "\n";
+  auto label = [&](const dt::Vertex* v, const std::string& tex) {
+    const std::string name = ch::mathText(tex);
+    const auto [lx, ly] = placer.place(v->x, v->y, name);
+    labels4 += num(lx) + " " + num(ly) + " " + ch::quoted(name) + "\n";
   };
   label(p, "p_{n+1}");
-  label(si, "σ_i");
-  label(si1, "σ_{i+1}");
+  label(si, "\\sigma_i");
+  label(si1, "\\sigma_{i+1}");
   label(pj, "p_j");
+  {
+    // The ball's name, at the centroid of its largest triangle (or as near as is clear).
+    double bestA = -1, gx = 0, gy = 0;
+    for (std::size_t i = 0; i < sigma.size(); ++i) {
+      const dt::Vertex *a = sigma[i], *b = sigma[(i + 1) % sigma.size()];
+      const double area = std::fabs((a->x - p->x) * (b->y - p->y) - (a->y - p->y) * (b->x - p->x));
+      if (area > bestA) bestA = area, gx = (a->x + b->x + p->x) / 3, gy = (a->y + b->y + p->y) / 3;
+    }
+    const std::string name = ch::mathText("\\mathscr{B}");
+    const auto [lx, ly] = placer.place(gx, gy, name, NAN, 0.6 * fs4.em);  // well apart from p_{n+1}
+    labels4 += num(lx) + " " + num(ly) + " " + ch::quoted(name) + "\n";
+  }
   for (const dt::Vertex* v : {si, si1, pj, si}) special += num(v->x) + " " + num(v->y) + "\n";
   // sigma_{i+1} sigma_i p_j is the counter-clockwise order of the outside triangle.
   const bool pOut = dt::incircle(si1->x, si1->y, si->x, si->y, pj->x, pj->y, p->x, p->y) <= 0;
@@ -455,8 +559,7 @@ void figures21to24(const ch::Options& o) {
   ch::writeOut(o, "fig2_4_newtri.dat", num(si->x) + " " + num(si->y) + "\n" + num(si1->x) + " " + num(si1->y) + "\n" +
                                           num(p->x) + " " + num(p->y) + "\n" + num(si->x) + " " + num(si->y) + "\n");
   ch::writeOut(o, "fig2_4_circles.dat", circleLine(cOut) + circleLine(cNew));
-  ch::writeOut(o, "fig2_4_view.gp", ch::fmt("vx0 = %.10g; vx1 = %.10g; vy0 = %.10g; vy1 = %.10g\n",
-                                            vx0 - vm, vx1 + vm, vy0 - vm, vy1 + vm));
+  ch::writeOut(o, "fig2_4_view.gp", "VIEW = \"" + pv.gnuplot() + "\"\n");
   ch::runGnuplot(o, "fig2_4.gp");
 }
 

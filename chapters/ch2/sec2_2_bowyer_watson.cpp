@@ -90,7 +90,8 @@ void figure25(const ch::Options& o) {
   std::vector<std::vector<ch::Seg>> shown = {ch::triangleSegs(xy, tri)};  // the edges of each panel
   // Animation frames: 00 is DT_0; then for each point, the cavity (odd) and the ball (even).
   int frame = 0;
-  std::string titles;
+  std::string titles;  // one line per frame: the PNG's title, a tab, the GIF's
+  std::vector<std::vector<ch::Seg>> allFrames;  // the edges of each frame
   auto writeFrame = [&](const std::vector<dt::Tri>& mesh, const std::vector<dt::Tri>& fill, int ip,
                         const std::string& title) {
     const std::string stem = ch::fmt("fig2_5_anim_%02d", frame);
@@ -108,9 +109,10 @@ void figure25(const ch::Options& o) {
     dt::writeFileAtomic(o.out + "/" + stem + "_p.dat",
                         ip < 0 ? "" : num(xy[2 * ip]) + " " + num(xy[2 * ip + 1]) + " " + pname(all.ids[ip]) + "\n");
     titles += title + "\n";
+    allFrames.push_back(ch::triangleSegs(xy, mesh));
     ++frame;
   };
-  writeFrame(tri, {}, -1, "DT_0: the two super-triangles");
+  writeFrame(tri, {}, -1, "DT_" + ch::mathText("0") + ": the two super-triangles\tDT_0: the two super-triangles");
   for (int k = 1; k <= 9; ++k) {
     const int ip = 3 + k;
     const std::vector<dt::Tri> before = tri;
@@ -121,34 +123,53 @@ void figure25(const ch::Options& o) {
         cavity.push_back(t);
     const dt::KernelStep s = dt::delaunayKernelStep(xy, tri, ip);
     std::vector<dt::Tri> ball(tri.end() - long(s.ball), tri.end());
-    writeFrame(before, cavity, ip, "inserting " + pname(all.ids[ip]) + ": the cavity (" + std::to_string(s.cavity) + " triangles)");
-    writeFrame(tri, ball, ip, "inserting " + pname(all.ids[ip]) + ": the ball (" + std::to_string(s.ball) + " triangles)");
+    // Titles: the PNG frames in the notes' notation; the GIF (libgd) cannot show 𝒞, so words.
+    const std::string name = pname(all.ids[ip]);
+    writeFrame(before, cavity, ip, "inserting " + ch::mathText(name) + ": the cavity " + ch::mathText("\\mathscr{C}") + " (" +
+                                       std::to_string(s.cavity) + " triangles)\tinserting " + ch::mathTextGif(name) + ": the cavity (" +
+                                       std::to_string(s.cavity) + " triangles)");
+    writeFrame(tri, ball, ip, "inserting " + ch::mathText(name) + ": the ball " + ch::mathText("\\mathscr{B}") + " (" +
+                                  std::to_string(s.ball) + " triangles)\tinserting " + ch::mathTextGif(name) + ": the ball (" + std::to_string(s.ball) + " triangles)");
     tab.add({std::to_string(k), std::to_string(s.cavity), std::to_string(s.ball), std::to_string(tri.size())});
     if (k <= 4 || k == 9) {
       ch::writeOut(o, ch::fmt("fig2_5_%d.dat", k), ch::gnuplotEdges(xy, tri));
       shown.push_back(ch::triangleSegs(xy, tri));
     }
   }
-  // Points and labels (x y name, then lx ly for each of the six panels, away from its edges;
-  // the animation has its own, the last two).
+  // Points and labels: x y name lx ly ax ay gifname. A point's label has one place in all six
+  // panels of Figure 2.5 (lx ly: placed once, clear of the edges of every panel, of every point
+  // marker and of the labels placed before it), and one in all the animation's frames (ax ay:
+  // clear of every frame's edges; the frames' dashed circles change too often to avoid).
   {
-    double x0 = xy[0], x1 = xy[0];
-    for (std::size_t i = 0; i < xy.size(); i += 2) x0 = std::min(x0, xy[i]), x1 = std::max(x1, xy[i]);
-    const double em = 0.045 * (x1 - x0);  // the text em in data units (fig2_5.gp's panels)
+    double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
+    for (std::size_t i = 0; i < xy.size(); i += 2)
+      x0 = std::min(x0, xy[i]), x1 = std::max(x1, xy[i]), y0 = std::min(y0, xy[i + 1]), y1 = std::max(y1, xy[i + 1]);
+    const double m = 0.14 * (x1 - x0);  // room for the super-vertices' labels outside the square
+    const ch::FigureSize fs = ch::figureSize("fig2_5"), fa = ch::figureSize("fig2_5_anim");
+    const ch::Panel pf = ch::cellPanel(fs, 2, 3, 0, x0 - m, x1 + m, y0 - m, y1 + m);
+    const ch::Panel pa = ch::cellPanel(fa, 1, 1, 0, x0 - m, x1 + m, y0 - m, y1 + m, 2.5);
+    // The labels of Figure 2.5 are set at 0.85 em (7.2 pt at 15 cm): one place must suit six panels.
+    ch::LabelPlacer placeF(pf, 0.85 * fs.em), placeA(pa, fa.em);
+    for (const auto& segs : shown) placeF.segments(segs, 1.5 * std::max(1.5, fs.em / 18));
+    for (const auto& segs : allFrames) placeA.segments(segs, 1.5 * std::max(1.5, fa.em / 18));
+    for (std::size_t i = 0; i < xy.size(); i += 2) {
+      placeF.marker(xy[i], xy[i + 1], ch::pointRadius(fs, 1.3));
+      placeA.marker(xy[i], xy[i + 1], ch::pointRadius(fa, 1.8));
+    }
     std::string pts, sup;
     for (std::size_t i = 0; i < all.ids.size(); ++i) {
-      std::string line = num(xy[2 * i]) + " " + num(xy[2 * i + 1]) + " " + pname(all.ids[i]);
-      for (const std::vector<ch::Seg>& segs : shown) {
-        const auto [lx, ly] = ch::labelSpot(xy[2 * i], xy[2 * i + 1], 0.6 * em, 0.9 * em, 0.45 * em, segs);
-        line += " " + num(lx) + " " + num(ly);
-      }
-      // The animation's frames have a smaller text: one more label place, for its last frame.
-      const auto [ax, ay] = ch::labelSpot(xy[2 * i], xy[2 * i + 1], 0.6 * 0.5 * em, 0.9 * 0.5 * em, 0.45 * 0.5 * em, shown.back());
-      line += " " + num(ax) + " " + num(ay) + "\n";
-      (all.ids[i] < 0 ? sup : pts) += line;
+      const std::string name = ch::mathText(pname(all.ids[i]));
+      const auto [lx, ly] = placeF.place(xy[2 * i], xy[2 * i + 1], name, NAN, 1.5);
+      const auto [ax, ay] = placeA.place(xy[2 * i], xy[2 * i + 1], name);
+      (all.ids[i] < 0 ? sup : pts) += num(xy[2 * i]) + " " + num(xy[2 * i + 1]) + " " + ch::quoted(name) + " " + num(lx) + " " +
+                                      num(ly) + " " + num(ax) + " " + num(ay) + " " + ch::quoted(ch::mathTextGif(pname(all.ids[i]))) + "\n";
     }
     ch::writeOut(o, "fig2_5_points.dat", pts);
     ch::writeOut(o, "fig2_5_super.dat", sup);
+    std::string view;
+    for (int k = 0; k < 6; ++k)
+      view += ch::fmt("P%d = \"", k + 1) + ch::cellPanel(fs, 2, 3, k, x0 - m, x1 + m, y0 - m, y1 + m).gnuplot() + "\"\n";
+    ch::writeOut(o, "fig2_5_view.gp", view + "VIEWA = \"" + pa.gnuplot() + "\"\n");
   }
   std::cout << "wrote " << frame << " animation data sets " << o.out << "/fig2_5_anim_NN_*.dat\n";
   ch::writeOut(o, "fig2_5_anim_titles.dat", titles);
@@ -245,35 +266,51 @@ void figure26(const ch::Options& o) {
     bx0 = std::min(bx0, p[i]), bx1 = std::max(bx1, p[i]), by0 = std::min(by0, p[i + 1]), by1 = std::max(by1, p[i + 1]);
   const double am = 0.1 * std::max(ax1 - ax0, ay1 - ay0), bm = 0.1 * std::max(bx1 - bx0, by1 - by0);  // room for labels
   ax0 -= am, ax1 += am, ay0 -= am, ay1 += am, bx0 -= bm, bx1 += bm, by0 -= bm, by1 += bm;
-  const double aem = 0.045 * std::max(ax1 - ax0, ay1 - ay0), bem = 0.045 * std::max(bx1 - bx0, by1 - by0);
+  // Both panels laid out in pixels (fig2_6_view.gp: PA, PB), each label placed clear of
+  // everything its panel draws.
+  const ch::FigureSize fs = ch::figureSize("fig2_6");
+  const double lw = std::max(1.5, fs.em / 18);
+  const ch::Panel pa = ch::cellPanel(fs, 1, 2, 0, ax0, ax1, ay0, ay1), pb = ch::cellPanel(fs, 1, 2, 1, bx0, bx1, by0, by1);
   const std::vector<ch::Seg> allSegs = ch::triangleSegs(bw.xy, bw.tri), keptSegs = ch::triangleSegs(bw.xy, kept);
-  std::vector<ch::Seg> bSegs = keptSegs;
-  for (const auto& [a, b] : mi.crossing) bSegs.push_back({bw.xy[2 * a], bw.xy[2 * a + 1], bw.xy[2 * b], bw.xy[2 * b + 1]});
-  bSegs.push_back({p[2 * k], p[2 * k + 1], p[2 * l], p[2 * l + 1]});
-  bSegs.push_back({p[2 * k], p[2 * k + 1], p[2 * j], p[2 * j + 1]});
-  bSegs.push_back({p[2 * j], p[2 * j + 1], p[2 * l], p[2 * l + 1]});
+  ch::LabelPlacer placeA(pa, fs.em), placeB(pb, fs.em);
+  placeA.segments(allSegs, 1.2 * lw);
+  placeA.circle(c.x, c.y, c.r, 2 * lw);
+  placeB.segments(keptSegs, 1.5 * lw);
+  for (const auto& [a, b] : mi.crossing) {
+    placeA.segment(bw.xy[2 * a], bw.xy[2 * a + 1], bw.xy[2 * b], bw.xy[2 * b + 1], 3 * lw);
+    placeB.segment(bw.xy[2 * a], bw.xy[2 * a + 1], bw.xy[2 * b], bw.xy[2 * b + 1], 3 * lw);
+  }
+  for (const auto& [u, v] : std::vector<std::pair<int, int>>{{k, l}, {k, j}, {j, l}}) placeB.segment(p[2 * u], p[2 * u + 1], p[2 * v], p[2 * v + 1], 2.5 * lw);
+  for (std::size_t i = 0; i < p.size(); i += 2) {
+    placeA.marker(p[i], p[i + 1], ch::pointRadius(fs, 0.8));
+    placeB.marker(p[i], p[i + 1], ch::pointRadius(fs, 1.0));
+  }
+  for (int s = 0; s < 4; ++s) placeA.marker(bw.xy[2 * s], bw.xy[2 * s + 1], ch::pointRadius(fs, 1.3));
   std::string labels;
   for (const auto& [idx, name] : std::vector<std::pair<int, std::string>>{{K, "p_k"}, {J, "p_j"}, {L, "p_l"}}) {
-    const auto [lx, ly] = ch::labelSpot(bw.xy[2 * idx], bw.xy[2 * idx + 1], 0.6 * bem, 0.5 * bem, 0.45 * bem, bSegs);
-    labels += num(lx) + " " + num(ly) + " " + name + "\n";
+    const std::string text = ch::mathText(name);
+    const auto [lx, ly] = placeB.place(bw.xy[2 * idx], bw.xy[2 * idx + 1], text);
+    labels += num(lx) + " " + num(ly) + " " + ch::quoted(text) + "\n";
   }
   // Super-vertex labels of (a); in (b), p_{-1} is named where its crossing edge leaves the view.
   std::string superLabel, exitLabel;
   for (int s = 0; s < 4; ++s) {
-    const auto [lx, ly] = ch::labelSpot(bw.xy[2 * s], bw.xy[2 * s + 1], 0.6 * aem, 0.9 * aem, 0.45 * aem, allSegs);
-    superLabel += num(bw.xy[2 * s]) + " " + num(bw.xy[2 * s + 1]) + " " + pname(bw.ids[s]) + " " + num(lx) + " " + num(ly) + " " +
+    const std::string text = ch::mathText(pname(bw.ids[s]));
+    const auto [lx, ly] = placeA.place(bw.xy[2 * s], bw.xy[2 * s + 1], text);
+    superLabel += num(bw.xy[2 * s]) + " " + num(bw.xy[2 * s + 1]) + " " + ch::quoted(text) + " " + num(lx) + " " + num(ly) + " " +
                   (std::count(mi.superInCircle.begin(), mi.superInCircle.end(), s) ? "1" : "0") + "\n";
   }
   for (const auto& [a, b] : mi.crossing) {
     const int sv = a < 4 ? a : b, other = a < 4 ? b : a;
     ch::Seg cl;
     if (!ch::clipLine(bw.xy[2 * other], bw.xy[2 * other + 1], bw.xy[2 * sv] - bw.xy[2 * other],
-                      bw.xy[2 * sv + 1] - bw.xy[2 * other + 1], bx0, bx1, by0, by1, cl))
+                      bw.xy[2 * sv + 1] - bw.xy[2 * other + 1], pb.x0, pb.x1, pb.y0, pb.y1, cl))
       continue;
     // cl runs along the line; its end towards the super-vertex is where the edge leaves the view.
     const double ex = cl.x1, ey = cl.y1;
-    exitLabel += num(ex) + " " + num(ey) + " " + num(ex + 0.9 * bem * (ex < 0.5 * (bx0 + bx1) ? 1 : -1)) + " " +
-                 num(ey + 0.9 * bem * (ey < 0.5 * (by0 + by1) ? 1 : -1)) + " \"to " + pname(bw.ids[sv]) + "\"\n";
+    const std::string text = "to " + ch::mathText(pname(bw.ids[sv]));
+    const auto [lx, ly] = placeB.place(ex, ey, text);
+    exitLabel += num(ex) + " " + num(ey) + " " + num(lx) + " " + num(ly) + " " + ch::quoted(text) + "\n";
   }
   std::string pts;
   for (std::size_t i = 0; i < p.size() / 2; ++i) pts += num(p[2 * i]) + " " + num(p[2 * i + 1]) + "\n";
@@ -290,8 +327,7 @@ void figure26(const ch::Options& o) {
   ch::writeOut(o, "fig2_6_super.dat", superLabel);
   ch::writeOut(o, "fig2_6_exit.dat", exitLabel.empty() ? "NaN NaN NaN NaN x\n" : exitLabel);
   ch::writeOut(o, "fig2_6_crossing.dat", crossing);
-  ch::writeOut(o, "fig2_6_view.gp", ch::fmt("ax0 = %.10g; ax1 = %.10g; ay0 = %.10g; ay1 = %.10g\n", ax0, ax1, ay0, ay1) +
-                                       ch::fmt("bx0 = %.10g; bx1 = %.10g; by0 = %.10g; by1 = %.10g\n", bx0, bx1, by0, by1));
+  ch::writeOut(o, "fig2_6_view.gp", "PA = \"" + pa.gnuplot() + "\"\nPB = \"" + pb.gnuplot() + "\"\n");
   ch::runGnuplot(o, "fig2_6.gp");
   // How often it happens, for growing super-triangles (same 500 seeds).
   ch::Table tab;

@@ -68,18 +68,6 @@ std::string segment(const dt::Vertex* a, const dt::Vertex* b, const char* color,
     << " nohead lc rgb \"" << color << "\" lw " << lw << " dt " << dash << " front\n";
   return s.str();
 }
-// A label beside v where no segment of `segs` crosses it (em: the text height in data units).
-// `taken`: points to keep clear (other vertices, labels placed before); this one is added.
-std::string label(const dt::Vertex* v, const std::string& text, const std::vector<ch::Seg>& segs,
-                  double em, std::size_t chars, std::vector<double>& taken) {
-  const auto [x, y] = ch::labelSpot(v->x, v->y, 0.65 * em, 0.3 * em * double(chars), 0.45 * em, segs, taken);
-  taken.insert(taken.end(), {x, y});
-  std::ostringstream s;
-  s.precision(17);
-  s << "set label \"" << text << "\" at " << x << "," << y << " center front\n";
-  return s.str();
-}
-
 std::map<const dt::Vertex*, int> degrees(const dt::Triangulation& T) {
   std::map<const dt::Vertex*, int> d;
   for (const dt::Face* f : T.finiteFaces())
@@ -134,15 +122,25 @@ void figureFlip(const ch::Options& o) {
       }
     }
     obj += segment(e0, e1, after ? "#2e7d32" : "#c51b7d", 3.5);
-    const std::vector<ch::Seg> segs = ch::faceSegs(T.finiteFaces());
-    std::vector<double> taken;
+    // The panel, laid out in pixels (VIEW), and each label placed clear of every edge and
+    // label of it.
+    const ch::FigureSize fs = ch::figureSize("fig_flip");
+    const double lw = std::max(1.5, fs.em / 18);
+    const ch::Panel pv = ch::cellPanel(fs, 1, 2, after ? 1 : 0, -3.5, 7, -5, 4.6);
+    ch::LabelPlacer placer(pv, fs.em);
+    placer.segments(ch::faceSegs(T.finiteFaces()), 1.2 * lw);
+    placer.segment(e0->x, e0->y, e1->x, e1->y, 3.5 * lw);
+    std::ostringstream lab;
+    lab.precision(17);
     for (int i = 0; i < 4; ++i) {
       const dt::Vertex* v = S[std::size_t(i)];
       const int before = d0.at(v), now = d1.at(v);
-      std::string t = std::string(names[i]) + ": " + std::to_string(after ? now : before);
-      if (after) t += std::string(" (") + (now > before ? "+" : "") + std::to_string(now - before) + ")";
-      obj += label(v, t, segs, 0.45, after ? 9 : 4, taken);
+      std::string t = ch::mathText(names[i]) + ": " + std::to_string(after ? now : before);
+      if (after) t += std::string(" (") + (now > before ? "+" : "\u2212") + std::to_string(std::abs(now - before)) + ")";
+      const auto [x, y] = placer.place(v->x, v->y, t);
+      lab << "set label \"" << t << "\" at " << x << "," << y << " center front\n";
     }
+    obj += lab.str() + "VIEW = \"" + pv.gnuplot() + "\"\n";
     ch::writeOut(o, stem + ".gp", obj);
     ch::writeOut(o, stem + "_tri.dat", triData(T.finiteFaces()));
   };
@@ -247,44 +245,53 @@ void figureRecovery(const ch::Options& o) {
   dt::delaunayTrglHull(H, dt::addVertices(H, p), dt::StartRule::LastCavity);
   std::vector<const dt::Vertex*> hull;
   for (dt::Vertex* v : dt::convexHull(H)) hull.push_back(byId(v->id));
-  std::vector<std::string> titles;
-  double vx0, vy0, vx1, vy1;  // the view's side (as in rec_frames.gp), for the label size
-  bbox(p, vx0, vy0, vx1, vy1);
-  const double viewSide = 2 * factor * 0.5 * std::max(vx1 - vx0, vy1 - vy0) * 1.08;
-  auto frame = [&](int k, const std::string& title, const dt::Vertex* e0, const dt::Vertex* e1,
-                   const dt::Vertex* n0, const dt::Vertex* n1, bool dropSuper) {
-    std::string obj;
+  // The frames' grid (as fig_recovery_frames.gp lays it out) and one view for all: a vertex's
+  // label has one place in every frame, clear of the edges of every frame, of every point and
+  // super-vertex marker, and of the labels placed before it.
+  const int nframes = int(log.size()) + 2;
+  const int cols = nframes <= 4 ? nframes : (nframes <= 6 ? 3 : 4), rows = (nframes + cols - 1) / cols;
+  double x0, y0, x1, y1;
+  bbox(p, x0, y0, x1, y1);
+  const double cx = 0.5 * (x0 + x1), cy = 0.5 * (y0 + y1);
+  const double R2 = factor * 0.5 * std::max(x1 - x0, y1 - y0) * 1.3;  // room for the corners' labels
+  const ch::FigureSize fs = ch::figureSize("fig_recovery_frames");
+  const double lw = std::max(1.5, fs.em / 18);
+  const ch::Panel p0 = ch::cellPanel(fs, rows, cols, 0, cx - R2, cx + R2, cy - R2, cy + R2);
+  ch::LabelPlacer placer(p0, fs.em);
+  struct Frame {
+    std::string obj, dat;
+    std::vector<const dt::Vertex*> named;
+  };
+  std::vector<Frame> frames;
+  auto frame = [&](const std::string& title, const dt::Vertex* e0, const dt::Vertex* e1, const dt::Vertex* n0,
+                   const dt::Vertex* n1, bool dropSuper) {
+    Frame fr;
     int id = 0;
-    // conv(S) in pink, the triangles of S in grey on top: pink shows what they miss.
-    // (the style's colours: uncovered hull pink, covered hull pale blue, the removed edge in the
-    // conflict colour, the new one in the ball's)
-    obj += polygon(id, hull, "#f4b6d2");
+    // conv(S) in pink, the triangles of S in pale blue on top: pink shows what they miss
+    // (the style's colours: uncovered hull, covered hull, the removed edge in the conflict
+    // colour, the new one in the ball's).
+    fr.obj += polygon(id, hull, "#f4b6d2");
     for (const dt::Face* f : R.finiteFaces())
       if (f->V[0]->id >= 0 && f->V[1]->id >= 0 && f->V[2]->id >= 0)
-        obj += polygon(id, {f->V[0], f->V[1], f->V[2]}, "#dde6f0");
-    if (e0) obj += segment(e0, e1, "#c51b7d", 2.5, "2");
-    if (n0) obj += segment(n0, n1, "#2e7d32", 3);
-    obj += "ftitle = \"" + title + "\"\n";
+        fr.obj += polygon(id, {f->V[0], f->V[1], f->V[2]}, "#dde6f0");
+    if (e0) fr.obj += segment(e0, e1, "#c51b7d", 2.5, "2"), placer.segment(e0->x, e0->y, e1->x, e1->y, 2.5 * lw);
+    if (n0) fr.obj += segment(n0, n1, "#2e7d32", 3), placer.segment(n0->x, n0->y, n1->x, n1->y, 3 * lw);
+    fr.obj += "ftitle = \"" + title + "\"\n";
     std::vector<const dt::Face*> F;
     for (const dt::Face* f : R.finiteFaces())
       if (!dropSuper || (f->V[0]->id >= 0 && f->V[1]->id >= 0 && f->V[2]->id >= 0)) F.push_back(f);
+    placer.segments(ch::faceSegs(F), 1.5 * lw);
     // The super-vertices and the four vertices of the frame's flip (its title names them) are
-    // labelled, off this frame's edges; the text em is about 6% of the view. (All nine points
-    // would not fit: some lie closer together than a label is wide.)
-    std::vector<ch::Seg> segs = ch::faceSegs(F);
-    if (e0) segs.push_back({e0->x, e0->y, e1->x, e1->y});
-    std::vector<double> taken;
-    for (const dt::Vertex& v : R.vertices()) taken.insert(taken.end(), {v.x, v.y});
-    for (const dt::Vertex& v : R.vertices()) {
-      if ((dropSuper && v.id < 0) || (v.id >= 0 && &v != e0 && &v != e1 && &v != n0 && &v != n1)) continue;
-      const std::string nm = v.id < 0 ? "p_{" + std::to_string(v.id) + "}" : "p_{" + std::to_string(v.id + 1) + "}";
-      obj += label(&v, nm, segs, 0.06 * viewSide, 3, taken);
-    }
-    ch::writeOut(o, "rec_frame_" + std::to_string(k) + ".gp", obj);
-    ch::writeOut(o, "rec_frame_" + std::to_string(k) + ".dat", triData(F));
+    // labelled. (All nine points would crowd a frame.)
+    for (const dt::Vertex& v : R.vertices())
+      if (!((dropSuper && v.id < 0) || (v.id >= 0 && &v != e0 && &v != e1 && &v != n0 && &v != n1))) fr.named.push_back(&v);
+    fr.dat = triData(F);
+    frames.push_back(fr);
   };
-  frame(0, "DT(S_0 ∪ S)", nullptr, nullptr, nullptr, nullptr, false);
-  int k = 1;
+  auto nm = [](const dt::Vertex* v) {
+    return ch::mathText(v->id < 0 ? "p_{" + std::to_string(v->id) + "}" : "p_{" + std::to_string(v->id + 1) + "}");
+  };
+  frame("DT(" + ch::mathText("S_0") + " ∪ " + ch::mathText("S") + ")", nullptr, nullptr, nullptr, nullptr, false);
   for (const auto& e : log) {
     const dt::Vertex *a = byId(e[0]->id), *b = byId(e[1]->id);
     dt::Face* f = nullptr;
@@ -293,22 +300,36 @@ void figureRecovery(const ch::Options& o) {
       for (int i = 0; i < 3 && !f; ++i)
         if (g.V[i] == a && g.V[(i + 1) % 3] == b) f = &g, idx = i;
     if (f == nullptr || !dt::flipEdge(f, idx)) throw std::logic_error("recovery replay failed");
-    auto nm = [](const dt::Vertex* v) {
-      return v->id < 0 ? "p_{" + std::to_string(v->id) + "}" : "p_{" + std::to_string(v->id + 1) + "}";
-    };
-    frame(k, nm(a) + nm(b) + " → " + nm(e[2]) + nm(e[3]), a, b, byId(e[2]->id), byId(e[3]->id), false);
-    ++k;
+    frame(nm(a) + nm(b) + " → " + nm(e[2]) + nm(e[3]), a, b, byId(e[2]->id), byId(e[3]->id), false);
   }
-  frame(k, "DT(S)", nullptr, nullptr, nullptr, nullptr, true);
-  ++k;
-  double x0, y0, x1, y1;
-  bbox(p, x0, y0, x1, y1);
-  const double cx = 0.5 * (x0 + x1), cy = 0.5 * (y0 + y1);
-  const double R2 = factor * 0.5 * std::max(x1 - x0, y1 - y0) * 1.08;
+  frame("DT(" + ch::mathText("S") + ")", nullptr, nullptr, nullptr, nullptr, true);
+  const int k = int(frames.size());
+  for (const dt::Vertex& v : R.vertices()) placer.marker(v.x, v.y, ch::pointRadius(fs, v.id < 0 ? 1.3 : 0.9));
+  std::map<const dt::Vertex*, std::pair<double, double>> spot;
+  for (const dt::Vertex& v : R.vertices()) {  // super-vertices first: they are in every frame
+    if (v.id >= 0) continue;
+    spot[&v] = placer.place(v.x, v.y, nm(&v));
+  }
+  for (const Frame& fr : frames)
+    for (const dt::Vertex* v : fr.named)
+      if (!spot.count(v)) spot[v] = placer.place(v->x, v->y, nm(v));
+  for (int i = 0; i < k; ++i) {
+    std::ostringstream lab;
+    lab.precision(17);
+    for (const dt::Vertex* v : frames[std::size_t(i)].named)
+      lab << "set label \"" << nm(v) << "\" at " << spot[v].first << "," << spot[v].second << " center front tc rgb "
+          << (v->id < 0 ? "C_SUPER" : "C_TRI") << "\n";
+    const ch::Panel pk = ch::cellPanel(fs, rows, cols, i, cx - R2, cx + R2, cy - R2, cy + R2);
+    ch::writeOut(o, "rec_frame_" + std::to_string(i) + ".gp", frames[std::size_t(i)].obj + lab.str() + "VIEW = \"" + pk.gnuplot() + "\"\n");
+    ch::writeOut(o, "rec_frame_" + std::to_string(i) + ".dat", frames[std::size_t(i)].dat);
+  }
   std::ostringstream g;
-  g << "nframes = " << k << "\nxlo = " << cx - R2 << "; xhi = " << cx + R2 << "; ylo = "
-    << cy - R2 << "; yhi = " << cy + R2 << "\n";
+  g << "nframes = " << k << "\nrows = " << rows << "; cols = " << cols << "\n";
   ch::writeOut(o, "rec_frames.gp", g.str());
+  std::ostringstream sup;
+  for (const dt::Vertex& v : R.vertices())
+    if (v.id < 0) sup << v.x << " " << v.y << "\n";
+  ch::writeOut(o, "rec_super.dat", sup.str());
   std::ostringstream pts;
   for (std::size_t i = 0; i < p.size() / 2; ++i) pts << p[2 * i] << " " << p[2 * i + 1] << "\n";
   ch::writeOut(o, "rec_points.dat", pts.str());

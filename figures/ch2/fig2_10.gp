@@ -5,17 +5,16 @@
 # fig2_10_ball.dat, fig2_10_outer.dat (triangles), fig2_10_links_{new,outer}.dat (x y dx dy),
 # fig2_10_point.dat.
 load system("dirname '".ARG0."'")."/style.gp"
-set style arrow 1 head filled size screen 0.007,25 lw 2 lc rgb C_BALL_EDGE
-set style arrow 2 head filled size screen 0.007,25 lw 2 lc rgb C_NEIGH_EDGE
-set key outside bottom center horizontal maxrows 2 samplen 2 width 1
-set bmargin 5  # the same in both panels, so that both keys fit and the panels keep one size
 stats datadir."/fig2_10_after.dat" using 1:2 nooutput
 m = 0.04 * (STATS_max_x - STATS_min_x)
-set xrange [STATS_min_x - m:STATS_max_x + m]
-set yrange [STATS_min_y - m:STATS_max_y + m]
 do for [term in "png svg"] {
   eval fig_open(term, "fig2_10")
   set output (term eq "png" ? outdir."/fig2_10.png" : outdir."/fig2_10.svg")
+
+  set key outside bottom center horizontal maxrows 2 samplen 2 width 1
+  set bmargin 5  # the same in both panels, so that both keys fit and the panels keep one size
+  set xrange [STATS_min_x - m:STATS_max_x + m]
+  set yrange [STATS_min_y - m:STATS_max_y + m]
   eval layout(1, 2)
   eval panel(1, "the cavity of p")
   plot datadir."/fig2_10_cavity.dat" with filledcurves closed fc rgb C_CAVITY fs solid 1.0 title "cavity", \
@@ -26,8 +25,8 @@ do for [term in "png svg"] {
   plot datadir."/fig2_10_outer.dat" with filledcurves closed fc rgb C_NEIGH fs solid 1.0 title "neighbours", \
        datadir."/fig2_10_ball.dat" with filledcurves closed fc rgb C_BALL fs solid 1.0 title "ball", \
        datadir."/fig2_10_after.dat" with lines lw 1.2 lc rgb C_TRI notitle, \
-       datadir."/fig2_10_links_new.dat" using 1:2:3:4 with vectors arrowstyle 1 title "new - new", \
-       datadir."/fig2_10_links_outer.dat" using 1:2:3:4 with vectors arrowstyle 2 title "new - neighbour", \
+       datadir."/fig2_10_links_new.dat" using 1:2:3:4 with vectors head filled size screen 0.007,25 lw 2 lc rgb C_BALL_EDGE title "new - new", \
+       datadir."/fig2_10_links_outer.dat" using 1:2:3:4 with vectors head filled size screen 0.007,25 lw 2 lc rgb C_NEIGH_EDGE title "new - neighbour", \
        datadir."/fig2_10_point.dat" with points pt 7 ps (1.6*PS) lc rgb C_NEW notitle, \
        datadir."/fig2_10_point.dat" using 1:2:("p") with labels offset 0.9,0.9 tc rgb C_NEW notitle
   unset multiplot

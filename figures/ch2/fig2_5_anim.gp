@@ -8,20 +8,17 @@
 load system("dirname '".ARG0."'")."/style.gp"
 stats datadir."/fig2_5_anim_count.dat" using 1 nooutput
 nframes = int(STATS_max)
-stats datadir."/fig2_5_super.dat" using 1:2 nooutput
-m = 0.08 * (STATS_max_x - STATS_min_x)
-set xrange [STATS_min_x-m:STATS_max_x+m]
-set yrange [STATS_min_y-m:STATS_max_y+m]
-# The legend: colour boxes below the picture.
-set key outside bottom center horizontal samplen 1.5 width 1
-set tmargin 2.5
+load datadir."/fig2_5_view.gp"
+# The frame's settings, run after each frame's reset: the view laid out by the program (which
+# placed the labels in it), the legend below the picture.
+ANIM = VIEWA . "; set key at screen 0.5, screen 0.01 center bottom horizontal samplen 1.5 width 1"
 W = figw("fig2_5_anim"); H = figh("fig2_5_anim")
 # Pass 0 writes one PNG per frame; pass 1 writes the same frames into one animated GIF (the last
 # one three more times, so the finished triangulation stays on screen before the loop restarts).
 do for [pass=0:1] {
   if (pass == 1) {
     # libgd's fonts are in points at 96 dpi like pngcairo's.
-    eval sprintf("set terminal gif animate delay 90 loop 0 size %d,%d enhanced font 'DejaVuSans,%.1f' background rgb 'white'", W, H, fig_font("png", W))
+    eval sprintf("set terminal gif animate delay 90 loop 0 size %d,%d enhanced font 'DejaVuSans,%.1f' background rgb 'white' linewidth %.2f", W, H, fig_font("png", "fig2_5_anim"), fig_lw("fig2_5_anim"))
     set output outdir."/fig2_5_anim.gif"
   }
   do for [g=0:nframes-1+3*pass] {
@@ -29,8 +26,14 @@ do for [pass=0:1] {
   if (pass == 0) {
     eval fig_open("png", "fig2_5_anim")
     set output outdir.sprintf("/fig2_5_anim_%02d.png", f)
+  } else {
+    eval STYLE_RESET
   }
-  set title system(sprintf('sed -n %dp -- "${DT_DATADIR:-.}/fig2_5_anim_titles.dat"', f + 1))
+  eval ANIM
+  # The titles file: the PNG's title, a tab, the GIF's (libgd shows no 𝒞: words there).
+  tline = system(sprintf('sed -n %dp -- "${DT_DATADIR:-.}/fig2_5_anim_titles.dat"', f + 1))
+  tab = strstrt(tline, "\t")
+  set label 100 (pass == 0 ? tline[1:tab - 1] : tline[tab + 1:]) at screen 0.5, screen 1 - 1.0 * fig_em("fig2_5_anim") / H center front
   stem = datadir.sprintf("/fig2_5_anim_%02d", f)
   # Cavity frames are odd, ball frames even (frame 0: DT_0). Each colour is its own plot
   # element, filtered by the frame's parity: gnuplot's gif terminal keeps the first colour an
@@ -43,11 +46,11 @@ do for [pass=0:1] {
        stem."_tri.dat" with lines lw 1.5 lc rgb C_TRI notitle, \
        (f == 0 ? datadir."/fig2_5_super.dat" : stem."_fill.dat") using 1:(cav ? $2 : NaN) with lines lw 2.5 lc rgb C_CAVITY_EDGE notitle, \
        (f == 0 ? datadir."/fig2_5_super.dat" : stem."_fill.dat") using 1:(bal ? $2 : NaN) with lines lw 2.5 lc rgb C_BALL_EDGE notitle, \
-       datadir."/fig2_5_super.dat" using 1:2 with points pt 5 ps (1.2*PS) lc rgb C_SUPER notitle, \
-       datadir."/fig2_5_super.dat" using 16:17:3 with labels tc rgb C_SUPER notitle, \
-       datadir."/fig2_5_points.dat" using 1:2 with points pt 6 ps (1.2*PS) lc rgb "#808080" notitle, \
-       datadir."/fig2_5_points.dat" using 1:($0 < npoints ? $2 : NaN) with points pt 7 ps (1.2*PS) lc rgb C_POINT notitle, \
-       datadir."/fig2_5_points.dat" using 16:($0 < npoints ? $17 : NaN):3 with labels tc rgb C_TRI notitle, \
+       datadir."/fig2_5_super.dat" using 1:2 with points pt 5 ps (1.3*PS) lc rgb C_SUPER notitle, \
+       datadir."/fig2_5_super.dat" using 6:7:(pass == 0 ? strcol(3) : strcol(8)) with labels tc rgb C_SUPER notitle, \
+       datadir."/fig2_5_points.dat" using 1:2 with points pt 6 ps (1.3*PS) lc rgb "#808080" notitle, \
+       datadir."/fig2_5_points.dat" using 1:($0 < npoints ? $2 : NaN) with points pt 7 ps (1.3*PS) lc rgb C_POINT notitle, \
+       datadir."/fig2_5_points.dat" using 6:($0 < npoints ? $7 : NaN):(pass == 0 ? strcol(3) : strcol(8)) with labels tc rgb C_TRI notitle, \
        (f == 0 ? datadir."/fig2_5_super.dat" : stem."_p.dat") using 1:(f == 0 ? NaN : $2) with points pt 7 ps (1.8*PS) lc rgb C_NEW notitle, \
        NaN with boxes fs solid 1.0 fc rgb C_CAVITY title "cavity", \
        NaN with boxes fs solid 1.0 fc rgb C_BALL title "ball", \

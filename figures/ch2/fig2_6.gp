@@ -13,9 +13,8 @@ do for [term in "png svg"] {
   eval fig_open(term, "fig2_6")
   set output (term eq "png" ? outdir."/fig2_6.png" : outdir."/fig2_6.svg")
   eval layout(1, 2)
-  eval panel(1, "DT(S_0 ∪ S) and Ω(S)")
-  set xrange [ax0:ax1]
-  set yrange [ay0:ay1]
+  eval panel(1, "DT(".M."𝑆_0} ∪ ".M."𝑆}) and Ω(".M."𝑆})")
+  eval PA
   plot datadir."/fig2_6_hull.dat" with filledcurves closed fc rgb C_HULL fs solid 1.0, \
        datadir."/fig2_6_all.dat" with lines lw 1.2 lc rgb C_TRI, \
        datadir."/fig2_6_crossing.dat" with lines lw 3 lc rgb C_CONFLICT, \
@@ -23,9 +22,8 @@ do for [term in "png svg"] {
        datadir."/fig2_6_points.dat" with points pt 7 ps (0.8*PS) lc rgb C_POINT, \
        datadir."/fig2_6_super.dat" using 1:2 with points pt 5 ps (1.3*PS) lc rgb C_SUPER, \
        datadir."/fig2_6_super.dat" using 4:5:3 with labels tc rgb C_SUPER
-  eval panel(2, "DT(S) ⊄ DT(S_0 ∪ S)")
-  set xrange [bx0:bx1]
-  set yrange [by0:by1]
+  eval panel(2, "DT(".M."𝑆}) ⊄ DT(".M."𝑆_0} ∪ ".M."𝑆})")
+  eval PB
   plot datadir."/fig2_6_hull.dat" with filledcurves closed fc rgb C_UNCOVERED fs solid 1.0, \
        datadir."/fig2_6_kept.dat" with filledcurves closed fc rgb C_HULL fs solid 1.0, \
        datadir."/fig2_6_kept_edges.dat" with lines lw 1.5 lc rgb C_TRI, \

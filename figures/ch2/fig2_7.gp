@@ -5,16 +5,16 @@
 # Data (sec2_3_1_predicates): map_orient_naive_{abc,cba}.dat, err_orient_naive_{abc,cba}.dat
 # (n x n matrices, row j, column i).
 load system("dirname '".ARG0."'")."/style.gp"
-set border
-set tics
-set xrange [-0.5:255.5]
-set yrange [-0.5:255.5]
-set xtics 0,64,256 out nomirror
-set ytics 0,64,256 out nomirror
-set xlabel "i   (x_a = 1/2 + i 2^{-53})"
 do for [fig in "fig2_7 fig2_7_errors"] {
 do for [term in "png svg"] {
   eval fig_open(term, fig)
+  set border
+  set tics
+  set xrange [-0.5:255.5]
+  set yrange [-0.5:255.5]
+  set xtics 0,64,256 out nomirror
+  set ytics 0,64,256 out nomirror
+  set xlabel "i   (x_a = 1/2 + i 2^{-53})"
   if (fig eq "fig2_7") {
     set output (term eq "png" ? outdir."/fig2_7.png" : outdir."/fig2_7.svg")
   } else {

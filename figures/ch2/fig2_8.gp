@@ -4,13 +4,13 @@
 # (i = j, a on the line bc) is 0. Colour bar: -1 green, 0 yellow, +1 red.
 # Data (sec2_3_1_predicates): map_orient_robust_abc.dat.
 load system("dirname '".ARG0."'")."/style.gp"
-set border
-set tics
-set xlabel "i   (x_a = 1/2 + i 2^{-53})"
 Z0 = 111.5; Z1 = 143.5  # the zoom window
 do for [term in "png svg"] {
   eval fig_open(term, "fig2_8")
   set output (term eq "png" ? outdir."/fig2_8.png" : outdir."/fig2_8.svg")
+  set border
+  set tics
+  set xlabel "i   (x_a = 1/2 + i 2^{-53})"
   eval layout(1, 2)
   eval sign_bar
   unset colorbox

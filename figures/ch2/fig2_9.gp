@@ -4,11 +4,11 @@
 # fig2_9_title.txt (the mean and eq. (2.2)).
 load system("dirname '".ARG0."'")."/style.gp"
 title = system('cat -- "${DT_DATADIR:-.}/fig2_9_title.txt"')
-set offsets 0.15, 0.15, 0.15, 0.15
-set key outside bottom center horizontal samplen 1 width 2
 do for [term in "png svg"] {
   eval fig_open(term, "fig2_9")
   set output (term eq "png" ? outdir."/fig2_9.png" : outdir."/fig2_9.svg")
+  set offsets 0.15, 0.15, 0.15, 0.15
+  set key outside bottom center horizontal samplen 1 width 2
   set title title
   plot datadir."/fig2_9_tri.dat" with lines lw 1.5 lc rgb C_TRI notitle, \
        datadir."/fig2_9_vertices.dat" using 1:2:(0.085):($5 > 0 ? 0xf6d55c : 0xffffff) \

@@ -5,20 +5,21 @@ load system("dirname '".ARG0."'")."/style.gp"
 info = system('cat -- "${DT_DATADIR:-.}/fig_brio_rounds.info"')
 R = int(word(substr(info, strstrt(info, "=") + 1, strlen(info)), 1))
 sizes = system('sed -n 2p -- "${DT_DATADIR:-.}/fig_brio_rounds.info"')
-set border
-set tics out nomirror
-set xrange [0:1]
-set yrange [0:1]
-set xtics 0, 0.5, 1
-set ytics 0, 0.5, 1
 do for [term in "png svg"] {
   eval fig_open(term, "fig_brio_rounds")
   set output (term eq "png" ? outdir."/fig_brio_rounds.png" : outdir."/fig_brio_rounds.svg")
+  set border
+  set tics out nomirror
+  set xtics nomirror; set ytics nomirror
+  set xrange [0:1]
+  set yrange [0:1]
+  set xtics 0, 0.5, 1 nomirror
+  set ytics 0, 0.5, 1 nomirror
   eval layout(1, 3)
   do for [r = R-3:R-1] {
     eval panel(r - R + 4, sprintf("round %d of %d: %s points", r + 1, R, word(sizes, r + 1)))
     plot for [q = 0:r-1] datadir."/fig_brio_rounds.dat" index q using 1:2 with points pt 7 ps (0.2*PS) lc rgb "#a8a8a8", \
-         datadir."/fig_brio_rounds.dat" index r using 1:2 with linespoints lw 1 pt 7 ps (0.2*PS) lc rgb C_CONFLICT
+         datadir."/fig_brio_rounds.dat" index r using 1:2 with linespoints lw 1 pt 7 ps (0.25*PS) lc rgb word(C_SERIES, 1)
   }
   unset multiplot
 }

@@ -3,19 +3,19 @@
 # The two faces of the flip in the cavity's colour before and the ball's after, the four
 # adjacent faces in the neighbours' colour. Labels: each vertex's number of triangles.
 load system("dirname '".ARG0."'")."/style.gp"
-set xrange [-3.5:7]
-set yrange [-5:4.6]
 do for [t in "png svg"] {
   eval fig_open(t, "fig_flip")
   set output (t eq "png" ? outdir.'/fig_flip.png' : outdir.'/fig_flip.svg')
   eval layout(1, 2)
-  eval panel(1, "before: edge ab")
+  eval panel(1, "before: edge ".M."𝑎𝑏}")
   load datadir.'/flip_before.gp'
+  eval VIEW
   plot datadir.'/flip_before_tri.dat' with lines lc rgb C_TRI lw 1.2
   unset object; unset arrow
   unset label
-  eval panel(2, "after: edge cd (change)")
+  eval panel(2, "after: edge ".M."𝑐𝑑} (change)")
   load datadir.'/flip_after.gp'
+  eval VIEW
   plot datadir.'/flip_after_tri.dat' with lines lc rgb C_TRI lw 1.2
   unset object; unset label; unset arrow
   unset multiplot

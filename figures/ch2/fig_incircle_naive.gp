@@ -4,12 +4,12 @@
 # Exactly: inside (+1) below the diagonal, outside (-1) on and above it, 0 only at i = j = 0.
 # Data (sec2_3_1_predicates): map_incircle_naive_abcd.dat, map_incircle_naive_dcba.dat.
 load system("dirname '".ARG0."'")."/style.gp"
-set border
-set tics
-set xlabel "i   (x_d = 1/2 + i 2^{-53})"
 do for [term in "png svg"] {
   eval fig_open(term, "fig_incircle_naive")
   set output (term eq "png" ? outdir."/fig_incircle_naive.png" : outdir."/fig_incircle_naive.svg")
+  set border
+  set tics
+  set xlabel "i   (x_d = 1/2 + i 2^{-53})"
   eval layout(1, 2)
   eval sign_bar
   unset colorbox

@@ -4,13 +4,13 @@
 # Exactly: inside (+1) below the diagonal, outside (-1) on and above it, 0 only at i = j = 0.
 # Data (sec2_3_1_predicates): map_incircle_robust_abcd.dat.
 load system("dirname '".ARG0."'")."/style.gp"
-set border
-set tics
-set xlabel "i   (x_d = 1/2 + i 2^{-53})"
 Z1 = 15.5  # the zoom window: 0 <= i, j < 16
 do for [term in "png svg"] {
   eval fig_open(term, "fig_incircle_robust")
   set output (term eq "png" ? outdir."/fig_incircle_robust.png" : outdir."/fig_incircle_robust.svg")
+  set border
+  set tics
+  set xlabel "i   (x_d = 1/2 + i 2^{-53})"
   eval layout(1, 2)
   eval sign_bar
   unset colorbox

@@ -1,23 +1,24 @@
 # The optimisation ladder (opt_ladder): time of each step, from the corrected listings to the
 # fast kernel, on the same points. Reads ladder.dat from datadir; writes fig_ladder_time.{png,svg}.
 load system("dirname '".ARG0."'")."/style.gp"
-set size noratio
-set border 3
-set tics out nomirror
-set style data histograms
-set style fill solid 0.85 border -1
-set boxwidth 0.7
-set ylabel "CPU time (s), sorting included"
-set xlabel "step (each adds one change to the previous one)"
-set yrange [0:*]
-set offsets 0, 0, graph 0.18, 0
-set grid ytics lc rgb "#d8d8d8"
-set xtics rotate by -30 left nomirror
-set ytics nomirror
-set rmargin 6
 do for [t in "png svg"] {
   eval fig_open(t, "fig_ladder_time")
   set output (t eq "png" ? outdir.'/fig_ladder_time.png' : outdir.'/fig_ladder_time.svg')
+  set size noratio
+  set border 3
+  set tics out nomirror
+  set xtics nomirror; set ytics nomirror
+  set style data histograms
+  set style fill solid 0.85 border -1
+  set boxwidth 0.7
+  set ylabel "CPU time (s), sorting included"
+  set xlabel "step (each adds one change to the previous one)"
+  set yrange [0:*]
+  set offsets 0, 0, graph 0.18, 0
+  set grid ytics lc rgb "#d8d8d8" lw 1
+  set xtics rotate by -30 left nomirror
+  set ytics nomirror
+  set rmargin 6
   plot datadir.'/ladder.dat' using 3:xtic(2) linecolor rgb word(C_SERIES, 1), \
        '' using 0:3:(sprintf("%.2f s\n×%.1f", $3, $4)) with labels offset 0,1.6
 }

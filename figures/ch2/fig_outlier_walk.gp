@@ -4,18 +4,19 @@
 # (n order nsearch ncavity t).
 load system("dirname '".ARG0."'")."/style.gp"
 f = datadir."/fig_outlier_walk.dat"
-set size noratio
-set border
-set tics out nomirror
-set logscale xy
-set format x "10^{%T}"
-set grid lc rgb "#d8d8d8"
-set xlabel "n (uniform in the unit square + one outlier)"
 stats f using 1 nooutput
-set xrange [STATS_min / 1.5:STATS_max * 1.5]
 do for [term in "png svg"] {
   eval fig_open(term, "fig_outlier_walk")
   set output (term eq "png" ? outdir."/fig_outlier_walk.png" : outdir."/fig_outlier_walk.svg")
+  set size noratio
+  set border
+  set tics out nomirror
+  set xtics nomirror; set ytics nomirror
+  set logscale xy
+  set format x "10^{%T}"
+  set grid lc rgb "#d8d8d8" lw 1
+  set xlabel "n (uniform in the unit square + one outlier)"
+  set xrange [STATS_min / 1.5:STATS_max * 1.5]
   eval layout(1, 2)
   eval panel(1, "N_{search}: mean walk length")
   set key inside top left Left reverse samplen 2 spacing 1.1

@@ -1,20 +1,21 @@
 # Table 2.1 as a graph: N_search (faces visited by lineSearch per insertion) against n, this
 # library and the notes, with the sqrt(n) slope through our first point (table2_1_sqrt.dat).
 load system("dirname '".ARG0."'")."/style.gp"
-set size noratio
-set border
-set tics out nomirror
-set logscale xy
-set xlabel "n (random points, random order)"
-set ylabel "N_{search}"
-set key top left
-set grid lc rgb "#d8d8d8"
-set xrange [500:2e6]
-set format x "10^{%T}"
-set yrange [10:1000]
 do for [term in "png svg"] {
   eval fig_open(term, "fig_table2_1_search")
   set output (term eq "png" ? outdir."/fig_table2_1_search.png" : outdir."/fig_table2_1_search.svg")
+  set size noratio
+  set border
+  set tics out nomirror
+  set xtics nomirror; set ytics nomirror
+  set logscale xy
+  set xlabel "n (random points, random order)"
+  set ylabel "N_{search}"
+  set key top left
+  set grid lc rgb "#d8d8d8" lw 1
+  set xrange [500:2e6]
+  set format x "10^{%T}"
+  set yrange [10:1000]
   plot datadir."/table2_1.dat" using 1:2 with linespoints pt 7 ps (1.3*PS) lw 2 lc rgb word(C_SERIES, 1) title "this library", \
        datadir."/table2_1.dat" using 1:5 with linespoints pt 6 ps (1.3*PS) lw 2 dt 2 lc rgb word(C_SERIES, 2) title "notes' Table 2.1", \
        datadir."/table2_1_sqrt.dat" using 1:2 with lines lw 1.5 lc rgb C_CONSTRUCT title "slope 1/2 (N ∝ n^{1/2})"

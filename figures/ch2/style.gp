@@ -16,57 +16,72 @@ if (!exists("outdir")) outdir = "."
 set encoding utf8
 
 # ---- sizes (name width height) -----------------------------------------------------------
-FIGSIZES = " fig2_1 1400 780" . \
-           " fig2_2 800 840" . \
+FIGSIZES = " fig2_1 1400 640" . \
+           " fig2_2 1200 1200" . \
            " fig2_3 1400 800" . \
-           " fig2_4 800 840" . \
+           " fig2_4 1200 1000" . \
            " fig2_5 1500 1080" . \
-           " fig2_5_anim 760 800" . \
+           " fig2_5_anim 1200 1260" . \
            " fig2_6 1400 780" . \
            " fig2_7 1400 800" . \
            " fig2_7_errors 1500 800" . \
            " fig2_8 1400 800" . \
-           " fig2_9 900 800" . \
+           " fig2_9 1200 1100" . \
            " fig2_10 1400 780" . \
-           " fig2_11 1400 800" . \
+           " fig2_11 1400 740" . \
            " fig2_12 1400 780" . \
            " fig_brio_compare 1500 900" . \
-           " fig_brio_rounds 1500 640" . \
+           " fig_brio_rounds 1500 520" . \
            " fig_flip 1400 760" . \
            " fig_incircle_naive 1400 800" . \
            " fig_incircle_robust 1400 800" . \
-           " fig_ladder_time 1000 700" . \
+           " fig_ladder_time 1200 900" . \
            " fig_outlier_walk 1400 640" . \
-           " fig_time_per_point 1000 600" . \
+           " fig_time_per_point 1200 860" . \
            " fig_outside_hull 1200 1200" . \
-           " fig_parabola_cavity 900 640" . \
+           " fig_parabola_cavity 1200 860" . \
            " fig_recovery_frames 1500 1100" . \
-           " fig_table2_1_search 900 640 "
+           " fig_table2_1_search 1200 860 "
+
+# Figures printed at about 8 cm (one panel); the others are printed at 15 cm.
+FIG8CM = " fig2_2 fig2_4 fig2_5_anim fig2_9 fig_ladder_time fig_parabola_cavity fig_table2_1_search fig_time_per_point "
 
 fig_known(n) = strstrt(FIGSIZES, " ".n." ") > 0
 fig_word(n, k) = int(word(FIGSIZES, words(substr(FIGSIZES, 1, strstrt(FIGSIZES, " ".n." "))) + k))
 # A chapter program's --size WxH sets fig_size_w, fig_size_h: they win over the table.
 figw(n) = exists("fig_size_w") ? int(fig_size_w) : fig_word(n, 2)
 figh(n) = exists("fig_size_h") ? int(fig_size_h) : fig_word(n, 3)
-# The font size in the terminal's own unit for a figure of width w (see the header).
-fig_font(t, w) = (t eq "svg" ? w / 50.0 : w / 66.6)
+fig_narrow(n) = strstrt(FIG8CM, " ".n." ") > 0
+# The text em in pixels: 8.5 pt printed at 15 cm (425 pt: W/50) and 8.1 pt at 8 cm (227 pt: W/28).
+fig_em(n) = figw(n) / (fig_narrow(n) ? 28.0 : 50.0)
+# The font size in the terminal's own unit: svg 1 pt = 1 px, pngcairo 1 pt = 4/3 px (96 dpi).
+fig_font(t, n) = (t eq "svg" ? fig_em(n) : 0.75 * fig_em(n))
 
-# Points: scripts write "ps (1.5*PS)". PS makes a point of size 1 a disc of radius W/233 px
+# Points: scripts write "ps (1.5*PS)". PS makes a point of size 1 a disc of radius 0.2146 em
 # (0.65 mm at 15 cm) on both terminals: pngcairo draws size 1 with a radius of 3.15 px whatever
 # the font, the svg terminal with a radius of 0.375 x its font size.
-fig_points(t, w) = (t eq "svg" ? (w / 233.0) / (0.375 * fig_font("svg", w)) : (w / 233.0) / 3.15)
+fig_points(t, n) = (t eq "svg" ? 0.2146 / 0.375 : 0.2146 * fig_em(n) / 3.15)
+# Line width 1 is em/18 px (1.6 px at 1400 px wide, 15 cm), and never under 1.5 px.
+fig_lw(n) = (fig_em(n) / 18.0 > 1.5 ? fig_em(n) / 18.0 : 1.5)
 
-# The command that opens figure `n` on terminal `t` ("png" or "svg"): white background, the
-# style's size and font. The script then sets the output with the file name written out,
+# The command that opens figure `n` on terminal `t` ("png" or "svg"): a clean state
+# (STYLE_RESET), white background, the style's size and font. The script then sets the output
+# with the file name written out,
 #   set output (term eq "png" ? outdir."/n.png" : outdir."/n.svg")
-# so that chapters/common.h (gnuplotOutputs) knows which files it promises. It sets FS (the font size) for scripts that
-# need a label font relative to the text, e.g. font sprintf(",%g", 1.2 * FS), and FW, FH (the
-# size in pixels).
+# so that chapters/common.h (gnuplotOutputs) knows which files it promises, and then its own
+# settings. It sets FS (the font size) for scripts that need a label font relative to the
+# text, e.g. font sprintf(",%g", 1.2 * FS), EM (the em in px) and FW, FH (the size in pixels).
 fig_open(t, n) = (fig_known(n) ? "" : "print 'style.gp: figure ".n." has no size in FIGSIZES'; exit status 1;") . \
+  STYLE_RESET . \
   sprintf("set terminal %s size %d,%d enhanced font 'Sans,%.1f' background rgb 'white' linewidth %.2f; ", \
-          (t eq "svg" ? "svg" : "pngcairo"), figw(n), figh(n), fig_font(t, figw(n)), figw(n) / 1000.0) . \
-  sprintf("PS = %.3f; ", fig_points(t, figw(n))) . \
-  sprintf("FS = %.1f; FW = %d; FH = %d", fig_font(t, figw(n)), figw(n), figh(n))
+          (t eq "svg" ? "svg" : "pngcairo"), figw(n), figh(n), fig_font(t, n), fig_lw(n)) . \
+  sprintf("PS = %.3f; ", fig_points(t, n)) . \
+  sprintf("FS = %.1f; EM = %.2f; FW = %d; FH = %d", fig_font(t, n), fig_em(n), figw(n), figh(n))
+
+# The notes' notation: M."𝑝_{𝑛+1}}" sets a formula in the math font (fonts-dejavu-extra), which
+# has the Unicode mathematical italics (𝑝, 𝑛), script capitals (𝒞, ℬ), σ and Σ. The chapter
+# programs write their labels the same way (ch::mathText in chapters/figure_data.h).
+M = "{/'DejaVu Math TeX Gyre' "
 
 # ---- colours: one meaning each, in every figure -------------------------------------------
 C_TRI = "#3c3c3c"            # edges of the triangulation
@@ -84,6 +99,9 @@ C_HULL = "#dde6f0"           # a convex hull or polygon, shaded as background
 C_CIRCLE = "#1a3f8f"         # circumcircles (dashed)
 C_SUPER = "#7b3294"          # super-vertices p_{-1}, p_{-2}, ...
 C_CONSTRUCT = "#8c8c8c"      # construction lines (dotted)
+C_KERNEL = "#fde49c"         # fill of a kernel ker(Σ) (Figure 2.2)
+C_KERNEL_EDGE = "#9a7400"    # its boundary
+C_SIGHT = "#5a5a5a"          # sight lines from a kernel point (thin, solid)
 # Sign maps (the notes' colours, 2.3.1): -1 green, 0 yellow, +1 red.
 C_MINUS = "#1a9641"
 C_ZERO = "#ffd700"
@@ -93,11 +111,12 @@ C_SERIES = "#1f77b4 #d62728 #2ca02c #9467bd #ff7f0e #8c564b"
 
 # ---- geometry panels: equal aspect, no axes ------------------------------------------------
 # (charts undo this with  set border; set tics; set size noratio)
-set size ratio -1
-unset key
-unset border
-unset tics
-set style textbox transparent noborder
+# Every terminal pass starts from this clean state: fig_open runs it first, so that no setting
+# of one pass (a legend panel's ranges, unset tics, ...) leaks into the next one. A script sets
+# its own options after fig_open, inside the pass.
+STYLE_RESET = "reset; set encoding utf8; set size ratio -1; unset key; unset border; unset tics; " . \
+  "set style textbox transparent noborder; NROWS = 1; NCOLS = 1; "
+eval STYLE_RESET
 
 # Labels: no box over the geometry; a label sits beside its object, offset by about one
 # character (offset 0.8,0.8 and the like), on the side away from the edges.
@@ -106,7 +125,7 @@ set style textbox transparent noborder
 # aspect of each panel:   eval layout(rows, cols)  ...  eval panel(k, "words")  plot ...
 NROWS = 1; NCOLS = 1
 layout(r, c) = sprintf("NROWS = %d; NCOLS = %d; set multiplot layout %d,%d; set tmargin 2.5", r, c, r, c)
-panel(k, text) = sprintf("unset title; set label 100 \"(%s) %s\" at screen %.4f, %.4f center front",   word("a b c d e f g h i j k l", k), text, ((k - 1) % NCOLS + 0.5) / NCOLS, 1 - (int((k - 1) / NCOLS) + 0.0) / NROWS - FW / (50.0 * FH))
+panel(k, text) = sprintf("unset title; set label 100 \"(%s) %s\" at screen %.4f, %.4f center front",   word("a b c d e f g h i j k l", k), text, ((k - 1) % NCOLS + 0.5) / NCOLS, 1 - (int((k - 1) / NCOLS) + 0.0) / NROWS - 1.0 * EM / FH)
 
 # A sign map's colour bar: three boxes with the ticks -1, 0, +1 at their centres.
 sign_bar = "set palette defined (-1.5 '".C_MINUS."', -0.5 '".C_MINUS."', -0.5 '".C_ZERO."', 0.5 '".C_ZERO."', 0.5 '".C_PLUS."', 1.5 '".C_PLUS."'); set cbrange [-1.5:1.5]; set cbtics ('-1' -1, '0' 0, '+1' 1) scale 0; set colorbox"
