@@ -358,8 +358,8 @@ std::string linkText(const std::string& path) {
 // Runs a shell script (written to DIR/NAME.sh) with sh; returns its exit status.
 int runScript(const std::string& dir, const std::string& name, const std::string& script) {
   dttest::writeText(dir + "/" + name + ".sh", script + "\n");
-  const int rc = std::system(("sh '" + dir + "/" + name + ".sh'").c_str());
-  return WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
+  const int rc = ch::runProgram({"sh", dir + "/" + name + ".sh"});
+  return rc >= 0 && rc < 128 ? rc : -1;
 }
 
 std::string cli() { return std::string("'") + DT_CLI + "'"; }
@@ -398,7 +398,7 @@ Reference reference(const std::string& d) {
 TEST_CASE("cli an output that is a symlink is written to the file it points to and stays a link") {
   const std::string d = freshDir("symlink");
   const Reference ref = reference(d);
-  std::system(("mkdir -p '" + d + "/real'").c_str());
+  std::filesystem::create_directories(d + "/real");
   dttest::writeText(d + "/real/target.svg", "OLD SVG\n");
   ::chmod((d + "/real/target.svg").c_str(), 0640);
   REQUIRE(::symlink("real/target.svg", (d + "/link.svg").c_str()) == 0);
@@ -509,7 +509,7 @@ TEST_CASE("cli character devices are written into and stay devices") {
 TEST_CASE("cli a directory or a socket or a block device output is refused with exit 2 and nothing written") {
   const std::string d = freshDir("refused"), in = d + "/in.xy", q = "'" + in + "' -o '" + d + "/o'";
   dttest::writeText(in, kSquare);
-  std::system(("mkdir -p '" + d + "/adir'").c_str());
+  std::filesystem::create_directories(d + "/adir");
   REQUIRE(::symlink("adir", (d + "/dirlink").c_str()) == 0);
   const int sock = ::socket(AF_UNIX, SOCK_STREAM, 0);
   REQUIRE(sock >= 0);

@@ -109,7 +109,9 @@ TEST_CASE("exercises release check hint and watch end to end in a temporary dire
 TEST_CASE("exercises a handout is self-contained and stops on a missing figure") {
   const std::string out = dttest::tmpPath("handout_" + std::to_string(::getpid()));
   const std::string figs = out + "_figures";
-  REQUIRE(std::system(("rm -rf '" + out + "' '" + figs + "' && mkdir -p '" + figs + "'").c_str()) == 0);
+  std::filesystem::remove_all(out);
+  std::filesystem::remove_all(figs);
+  std::filesystem::create_directories(figs);
   // No figure: the handout stops and says how to make it; nothing is written.
   const Run missing = exercise("handout 2.3.4 '" + out + "'", "DT_HANDOUT_FIGURES='" + figs + "'");
   CHECK(missing.status == 2);
@@ -138,5 +140,6 @@ TEST_CASE("exercises a handout is self-contained and stops on a missing figure")
   CHECK_FALSE(contains(sheet, "not built yet"));
   CHECK_FALSE(contains(sheet, "if (s.forward == t.forward)"));  // no solution on the sheet
   CHECK(contains(dttest::readText(out + "/solutions_2.3.4.md"), "if (s.forward == t.forward)"));
-  std::system(("rm -rf '" + out + "' '" + figs + "'").c_str());
+  std::filesystem::remove_all(out);
+  std::filesystem::remove_all(figs);
 }
