@@ -13,14 +13,18 @@ struct Run {
   std::string out;
 };
 
-// Runs scripts/exercise.sh with `args` (already quoted), stdout and stderr together.
-Run exercise(const std::string& args, const std::string& env = "") {
+// Runs scripts/exercise.sh with `args` (each one argument, never read by a shell) and the
+// environment variables `env`; stdout and stderr together.
+Run exercise(const std::vector<std::string>& args,
+             const std::vector<std::pair<std::string, std::string>>& env = {}) {
   const std::string log = dttest::tmpPath("exercise_" + std::to_string(::getpid()) + ".log");
-  ch::ProcessIo io;  // the script's path reaches sh through the environment, never as code
+  ch::ProcessIo io;
   io.stdoutPath = log;
   io.stderrPath = "&1";
-  io.env = {{"DT_EXERCISE_SH", std::string(DT_SOURCE_DIR) + "/scripts/exercise.sh"}};
-  const int rc = ch::runProgram({"sh", "-c", env + " bash \"$DT_EXERCISE_SH\" " + args}, io);
+  io.env = env;
+  std::vector<std::string> argv = {"bash", std::string(DT_SOURCE_DIR) + "/scripts/exercise.sh"};
+  argv.insert(argv.end(), args.begin(), args.end());
+  const int rc = ch::runProgram(argv, io);
   Run r;
   r.status = rc >= 0 && rc < 128 ? rc : -1;
   r.out = dttest::readText(log);
@@ -40,11 +44,11 @@ bool contains(const std::string& s, const std::string& part) {
 }  // namespace
 
 TEST_CASE("exercises the list agrees with the test names the pages and the solutions page") {
-  const Run r = exercise("lint '" + buildDir() + "'");
+  const Run r = exercise({"lint", buildDir()});
   INFO(r.out);
   CHECK(r.status == 0);
   CHECK(contains(r.out, "26 exercises consistent"));
-  const Run l = exercise("list");
+  const Run l = exercise({"list"});
   CHECK(l.status == 0);
   CHECK(contains(l.out, "2.3.5-4   prove      sec2_3_5"));
 }
@@ -52,7 +56,7 @@ TEST_CASE("exercises the list agrees with the test names the pages and the solut
 TEST_CASE("exercises every implement exercise fails on its stub and passes with its solution restored") {
   // Fast path: only the files holding the solution are recompiled, then linked before this
   // build's library (scripts/exercise.sh selftest).
-  const Run r = exercise("selftest '" + buildDir() + "'");
+  const Run r = exercise({"selftest", buildDir()});
   INFO(r.out);
   CHECK(r.status == 0);
   CHECK_FALSE(contains(r.out, "FAIL"));
@@ -67,7 +71,7 @@ TEST_CASE("exercises release check hint and watch end to end in a temporary dire
   const std::string dir = (std::filesystem::temp_directory_path() /
                            ("dt_exercise_e2e_" + std::to_string(::getpid()))).string();
   std::filesystem::remove_all(dir);
-  const Run s = exercise("release 2.3.2-1 '" + dir + "'");
+  const Run s = exercise({"release", "2.3.2-1", dir});
   INFO(s.out);
   REQUIRE(s.status == 0);
   const std::string stats = dttest::readText(dir + "/code/stats.cpp");
@@ -83,23 +87,23 @@ TEST_CASE("exercises release check hint and watch end to end in a temporary dire
   CHECK(contains(dttest::readText(dir + "/book/sec2_3_2.md"), "<!-- EXERCISE 2.3.2-1 -->"));
 
   // No exercise named: the workspace's own (.exercise).
-  const Run fail = exercise("check '" + dir + "'");
+  const Run fail = exercise({"check", dir});
   INFO(fail.out);
   CHECK(fail.status == 1);
   CHECK(contains(fail.out, "FAIL 2.3.2-1"));
   CHECK(contains(fail.out, "exercise 2.3.2-1: not implemented yet"));
   CHECK(contains(fail.out, "hint: gridCounts(nx, ny) must return"));
 
-  const Run h1 = exercise("hint '" + dir + "'");
+  const Run h1 = exercise({"hint", dir});
   CHECK(contains(h1.out, "hint 1 of 2 for 2.3.2-1: which vertices of a grid are on the hull?"));
-  const Run h2 = exercise("hint '" + dir + "'");
+  const Run h2 = exercise({"hint", dir});
   CHECK(contains(h2.out, "hint 2 of 2 for 2.3.2-1: gridCounts(nx, ny) must return"));
-  const Run h3 = exercise("hint '" + dir + "'");
+  const Run h3 = exercise({"hint", dir});
   CHECK(contains(h3.out, "no more hints for 2.3.2-1"));
 
   dttest::writeText(dir + "/code/stats.cpp",
                     dttest::readText(std::string(DT_SOURCE_DIR) + "/code/stats.cpp"));
-  const Run pass = exercise(std::string("watch") + " '" + dir + "'", "DT_WATCH_ROUNDS=1");
+  const Run pass = exercise({"watch", dir}, {{"DT_WATCH_ROUNDS", "1"}});
   INFO(pass.out);
   CHECK(pass.status == 0);
   CHECK(contains(pass.out, "PASS 2.3.2-1"));
@@ -113,14 +117,14 @@ TEST_CASE("exercises a handout is self-contained and stops on a missing figure")
   std::filesystem::remove_all(figs);
   std::filesystem::create_directories(figs);
   // No figure: the handout stops and says how to make it; nothing is written.
-  const Run missing = exercise("handout 2.3.4 '" + out + "'", "DT_HANDOUT_FIGURES='" + figs + "'");
+  const Run missing = exercise({"handout", "2.3.4", out}, {{"DT_HANDOUT_FIGURES", figs}});
   CHECK(missing.status == 2);
   CHECK(contains(missing.out, "fig_parabola_cavity.png of exercise 2.3.4-3 is missing"));
   CHECK(contains(missing.out, "cmake --build build --target sec2_3_4_algorithms"));
   CHECK_FALSE(dttest::fileExists(out + "/exercises_2.3.4.md"));
 
   dttest::writeText(figs + "/fig_parabola_cavity.png", "placeholder");
-  const Run r = exercise("handout 2.3.4 '" + out + "'", "DT_HANDOUT_FIGURES='" + figs + "'");
+  const Run r = exercise({"handout", "2.3.4", out}, {{"DT_HANDOUT_FIGURES", figs}});
   INFO(r.out);
   REQUIRE(r.status == 0);
   const std::string sheet = dttest::readText(out + "/exercises_2.3.4.md");
