@@ -155,14 +155,17 @@ TEST_CASE("fast kernel refuses inputs without a triangulation") {
 TEST_CASE("fast kernel filters send exactly the degenerate tests to the exact stages") {
   // Random points: no test needs more than the filter.
   const dt::FastResult u = fastChecked(dttest::uniformPoints(5000, 17));
-  CHECK(u.stats.exactIncircle == 0);
-  CHECK(u.stats.exactOrient == 0);
+  CHECK(u.stats.incircle[dt::pred::kExact] == 0);
+  CHECK(u.stats.orient[dt::pred::kExact] == 0);
+  CHECK(u.stats.incircle.beyondFilter() == 0);  // the filter decides every test
+  CHECK(u.stats.incircle.calls() > 5000);
   // A grid: its cocircular squares and collinear rows defeat the filter, and the small-integer
   // stage decides them all exactly (no GMP call), on unit and on scaled grids alike.
   for (double step : {1.0, 0x1p-40, 0x1p+150}) {
     const dt::FastResult g = fastChecked(dttest::gridPoints(50, 50, step));
-    CHECK(g.stats.exactIncircle == 0);
-    CHECK(g.stats.exactOrient == 0);
+    CHECK(g.stats.incircle[dt::pred::kExact] == 0);
+    CHECK(g.stats.orient[dt::pred::kExact] == 0);
+    CHECK(g.stats.incircle[dt::pred::kSmallInt] > 0);
     CHECK(g.tri.size() == 2 * 49 * 49);
   }
   // The same with the library's out-of-line predicates (the ladder's first rungs): one core, so
@@ -171,16 +174,20 @@ TEST_CASE("fast kernel filters send exactly the degenerate tests to the exact st
   called.ladderCallPredicates = true;
   dt::predicateCounters().reset();
   const dt::FastResult gc = fastChecked(dttest::gridPoints(50, 50, 1.0), called);
-  CHECK(dt::predicateCounters().incircleExact > 0);
-  CHECK(dt::predicateCounters().incircleSmallInt == dt::predicateCounters().incircleExact);
-  CHECK(gc.stats.exactIncircle == 0);
-  CHECK(gc.stats.exactOrient == 0);
+  CHECK(dt::predicateCounters().incircle.beyondFilter() > 0);
+  CHECK(dt::predicateCounters().incircle[dt::pred::kSmallInt] ==
+        dt::predicateCounters().incircle.beyondFilter());
+  CHECK(gc.stats.incircle[dt::pred::kExact] == 0);
+  CHECK(gc.stats.orient[dt::pred::kExact] == 0);
+  // One record: the run copies the library's counts of its calls, stage by stage.
+  for (int s = 0; s < dt::pred::kStageCount; ++s)
+    CHECK(gc.stats.incircle[s] == dt::predicateCounters().incircle[s]);
   // A grid of step 0.1 (not a power of two: rounded coordinates) still ends in GMP sometimes,
   // and nearly cocircular points on a circle do.
   const dt::FastResult d = fastChecked(dttest::gridPoints(40, 40, 0.1));
   CHECK(d.tri.size() == 2 * 39 * 39);
   const dt::FastResult c = fastChecked(dttest::circlePoints(2000));
-  CHECK(c.stats.exactIncircle > 0);
+  CHECK(c.stats.incircle[dt::pred::kExact] > 0);
   // The mean cavity of 5000 random points (ghost triangles and BRIO rounds included), measured
   // over seeds 10-19: 4.015 to 4.080. The bounds are that spread doubled around its middle.
   CHECK(double(u.stats.cavityFaces) / double(u.stats.insertions) == doctest::Approx(4.05).epsilon(0.02));

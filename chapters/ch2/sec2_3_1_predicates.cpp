@@ -587,10 +587,10 @@ void benchmark(const ch::Options& o) {
     auto pct = [](std::uint64_t a, std::uint64_t b) {
       return b ? ch::fmt("%.3f%%", 100.0 * double(a) / double(b)) : std::string("-");
     };
-    s.add({what, std::to_string(xy.size() / 2), std::to_string(c.orient),
-           std::to_string(c.orientExact), pct(c.orientExact, c.orient),
-           std::to_string(c.incircle), std::to_string(c.incircleExact),
-           pct(c.incircleExact, c.incircle), ch::fmt("%.2f", sec)});
+    s.add({what, std::to_string(xy.size() / 2), std::to_string(c.orient.calls()),
+           std::to_string(c.orient.beyondFilter()), pct(c.orient.beyondFilter(), c.orient.calls()),
+           std::to_string(c.incircle.calls()), std::to_string(c.incircle.beyondFilter()),
+           pct(c.incircle.beyondFilter(), c.incircle.calls()), ch::fmt("%.2f", sec)});
     std::cout << "  triangulated " << what << " (" << xy.size() / 2 << " points) in "
               << ch::fmt("%.2f", sec) << " s, checked exactly\n";
   };
