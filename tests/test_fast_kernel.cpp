@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "delaunay.h"
 #include "fast_delaunay.h"
 #include "hilbert.h"
 #include "predicates.h"
@@ -14,7 +15,7 @@
 
 namespace {
 
-using Tris = std::vector<std::array<int, 3>>;
+using Tris = std::vector<dt::Tri>;
 
 // Each triangle rotated to start at its smallest vertex, the list sorted: two triangulations
 // are the same iff their canonical forms are equal.
@@ -242,4 +243,65 @@ TEST_CASE("fast kernel handles a cavity of hundreds of triangles (the centre of 
   const dt::FastResult r = fastChecked(p, o);
   CHECK(r.tri.size() == 400);  // the fan around the centre
   CHECK(r.stats.cavityFaces >= 398);
+}
+
+TEST_CASE("fast kernel the ladder's out-of-line predicates record the same calls as the inlined ones stage by stage") {
+  // One core: the ladder's first rung only moves the predicates out of line, so the run makes the
+  // same tests in the same order, and its record (copied from the library's counters) must equal
+  // the inlined run's own, stage by stage, on points that reach the exact stages.
+  const dttest::XY p = dttest::gridPoints(30, 30, 0.1);
+  const dt::FastResult in = fastChecked(p);
+  dt::FastOptions called;
+  called.ladderCallPredicates = true;
+  const dt::FastResult out = fastChecked(p, called);
+  CHECK(in.stats.incircle.beyondFilter() > 0);
+  for (int s = 0; s < dt::pred::kStageCount; ++s) {
+    CAPTURE(dt::pred::kStageNames[s]);
+    CHECK(out.stats.orient[s] == in.stats.orient[s]);
+    CHECK(out.stats.incircle[s] == in.stats.incircle[s]);
+  }
+}
+
+TEST_CASE("fast kernel dt::triangulate gives the same DT(S) with every kernel and method and order") {
+  dttest::XY p = dttest::uniformPoints(2000, 5);
+  p.insert(p.end(), {p[20], p[21], p[6], p[7]});  // two duplicates: points 2000 and 2001
+  const Tris ref = canonical(listings(std::vector<double>(p.begin(), p.end() - 4)));
+  for (dt::KernelChoice k : {dt::KernelChoice::Fast, dt::KernelChoice::Listings})
+    for (dt::BuildMethod m : {dt::BuildMethod::Hull, dt::BuildMethod::Super})
+      for (const char* order : {"brio", "hilbert", "input"}) {
+        CAPTURE(int(k));
+        CAPTURE(int(m));
+        CAPTURE(order);
+        dt::TriangulateOptions o;
+        o.kernel = k;
+        o.method = m;
+        o.order = dt::orderNamed(order);
+        const dt::TriangulateResult r = dt::triangulate(p, o);
+        CHECK(r.checked);
+        Tris t = r.tri;  // in the input's numbering
+        for (auto& f : t)
+          for (int& v : f) v = r.input[std::size_t(v)];
+        CHECK(canonical(t) == ref);
+        CHECK(r.duplicates == std::vector<std::pair<int, int>>{{2000, 10}, {2001, 3}});
+        CHECK(r.insertions == 2000);
+      }
+  CHECK_THROWS_AS(dt::orderNamed("random"), std::invalid_argument);
+}
+
+TEST_CASE("fast kernel --order brio means the same BRIO rounds for the fast kernel and the listings") {
+  // One meaning per order name: both kernels insert in brioCoinOrder, so on the same points the
+  // listings' walk visits the points in the fast kernel's insertion order (r.input, the order of
+  // the fast kernel's points) and the listings' vertex order follows it.
+  const dttest::XY p = dttest::uniformPoints(3000, 8);
+  std::vector<std::size_t> coin = dt::brioCoinOrder(p, dt::FastOptions{}.seed, dt::FastOptions{}.rounds);
+  dt::TriangulateOptions o;
+  o.check = false;
+  const dt::TriangulateResult fast = dt::triangulate(p, o);
+  CHECK(std::equal(coin.begin(), coin.end(), fast.input.begin(), fast.input.end(),
+                   [](std::size_t a, int b) { return a == std::size_t(b); }));
+  // The listings record their insertion statistics on the same order: the same cavities, so the
+  // same sum of cavity sizes (the walks differ: Listing 2.6 is another walk).
+  o.kernel = dt::KernelChoice::Listings;
+  const dt::TriangulateResult lst = dt::triangulate(p, o);
+  CHECK(lst.cavityFaces == fast.cavityFaces);
 }
