@@ -63,6 +63,12 @@ struct CalledPredicates {
   }
 };
 
+/// Asks the kernel to back [p, p + bytes) with 2 MB pages where it can (transparent huge pages
+/// in "madvise" mode, Debian's default): the arrays of 10^6 points span tens of MB, and with
+/// 4 KB pages their first touch costs one page fault per 4 KB (a quarter of the sequential
+/// kernel's time in a profile at 10^6). A hint only: nothing changes where it is refused.
+void adviseHugePages(const void* p, std::size_t bytes);
+
 // ---------------------------------------------------------------------------------------------
 // Access policies.
 struct PlainAccess {
@@ -96,6 +102,10 @@ struct Store {
 
   /// Room for `slots` triangles; unused slots read as {INF, INF, INF}.
   Store(const double* points, int n, std::size_t slots) : P(points), INF(n) {
+    V.reserve(slots);
+    A.reserve(3 * slots);
+    adviseHugePages(V.data(), slots * sizeof(Tri));
+    adviseHugePages(A.data(), 3 * slots * sizeof(int));
     V.assign(slots, Tri{n, n, n});
     A.assign(3 * slots, 0);
   }
