@@ -25,13 +25,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "check.h"
+#include "delaunay.h"
 #include "io.h"
-#include "predicates.h"
-#include "fast_delaunay.h"
-#include "fast_parallel.h"
-#include "flip.h"
-#include "hilbert.h"
 #include "triangulate.h"
 
 namespace {
@@ -52,13 +47,14 @@ const char* kUsage =
     "                 hull inserted directly, section 2.2.2) or 'super' (super-triangles,\n"
     "                 then DT(S) recovered from DT(S0 u S) by flips, 2.2.1 and 2.3.6); both\n"
     "                 give the exact DT(S); with --stats, 'super' also prints recovery_flips\n"
-    "  --order O      insertion order (section 2.3.5): 'brio' (default; random rounds of\n"
-    "                 doubling size, each Hilbert-sorted), 'hilbert' (one Hilbert sort: as\n"
+    "  --order O      insertion order (section 2.3.5), the same for both kernels: 'brio'\n"
+    "                 (default; dt::brioCoinOrder: 8 rounds drawn by biased coins, each\n"
+    "                 Hilbert-sorted), 'hilbert' (one Hilbert sort: as\n"
     "                 fast on spread-out points, quadratic on points along a curve) or\n"
     "                 'input' (file order: walks grow like sqrt(n), like n on sorted input);\n"
     "                 when an order turns quadratic, a warning on stderr says so once\n"
     "  --kernel K     'fast' (default: code/fast_delaunay.h, index arrays, inlined filters,\n"
-    "                 its own BRIO/Hilbert order) or 'listings' (the corrected Listings 2.4-2.7);\n"
+    "                 its own Hilbert sort) or 'listings' (the corrected Listings 2.4-2.7);\n"
     "                 both give the exact DT(S); --method super always uses the listings\n"
     "  --threads N    threads of the fast kernel with --order brio (default 1: the sequential\n"
     "                 kernel, faster today; see the parallel page); the same exact DT(S)\n"
@@ -251,21 +247,6 @@ class WalkWatch {
   std::uint64_t lastWalk_ = 0, lastCavity_ = 0;
 };
 
-// Inserts S[from..) with delaunayTrgl in chunks (the same insertions as one call), reporting
-// progress between chunks.
-void insertInChunks(dt::Triangulation& T, const std::vector<dt::Vertex*>& S, std::size_t from,
-                    dt::InsertionStats& st, Progress& progress, WalkWatch& watch) {
-  const std::size_t chunk = 1024;
-  for (std::size_t a = from; a < S.size(); a += chunk) {
-    const std::vector<dt::Vertex*> part(S.begin() + long(a),
-                                        S.begin() + long(std::min(S.size(), a + chunk)));
-    dt::delaunayTrgl(T, part, dt::StartRule::LastCavity, &st);
-    progress.update(a + part.size());
-    watch.update(a + part.size(), S.size(), st.searchSteps, st.cavityFaces,
-                 progress.insertionSeconds());
-  }
-}
-
 Options parse(int argc, char** argv) {
   Options o;
   std::vector<std::string> given;  // keys of the options seen
@@ -349,32 +330,21 @@ std::vector<std::pair<std::string, std::string>> outputsOf(Options& opt) {
   return out;
 }
 
-// The line of the point farthest from the origin (the one --method super cannot enclose).
-long extremeLine(const dt::PointSet& ps) {
-  std::size_t best = 0;
-  double m = -1;
-  for (std::size_t i = 0; i < ps.size(); ++i) {
-    const double a = std::max(std::fabs(ps.xy[2 * i]), std::fabs(ps.xy[2 * i + 1]));
-    if (a > m) m = a, best = i;
-  }
-  return ps.line(best);
-}
-
-// The fast kernel's mesh with its vertices in input order and without the merged duplicates
-// (the .msh numbers its nodes as the input, as the listings' mesh does).
-dt::PlainMesh inputOrder(const std::vector<double>& xy, const std::vector<std::array<int, 3>>& tri,
+// The mesh with its vertices in input order and without the merged duplicates (the .msh numbers
+// its nodes as the input). used empty: every point is a vertex.
+dt::PlainMesh inputOrder(const std::vector<double>& xy, const std::vector<dt::Tri>& tri,
                          const std::vector<int>& inserted, const std::vector<char>& used) {
   const std::size_t n = inserted.size();
   std::vector<int> node(n, -1);  // by input index: its node number, or -1 if merged
   for (std::size_t i = 0; i < n; ++i)
-    if (used[i]) node[std::size_t(inserted[i])] = 0;
+    if (used.empty() || used[i]) node[std::size_t(inserted[i])] = 0;
   int k = 0;
   for (int& v : node)
     if (v == 0) v = k++;
   dt::PlainMesh m;
   m.xy.resize(2 * std::size_t(k));
   for (std::size_t i = 0; i < n; ++i)
-    if (used[i]) {
+    if (used.empty() || used[i]) {
       const std::size_t j = std::size_t(node[std::size_t(inserted[i])]);
       m.xy[2 * j] = xy[2 * i];
       m.xy[2 * j + 1] = xy[2 * i + 1];
@@ -415,185 +385,51 @@ int main(int argc, char** argv) {
                std::to_string(ps.number(kept)) + " (line " + std::to_string(ps.line(kept)) +
                "); merged\n";
     };
-    // --kernel fast: the points as read go to fastDelaunay, which orders them, finds the
-    // duplicates as it meets them (no sort beforehand), and returns the triangles numbered in
-    // its insertion order with the map back to the input numbers.
-    const bool useFast = opt.fastKernel && !opt.superMethod;
-    const bool watchWalks = opt.order != "brio";
-    WalkWatch watch(watchWalks, opt.order, progress);
-    dt::InsertionStats st;
-    dt::FlipStats fs;
-    std::size_t nDup = 0, nDistinct = 0;
-    std::vector<std::array<int, 3>> tri;
-    std::vector<double> fastPoints;    // fast kernel: the points in insertion order
-    std::vector<int> inserted;         // fast kernel: the input index of each of them
-    std::vector<char> used;            // fast kernel: the points that are vertices
-    std::vector<long> numbers;         // listings: the input number of each mesh vertex
-    dt::PlainMesh listingsMesh;
-    double seconds = 0;
-    if (useFast) {
-      dt::FastOptions fo;
-      if (opt.order == "hilbert") fo.order = dt::FastOrder::Hilbert;
-      if (opt.order == "input") fo.order = dt::FastOrder::Input;
-      fo.progress = [&](std::size_t done, std::size_t total, const dt::FastStats& s) {
-        progress.update(done);
-        watch.update(done, total, s.walkSteps, s.cavityFaces, progress.insertionSeconds());
-      };
-      // The triangles come numbered in insertion order, with the points in that order: the
-      // check and the SVG then read memory in the kernel's spatially coherent order.
-      fo.insertionNumbering = true;
-      fo.progressEvery = 1024;
-      progress.setTotal(n);
-      progress.phase("triangulating " + std::to_string(n) + " points (fast kernel)");
+    // The geometry is the library's (dt::triangulate): here only the options, the progress
+    // report and the notes on duplicates.
+    WalkWatch watch(opt.order != "brio", opt.order, progress);
+    dt::TriangulateOptions to;
+    to.method = opt.superMethod ? dt::BuildMethod::Super : dt::BuildMethod::Hull;
+    to.kernel = opt.fastKernel ? dt::KernelChoice::Fast : dt::KernelChoice::Listings;
+    to.order = dt::orderNamed(opt.order);
+    to.threads = opt.threads;
+    to.check = opt.check;
+    to.phase = [&](const std::string& what, std::size_t points) {
+      progress.setTotal(points);
+      progress.phase(what);
       progress.startInsertion();
-      const auto t0 = std::chrono::steady_clock::now();
-      dt::FastResult fr = dt::fastDelaunayParallel(
-          ps.xy, fo.order == dt::FastOrder::RadixBrio ? opt.threads : 1, fo);
-      seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      std::vector<double>().swap(ps.xy);  // fr.points holds them, in insertion order
-      tri = std::move(fr.tri);
-      fastPoints = std::move(fr.points);
-      inserted = std::move(fr.inserted);
-      st.insertions = fr.stats.insertions;
-      st.searchSteps = fr.stats.walkSteps;
-      st.cavityFaces = fr.stats.cavityFaces;
-      nDup = fr.duplicates.size();
-      nDistinct = n - nDup;
-      std::vector<char> isDup(n, 0);
-      for (std::size_t j = 0; j < fr.duplicates.size(); ++j) {
-        const auto [d, k] = fr.duplicates[j];
-        isDup[std::size_t(d)] = 1;
-        // The first few are named; a file of 10^6 copies must not print 10^6 lines.
-        if (j < kNamedDuplicates) note(std::size_t(d), std::size_t(k));
-      }
-      used.resize(n);
-      for (std::size_t i = 0; i < n; ++i) used[i] = !isDup[std::size_t(inserted[i])];
-    } else {
-      // Duplicates: sort by (x, y); keep the first occurrence (smallest number).
-      std::vector<std::size_t> order(n);
-      std::iota(order.begin(), order.end(), 0);
-      std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-        return ps.xy[2 * a] < ps.xy[2 * b] ||
-               (ps.xy[2 * a] == ps.xy[2 * b] && ps.xy[2 * a + 1] < ps.xy[2 * b + 1]);
-      });
-      std::vector<char> keep(n, 1);
-      std::size_t runStart = n ? order[0] : 0;  // first occurrence of the current run of equals
-      for (std::size_t k = 1; k < n; ++k) {
-        const std::size_t a = order[k - 1], b = order[k];
-        if (ps.xy[2 * a] == ps.xy[2 * b] && ps.xy[2 * a + 1] == ps.xy[2 * b + 1]) {
-          keep[b] = 0;
-          // The first few are named; a file of 10^6 copies must not print 10^6 lines.
-          if (++nDup <= kNamedDuplicates) note(b, runStart);
-        } else {
-          runStart = b;
-        }
-      }
-      dt::Triangulation T;
-      std::vector<dt::Vertex*> S;
-      S.reserve(n - nDup);
-      for (std::size_t i = 0; i < n; ++i)
-        if (keep[i]) S.push_back(T.addVertex(ps.xy[2 * i], ps.xy[2 * i + 1], long(i)));
-      nDistinct = S.size();
-      progress.setTotal(S.size());
-      const auto t0 = std::chrono::steady_clock::now();
-      if (opt.order != "input" && S.size() > 1) {
-        // 2.3.5: with the walk started in the previous cavity, a Hilbert (or BRIO) order keeps
-        // the walks short; in file order they can grow like sqrt(n). Timed with the insertions.
-        std::vector<double> xy;
-        xy.reserve(2 * S.size());
-        for (const dt::Vertex* v : S) xy.insert(xy.end(), {v->x, v->y});
-        const std::vector<std::size_t> idx =
-            opt.order == "brio" ? dt::brioOrder(xy, 1) : dt::hilbertOrder(xy);
-        std::vector<dt::Vertex*> sorted(S.size());
-        for (std::size_t k = 0; k < idx.size(); ++k) sorted[k] = S[idx[k]];
-        S.swap(sorted);
-      }
-      if (opt.superMethod) {
-        // 2.2.1: super-triangles around the box, DT(S0 u S), then the flips of 2.3.6. A flat or
-        // collinear input is rejected as by the hull method (it has no DT(S)).
-        if (S.size() < 3) throw dt::DegenerateInput("fewer than 3 distinct points");
-        bool flat = true;
-        for (std::size_t i = 2; i < S.size() && flat; ++i)
-          flat = dt::orientationTest(S[0], S[1], S[i]) == 0;
-        if (flat) throw dt::DegenerateInput("all points are collinear");
-        double x0 = S[0]->x, x1 = x0, y0 = S[0]->y, y1 = y0;
-        for (const dt::Vertex* v : S) {
-          x0 = std::min(x0, v->x), x1 = std::max(x1, v->x);
-          y0 = std::min(y0, v->y), y1 = std::max(y1, v->y);
-        }
-        // Any enclosing size gives the exact DT(S) (2.3.6); near the overflow threshold the
-        // default factor 10 may not fit in doubles, so smaller ones are tried.
-        for (double factor : {10.0, 2.0, 1.01}) {
-          try {
-            dt::initSuperTriangles(T, x0, y0, x1, y1, factor);
-            break;
-          } catch (const dt::DegenerateInput&) {
-            // The input is valid, the method cannot hold it: a usage error (exit 2), not a bug.
-            if (factor == 1.01)
-              throw UnsupportedInput(
-                  std::to_string(extremeLine(ps)) +
-                  ": --method super cannot enclose points this close to the overflow threshold "
-                  "(|x| or |y| near 1.8e308) in double super-triangles; use --method hull");
-          }
-        }
-        progress.phase("inserting " + std::to_string(S.size()) + " points (listings)");
-        progress.startInsertion();
-        insertInChunks(T, S, 0, st, progress, watch);
-        progress.phase("recovering DT(S) by flips");
-        fs = dt::recoverDelaunay(T);
-      } else {
-        // delaunayTrglHull on the shortest prefix of S that spans a triangle (on a collinear S
-        // it throws DegenerateInput), then the other points in chunks.
-        std::size_t k = 2;
-        while (k < S.size() && dt::orientationTest(S[0], S[1], S[k]) == 0) ++k;
-        k = std::min(k + 1, S.size());
-        dt::delaunayTrglHull(T, std::vector<dt::Vertex*>(S.begin(), S.begin() + long(k)),
-                             dt::StartRule::LastCavity, &st);
-        progress.phase("inserting " + std::to_string(S.size()) + " points (listings)");
-        progress.startInsertion();
-        insertInChunks(T, S, k, st, progress, watch);
-      }
-      seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      listingsMesh = dt::extractMesh(T, true);
-      tri = std::move(listingsMesh.tri);
-      numbers.resize(listingsMesh.ids.size());
-      for (std::size_t i = 0; i < numbers.size(); ++i)
-        numbers[i] = ps.number(std::size_t(listingsMesh.ids[i]));
+    };
+    to.progress = [&](std::size_t done, std::size_t total, std::uint64_t walk, std::uint64_t cav) {
+      progress.update(done);
+      watch.update(done, total, walk, cav, progress.insertionSeconds());
+    };
+    progress.setTotal(n);
+    dt::TriangulateResult r;
+    try {
+      r = dt::triangulate(std::move(ps.xy), to);
+    } catch (const dt::UnsupportedInput& e) {
+      throw UnsupportedInput(std::to_string(ps.line(e.point)) + ": " + e.what());
     }
+    const std::size_t nDup = r.duplicates.size(), nDistinct = n - nDup;
+    for (std::size_t j = 0; j < nDup && j < kNamedDuplicates; ++j)  // not 10^6 lines for 10^6 copies
+      note(std::size_t(r.duplicates[j].first), std::size_t(r.duplicates[j].second));
+    const std::vector<dt::Tri>& tri = r.tri;
     if (nDup > kNamedDuplicates)
       notes += "delaunay2d: " + ps.path + ": " + std::to_string(nDup - kNamedDuplicates) +
                " more duplicate points merged (" + std::to_string(nDup) + " in all)\n";
-    // The mesh's points: the fast kernel's (in insertion order), or the listings' vertices.
-    const std::vector<double>& xy = useFast ? fastPoints : listingsMesh.xy;
-    if (opt.check) {
-      progress.phase("checking the result with exact predicates");
-      const std::vector<char> all(useFast ? 0 : xy.size() / 2, 1);
-      const dt::CheckReport r = dt::checkDelaunay(xy, tri, useFast ? &used : &all);
-      if (!r.ok || (!useFast && listingsMesh.ids.size() != nDistinct)) {
-        std::cerr << "delaunay2d: internal error: the result fails the exact check: "
-                  << (r.ok ? "a point is missing" : r.error) << "\n";
-        return 1;
-      }
-    }
+    const std::vector<double>& xy = r.xy;
     progress.phase("writing " + opt.out + ".ele");
     // All or nothing (dt::OutputFiles): every file is written beside its target, then all are
     // renamed into place; on any failure the old files stay as they were.
     dt::OutputFiles files;
     std::vector<dt::Writer*> w;
     for (const auto& o : outputs) w.push_back(&files.open(o.second));
-    if (useFast)
-      dt::writeEle(*w[0], tri, inserted, ps.firstIndex);
-    else
-      dt::writeEle(*w[0], tri, &numbers, ps.firstIndex);
+    dt::writeEle(*w[0], tri, r.input, ps.firstIndex);
     std::size_t next = 1;
     if (!opt.svg.empty()) dt::writeSvg(*w[next++], xy, tri);
     if (!opt.msh.empty()) {
-      if (useFast) {
-        const dt::PlainMesh m = inputOrder(xy, tri, inserted, used);
-        dt::writeMsh(*w[next++], m.xy, m.tri);
-      } else {
-        dt::writeMsh(*w[next++], xy, tri);
-      }
+      const dt::PlainMesh m = inputOrder(xy, tri, r.input, r.used);
+      dt::writeMsh(*w[next++], m.xy, m.tri);
     }
     if (const char* hold = std::getenv("DELAUNAY2D_TEST_HOLD_OUTPUTS")) {
       // Tests only: the outputs are written but not in place; a signal now must remove them.
@@ -613,12 +449,13 @@ int main(int argc, char** argv) {
     notes.clear();
     if (opt.stats) {
       std::FILE* so = opt.statsOnStderr ? stderr : stdout;
-      std::fprintf(so, "points: %zu\ntriangles: %zu\ntriangulation_seconds: %.6f\n", n,
-                   tri.size(), seconds);
+      std::fprintf(so, "points: %zu\ntriangles: %zu\ntriangulation_seconds: %.6f\n", n, tri.size(),
+                   r.seconds);
+      const double ins = r.insertions ? double(r.insertions) : 1.0;
       std::fprintf(so, "duplicates: %zu\nmean_walk_steps: %.4f\nmean_cavity_size: %.4f\n", nDup,
-                   st.meanSearch(), st.meanCavity());
+                   double(r.walkSteps) / ins, double(r.cavityFaces) / ins);
       if (opt.superMethod)
-        std::fprintf(so, "recovery_flips: %llu\n", (unsigned long long)fs.flips);
+        std::fprintf(so, "recovery_flips: %llu\n", (unsigned long long)r.recoveryFlips);
       std::fprintf(so, "peak_memory_mb: %.1f\n", double(dt::peakResidentKB()) / 1024.0);
     }
     return 0;

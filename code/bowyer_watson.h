@@ -7,10 +7,9 @@
 #include <cstdint>
 #include <vector>
 
-namespace dt {
+#include "tri.h"
 
-/// A triangle as three indices into a point array x0 y0 x1 y1 ..., counter-clockwise.
-using Tri = std::array<int, 3>;
+namespace dt {
 
 /// What one application of the Delaunay kernel (2.1) did.
 struct KernelStep {

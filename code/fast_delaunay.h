@@ -1,4 +1,5 @@
-// Going further (issue 9): a fast exact Bowyer-Watson kernel. Same algorithm and same result
+// Going further: a fast exact Bowyer-Watson kernel, for inputs of millions of points, where the
+// listings' pointer-linked faces and std::map cost most of the time. Same algorithm and same result
 // class as delaunayTrglHull (2.2.2, Listing 2.7): the exact DT(S), ghost faces for insertions
 // outside the hull, duplicates merged. What changes is only how it is stored and evaluated:
 // index-based triangles in contiguous arrays, no std::map, explicit stacks, inlined filtered
@@ -11,6 +12,9 @@
 #include <functional>
 #include <utility>
 #include <vector>
+
+#include "predicate_stages.h"
+#include "tri.h"
 
 namespace dt {
 
@@ -51,17 +55,15 @@ struct FastStats {
   std::uint64_t insertions = 0;   ///< points inserted (duplicates excluded)
   std::uint64_t walkSteps = 0;    ///< triangles visited by the walks, summed
   std::uint64_t cavityFaces = 0;  ///< triangles of the cavities, summed
-  std::uint64_t exactOrient = 0;  ///< orientation tests that needed GMP (the last stage)
-  std::uint64_t exactIncircle = 0;///< incircle tests that needed GMP (the last stage)
-  std::uint64_t extendedOrient = 0;   ///< orientation tests decided by the extended-exponent
-  std::uint64_t extendedIncircle = 0; ///< filter (pred::kExtended), and incircle tests
+  pred::StageCounts orient;       ///< orientation tests, by the stage that decided them
+  pred::StageCounts incircle;     ///< incircle tests, by the stage that decided them
   double sortSeconds = 0;         ///< computing the insertion order
   double insertSeconds = 0;       ///< the insertions (and the output)
 };
 
 /// The result: counter-clockwise triangles as index triples into the input points.
 struct FastResult {
-  std::vector<std::array<int, 3>> tri;
+  std::vector<Tri> tri;
   /// (duplicate, kept): every input point that was merged into an earlier-numbered equal point.
   std::vector<std::pair<int, int>> duplicates;
   FastStats stats;

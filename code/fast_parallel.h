@@ -1,5 +1,6 @@
-// Going further (issue 18): the fast kernel on several cores. The same Bowyer-Watson insertion
-// as fast_delaunay.h, run by several threads on one shared triangulation: each insertion locks
+// Going further: the fast kernel on several cores, for inputs where one core's insertion time
+// dominates. The same Bowyer-Watson insertion as fast_delaunay.h (one core, fast_core.h, with
+// other policies), run by several threads on one shared triangulation: each insertion locks
 // every triangle it reads or writes (its cavity and the cavity's outer neighbours) with a
 // try-lock, and an insertion that meets another thread's lock gives up and is retried later,
 // alone. Why this gives DT(S): book/parallel.md.

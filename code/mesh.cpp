@@ -1,19 +1,12 @@
 #include "mesh.h"
 
 #include "predicates.h"
+#include "predicates_inline.h"
 
 namespace dt {
 
 int orientationTest(const Vertex* a, const Vertex* b, const Vertex* c) {
   return orient2d(a->x, a->y, b->x, b->y, c->x, c->y);
-}
-
-// p is on the closed segment ab, given that a, b, p are collinear (exact: comparisons only).
-static bool onOpenSegment(const Vertex* a, const Vertex* b, const Vertex* p) {
-  if (a->x != b->x) {
-    return (a->x < p->x && p->x < b->x) || (b->x < p->x && p->x < a->x);
-  }
-  return (a->y < p->y && p->y < b->y) || (b->y < p->y && p->y < a->y);
 }
 
 //! [inCircle]
@@ -23,11 +16,10 @@ bool Face::inCircle(const Vertex* c) const {
     return incircle(V[0]->x, V[0]->y, V[1]->x, V[1]->y, V[2]->x, V[2]->y, c->x, c->y) > 0;
   // Ghost face (a, b, inf): its "circumcircle" is the limit of circles through a and b whose
   // centre goes to infinity on the outer side: the open half-plane left of a->b, plus the open
-  // segment ab itself (a point there is also strictly inside the finite neighbour's circle).
+  // segment ab itself (the rule of predicates_inline.h, which the fast kernels use too).
   const Vertex* a = V[(i + 1) % 3];
   const Vertex* b = V[(i + 2) % 3];
-  const int o = orientationTest(a, b, c);
-  return o > 0 || (o == 0 && onOpenSegment(a, b, c));
+  return pred::ghostConflict(orientationTest(a, b, c), a->x, a->y, b->x, b->y, c->x, c->y);
 }
 //! [inCircle]
 

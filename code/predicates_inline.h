@@ -1,7 +1,13 @@
 // The one core of the robust predicates (2.3.1): a floating-point filter with a proved error
-// bound, an exact stage for small multiples of one power of two, then exact GMP integers. Inline,
-// so that the fast kernel (fast_delaunay.cpp) calls it without a function call; predicates.cpp
-// wraps it with its counters. The error-bound derivations live here and only here.
+// bound, exact stages in machine arithmetic, then exact GMP integers (predicates_exact.h, the
+// one thing beneath this file). Inline, so that the fast kernel (fast_core.h) calls it without a
+// function call; predicates.cpp wraps it with the library's counters. The error-bound
+// derivations live here and only here.
+//
+// A new stage touches two files: predicate_stages.h (its enumerator, in run order, and its name)
+// and this one (the stage itself, called from orient2dSlow / incircleSlow). Every record of
+// stages (StageCounts: the library's counters, the fast kernel's, the tests' tallies) is an
+// array indexed by Stage, so nothing else changes. Its test goes to tests/test_predicate_core.cpp.
 #pragma once
 
 #include <algorithm>
@@ -10,20 +16,11 @@
 #include <cstring>
 #include <utility>
 
-#include "predicates.h"
+#include "predicate_stages.h"
+#include "predicates_exact.h"
 
 namespace dt {
 namespace pred {
-
-/// Which stage decided a robust predicate (the values of lastPredicateStage()).
-enum Stage : int {
-  kFilter = 0,    ///< the floating-point filter
-  kExact = 1,     ///< exact GMP integers (orient2dExact / incircleExact)
-  kSmallInt = 2,  ///< the floating-point value itself, proved exact (small multiples of 2^k)
-  kWide = 3,      ///< the same integers, up to 62 bits, evaluated in 128- and 256-bit integers
-  kExtended = 4,  ///< the filter again, in floating point with a separate integer exponent
-  kStageCount = 5 ///< the number of stages (tests/stage_tally.h reads it)
-};
 
 constexpr double kU = 0x1p-53;  // unit roundoff of binary64, round to nearest
 
@@ -446,6 +443,26 @@ __attribute__((always_inline)) inline int incircle(double ax, double ay, double 
   return incircleSlow(ax, ay, bx, by, cx, cy, dx, dy, stage);
 }
 //! [incircle]
+
+// ---------------------------------------------------------------------------------------------
+// The ghost face's conflict rule (2.2.2). A ghost (a, b, inf) stands for the outer side of the
+// hull edge a b; its "circumcircle" is the limit of circles through a and b whose centre goes to
+// infinity on that side: the open half-plane left of a->b, plus the open segment ab itself (a
+// point there is also strictly inside the finite neighbour's circle). Face::inCircle (mesh.cpp)
+// and the fast kernels (fast_core.h) both decide it here.
+
+/// p on the open segment ab, given a, b, p collinear (comparisons only, hence exact).
+inline bool onOpenSegment(double ax, double ay, double bx, double by, double px, double py) {
+  if (ax != bx) return (ax < px && px < bx) || (bx < px && px < ax);
+  return (ay < py && py < by) || (by < py && py < ay);
+}
+
+/// Is p in conflict with the ghost (a, b, inf)? orientABP is the sign of orient2d(a, b, p),
+/// computed by the caller with its own (counted or inlined) predicate.
+inline bool ghostConflict(int orientABP, double ax, double ay, double bx, double by, double px,
+                          double py) {
+  return orientABP > 0 || (orientABP == 0 && onOpenSegment(ax, ay, bx, by, px, py));
+}
 
 }  // namespace pred
 }  // namespace dt

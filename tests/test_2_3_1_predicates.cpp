@@ -226,7 +226,7 @@ TEST_CASE("2.3.1 the notes' orientation filter (1e-15) lets wrong signs through:
   CHECK(orient2dNotesAbs(p[0], p[1], p[2], p[3], p[4], p[5]) == 1);
   CHECK(std::fabs(orient2dNaiveValue(p[0], p[1], p[2], p[3], p[4], p[5])) > 1e-15);
   CHECK(orient2d(p[0], p[1], p[2], p[3], p[4], p[5]) == -1);
-  CHECK(lastPredicateStage() == 1);  // the safe bound sends it to the exact stage
+  CHECK(lastPredicateStage() == pred::kExact);  // the safe bound sends it to the exact stage
 }
 
 TEST_CASE("2.3.1 the notes' incircle filter (1e-11) lets wrong signs through: signed max and underflow") {

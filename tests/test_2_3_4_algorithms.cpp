@@ -334,9 +334,9 @@ TEST_CASE("2.3.4 Listing 2.7 costs about n^1.4 predicate operations and the orie
     dt::delaunayTrgl(T, S, dt::StartRule::FirstFace);
     REQUIRE(dt::checkTriangulation(T).ok);
     const dt::PredicateCounters c = dt::predicateCounters();
-    const double ops = 7.0 * double(c.orient) + 29.0 * double(c.incircle);
-    return std::array<double, 3>{ops, 7.0 * double(c.orient) / ops,
-                                 double(c.orient) / double(c.orient + c.incircle)};
+    const double ops = 7.0 * double(c.orient.calls()) + 29.0 * double(c.incircle.calls());
+    return std::array<double, 3>{ops, 7.0 * double(c.orient.calls()) / ops,
+                                 double(c.orient.calls()) / double(c.orient.calls() + c.incircle.calls())};
   };
   const auto a = run(2000, 71), b = run(8000, 71), c = run(32000, 71);
   const double exponent = std::log(c[0] / b[0]) / std::log(4.0);

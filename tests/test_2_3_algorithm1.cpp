@@ -18,9 +18,9 @@ TEST_CASE("2.3 Algorithm 1 tests every triangle: 2i of them at iteration i and n
     CAPTURE(n);
     // Two instruments: Algorithm 1's own count of its incircle calls, and the predicate core's
     // counter of robust incircle calls (predicates.cpp), which Algorithm 1 cannot touch.
-    const std::uint64_t before = dt::predicateCounters().incircle;
+    const std::uint64_t before = dt::predicateCounters().incircle.calls();
     const dt::BowyerWatsonResult bw = dt::bowyerWatson(dt::uniformPoints(n, 25));
-    const std::uint64_t calls = dt::predicateCounters().incircle - before;
+    const std::uint64_t calls = dt::predicateCounters().incircle.calls() - before;
     // DT_{i-1} has 2 + 2(i-1) = 2i triangles (each insertion adds |C|+2 and removes |C|).
     CHECK(bw.incircleTests == n * (n + 1));
     CHECK(calls == n * (n + 1));

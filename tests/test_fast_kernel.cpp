@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "delaunay.h"
 #include "fast_delaunay.h"
 #include "hilbert.h"
 #include "predicates.h"
@@ -14,7 +15,7 @@
 
 namespace {
 
-using Tris = std::vector<std::array<int, 3>>;
+using Tris = std::vector<dt::Tri>;
 
 // Each triangle rotated to start at its smallest vertex, the list sorted: two triangulations
 // are the same iff their canonical forms are equal.
@@ -155,14 +156,17 @@ TEST_CASE("fast kernel refuses inputs without a triangulation") {
 TEST_CASE("fast kernel filters send exactly the degenerate tests to the exact stages") {
   // Random points: no test needs more than the filter.
   const dt::FastResult u = fastChecked(dttest::uniformPoints(5000, 17));
-  CHECK(u.stats.exactIncircle == 0);
-  CHECK(u.stats.exactOrient == 0);
+  CHECK(u.stats.incircle[dt::pred::kExact] == 0);
+  CHECK(u.stats.orient[dt::pred::kExact] == 0);
+  CHECK(u.stats.incircle.beyondFilter() == 0);  // the filter decides every test
+  CHECK(u.stats.incircle.calls() > 5000);
   // A grid: its cocircular squares and collinear rows defeat the filter, and the small-integer
   // stage decides them all exactly (no GMP call), on unit and on scaled grids alike.
   for (double step : {1.0, 0x1p-40, 0x1p+150}) {
     const dt::FastResult g = fastChecked(dttest::gridPoints(50, 50, step));
-    CHECK(g.stats.exactIncircle == 0);
-    CHECK(g.stats.exactOrient == 0);
+    CHECK(g.stats.incircle[dt::pred::kExact] == 0);
+    CHECK(g.stats.orient[dt::pred::kExact] == 0);
+    CHECK(g.stats.incircle[dt::pred::kSmallInt] > 0);
     CHECK(g.tri.size() == 2 * 49 * 49);
   }
   // The same with the library's out-of-line predicates (the ladder's first rungs): one core, so
@@ -171,16 +175,20 @@ TEST_CASE("fast kernel filters send exactly the degenerate tests to the exact st
   called.ladderCallPredicates = true;
   dt::predicateCounters().reset();
   const dt::FastResult gc = fastChecked(dttest::gridPoints(50, 50, 1.0), called);
-  CHECK(dt::predicateCounters().incircleExact > 0);
-  CHECK(dt::predicateCounters().incircleSmallInt == dt::predicateCounters().incircleExact);
-  CHECK(gc.stats.exactIncircle == 0);
-  CHECK(gc.stats.exactOrient == 0);
+  CHECK(dt::predicateCounters().incircle.beyondFilter() > 0);
+  CHECK(dt::predicateCounters().incircle[dt::pred::kSmallInt] ==
+        dt::predicateCounters().incircle.beyondFilter());
+  CHECK(gc.stats.incircle[dt::pred::kExact] == 0);
+  CHECK(gc.stats.orient[dt::pred::kExact] == 0);
+  // One record: the run copies the library's counts of its calls, stage by stage.
+  for (int s = 0; s < dt::pred::kStageCount; ++s)
+    CHECK(gc.stats.incircle[s] == dt::predicateCounters().incircle[s]);
   // A grid of step 0.1 (not a power of two: rounded coordinates) still ends in GMP sometimes,
   // and nearly cocircular points on a circle do.
   const dt::FastResult d = fastChecked(dttest::gridPoints(40, 40, 0.1));
   CHECK(d.tri.size() == 2 * 39 * 39);
   const dt::FastResult c = fastChecked(dttest::circlePoints(2000));
-  CHECK(c.stats.exactIncircle > 0);
+  CHECK(c.stats.incircle[dt::pred::kExact] > 0);
   // The mean cavity of 5000 random points (ghost triangles and BRIO rounds included), measured
   // over seeds 10-19: 4.015 to 4.080. The bounds are that spread doubled around its middle.
   CHECK(double(u.stats.cavityFaces) / double(u.stats.insertions) == doctest::Approx(4.05).epsilon(0.02));
@@ -235,4 +243,65 @@ TEST_CASE("fast kernel handles a cavity of hundreds of triangles (the centre of 
   const dt::FastResult r = fastChecked(p, o);
   CHECK(r.tri.size() == 400);  // the fan around the centre
   CHECK(r.stats.cavityFaces >= 398);
+}
+
+TEST_CASE("fast kernel the ladder's out-of-line predicates record the same calls as the inlined ones stage by stage") {
+  // One core: the ladder's first rung only moves the predicates out of line, so the run makes the
+  // same tests in the same order, and its record (copied from the library's counters) must equal
+  // the inlined run's own, stage by stage, on points that reach the exact stages.
+  const dttest::XY p = dttest::gridPoints(30, 30, 0.1);
+  const dt::FastResult in = fastChecked(p);
+  dt::FastOptions called;
+  called.ladderCallPredicates = true;
+  const dt::FastResult out = fastChecked(p, called);
+  CHECK(in.stats.incircle.beyondFilter() > 0);
+  for (int s = 0; s < dt::pred::kStageCount; ++s) {
+    CAPTURE(dt::pred::kStageNames[s]);
+    CHECK(out.stats.orient[s] == in.stats.orient[s]);
+    CHECK(out.stats.incircle[s] == in.stats.incircle[s]);
+  }
+}
+
+TEST_CASE("fast kernel dt::triangulate gives the same DT(S) with every kernel and method and order") {
+  dttest::XY p = dttest::uniformPoints(2000, 5);
+  p.insert(p.end(), {p[20], p[21], p[6], p[7]});  // two duplicates: points 2000 and 2001
+  const Tris ref = canonical(listings(std::vector<double>(p.begin(), p.end() - 4)));
+  for (dt::KernelChoice k : {dt::KernelChoice::Fast, dt::KernelChoice::Listings})
+    for (dt::BuildMethod m : {dt::BuildMethod::Hull, dt::BuildMethod::Super})
+      for (const char* order : {"brio", "hilbert", "input"}) {
+        CAPTURE(int(k));
+        CAPTURE(int(m));
+        CAPTURE(order);
+        dt::TriangulateOptions o;
+        o.kernel = k;
+        o.method = m;
+        o.order = dt::orderNamed(order);
+        const dt::TriangulateResult r = dt::triangulate(p, o);
+        CHECK(r.checked);
+        Tris t = r.tri;  // in the input's numbering
+        for (auto& f : t)
+          for (int& v : f) v = r.input[std::size_t(v)];
+        CHECK(canonical(t) == ref);
+        CHECK(r.duplicates == std::vector<std::pair<int, int>>{{2000, 10}, {2001, 3}});
+        CHECK(r.insertions == 2000);
+      }
+  CHECK_THROWS_AS(dt::orderNamed("random"), std::invalid_argument);
+}
+
+TEST_CASE("fast kernel --order brio means the same BRIO rounds for the fast kernel and the listings") {
+  // One meaning per order name: both kernels insert in brioCoinOrder, so on the same points the
+  // listings' walk visits the points in the fast kernel's insertion order (r.input, the order of
+  // the fast kernel's points) and the listings' vertex order follows it.
+  const dttest::XY p = dttest::uniformPoints(3000, 8);
+  std::vector<std::size_t> coin = dt::brioCoinOrder(p, dt::FastOptions{}.seed, dt::FastOptions{}.rounds);
+  dt::TriangulateOptions o;
+  o.check = false;
+  const dt::TriangulateResult fast = dt::triangulate(p, o);
+  CHECK(std::equal(coin.begin(), coin.end(), fast.input.begin(), fast.input.end(),
+                   [](std::size_t a, int b) { return a == std::size_t(b); }));
+  // The listings record their insertion statistics on the same order: the same cavities, so the
+  // same sum of cavity sizes (the walks differ: Listing 2.6 is another walk).
+  o.kernel = dt::KernelChoice::Listings;
+  const dt::TriangulateResult lst = dt::triangulate(p, o);
+  CHECK(lst.cavityFaces == fast.cavityFaces);
 }

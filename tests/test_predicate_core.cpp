@@ -205,10 +205,10 @@ TEST_CASE("predicate core dt::orient2d / dt::incircle report the small-multiple 
   CHECK(dt::orient2d(0, 0, 1, 0, 0, 1) == 1);
   CHECK(dt::lastPredicateStage() == dt::pred::kFilter);
   const dt::PredicateCounters c = dt::predicateCounters();
-  CHECK(c.orient == 2);
-  CHECK(c.orientExact == 1);  // the filter failed once...
-  CHECK(c.orientSmallInt == 1);  // ...and the small-multiple stage decided
-  CHECK(c.incircleSmallInt == 1);
+  CHECK(c.orient.calls() == 2);
+  CHECK(c.orient.beyondFilter() == 1);  // the filter failed once...
+  CHECK(c.orient[dt::pred::kSmallInt] == 1);  // ...and the small-multiple stage decided
+  CHECK(c.incircle[dt::pred::kSmallInt] == 1);
 }
 
 namespace {
@@ -317,8 +317,8 @@ TEST_CASE("predicate core dt::orient2d / dt::incircle count the extended-exponen
   CHECK(dt::incircle(0x1p1000, 0, 0, 0x1p1000, -0x1p1000, 3, 0x1p-1000, 0x1p-1070) == 1);
   CHECK(dt::lastPredicateStage() == dt::pred::kExtended);
   const dt::PredicateCounters k = dt::predicateCounters();
-  CHECK(k.orientExtended == 1);
-  CHECK(k.incircleExtended == 1);
-  CHECK(k.orientExact == 1);  // the filter failed
-  CHECK(k.orientSmallInt == 0);
+  CHECK(k.orient[dt::pred::kExtended] == 1);
+  CHECK(k.incircle[dt::pred::kExtended] == 1);
+  CHECK(k.orient.beyondFilter() == 1);  // the filter failed
+  CHECK(k.orient[dt::pred::kSmallInt] == 0);
 }

@@ -158,7 +158,7 @@ std::vector<double> makePoints(Family f, std::size_t n) {
 
 // One triangulation; returns the number of finite triangles. The fast kernels' triangles go to
 // `tri`, for the exact check after the timing.
-long triangulate(Method m, const std::vector<double>& xy, std::vector<std::array<int, 3>>& tri) {
+long triangulate(Method m, const std::vector<double>& xy, std::vector<dt::Tri>& tri) {
   if (m == Method::Fast || m == Method::FastParallel) {
     tri = dt::fastDelaunayParallel(xy, m == Method::Fast ? 1 : dt::defaultThreadCount()).tri;
     return long(tri.size());
@@ -211,7 +211,7 @@ Measure runChild(Method m, Family f, std::size_t n, bool check) {
     double out[5] = {0, -1, 0, 0, 0};
     try {
       const std::vector<double> xy = makePoints(f, n);
-      std::vector<std::array<int, 3>> tri;
+      std::vector<dt::Tri> tri;
       const double t0 = cpuSeconds(), w0 = wallSeconds();
       const long count = triangulate(m, xy, tri);
       out[0] = cpuSeconds() - t0;

@@ -92,7 +92,7 @@ std::vector<double> inChild(const std::function<void(double*)>& job) {
 }
 
 // Validates a result exactly; throws if it is not DT(S).
-void validate(const std::vector<double>& xy, const std::vector<std::array<int, 3>>& tri) {
+void validate(const std::vector<double>& xy, const std::vector<dt::Tri>& tri) {
   const dt::CheckReport c = dt::checkDelaunay(xy, tri);
   if (!c.ok) throw std::runtime_error("the triangulation fails the exact check: " + c.error);
 }
@@ -133,7 +133,7 @@ void threadsJob(std::size_t n, int threads, bool check, double* out) {
 // peak MB after the triangulation, check seconds, peak MB after the check.
 void perPointJob(std::size_t n, int reps, double* out) {
   const std::vector<double> xy = dt::uniformPoints(n, 2027);
-  std::vector<std::array<int, 3>> tri;  // the last run's triangles (one result alive at a time)
+  std::vector<dt::Tri> tri;  // the last run's triangles (one result alive at a time)
   out[0] = out[1] = out[2] = 1e300;
   for (int k = 0; k < reps; ++k) {
     tri.clear();

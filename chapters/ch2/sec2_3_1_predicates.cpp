@@ -591,13 +591,13 @@ void benchmark(const ch::Options& o, ch::Values& v) {
     auto pct = [](std::uint64_t a, std::uint64_t b) {
       return b ? ch::fmt("%.3f%%", 100.0 * double(a) / double(b)) : std::string("-");
     };
-    s.add({what, std::to_string(xy.size() / 2), std::to_string(c.orient),
-           std::to_string(c.orientExact), pct(c.orientExact, c.orient),
-           std::to_string(c.incircle), std::to_string(c.incircleExact),
-           pct(c.incircleExact, c.incircle), ch::fmt("%.2f", sec)});
+    s.add({what, std::to_string(xy.size() / 2), std::to_string(c.orient.calls()),
+           std::to_string(c.orient.beyondFilter()), pct(c.orient.beyondFilter(), c.orient.calls()),
+           std::to_string(c.incircle.calls()), std::to_string(c.incircle.beyondFilter()),
+           pct(c.incircle.beyondFilter(), c.incircle.calls()), ch::fmt("%.2f", sec)});
     if (!key.empty()) {  // the book cites these shares (2.3.1 page)
-      v.set(key + "orient_share", pct(c.orientExact, c.orient));
-      v.set(key + "incircle_share", pct(c.incircleExact, c.incircle));
+      v.set(key + "orient_share", pct(c.orient.beyondFilter(), c.orient.calls()));
+      v.set(key + "incircle_share", pct(c.incircle.beyondFilter(), c.incircle.calls()));
     }
     std::cout << "  triangulated " << what << " (" << xy.size() / 2 << " points) in "
               << ch::fmt("%.2f", sec) << " s, checked exactly\n";

@@ -1,0 +1,571 @@
+// The one insertion core of the fast kernels (fast_delaunay.cpp, one thread; fast_parallel.cpp,
+// several threads on one shared triangulation). Bowyer-Watson with ghost faces, as
+// delaunayTrglHull (2.2.2, Listing 2.7), on index arrays. What differs between the two kernels
+// is a policy of the one template:
+//  - Access: how an entry of the arrays is read and written (plain, or relaxed atomic so that a
+//    walk may read a triangle another thread is rewriting without a data race);
+//  - Claim: how an insertion takes the triangles it reads and writes (a mark in a private array,
+//    which cannot fail, or a try-lock per triangle, which can: the insertion is then "Busy"),
+//    and where the two fresh slots of each insertion come from.
+// Internal header: included by the two kernels only.
+#pragma once
+
+#include <algorithm>
+#include <atomic>
+#include <cstddef>
+#include <cstdint>
+#include <exception>
+#include <map>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <utility>
+#include <vector>
+
+#include "fast_delaunay.h"
+#include "predicates.h"
+#include "predicates_inline.h"
+#include "tri.h"
+
+namespace dt {
+namespace fast {
+
+// ---------------------------------------------------------------------------------------------
+// Predicates. The robust core of predicates_inline.h, inlined; each call's deciding stage is
+// counted in the run's own record (FastStats), not in the library's global counters.
+//! [fastPredicates]
+struct InlinePredicates {
+  FastStats* st;
+  int orient(const double* a, const double* b, const double* c) const {
+    int stage = pred::kFilter;
+    const int s = pred::orient2d(a[0], a[1], b[0], b[1], c[0], c[1], stage);
+    st->orient.add(stage);
+    return s;
+  }
+  int incircle(const double* a, const double* b, const double* c, const double* d) const {
+    int stage = pred::kFilter;
+    const int s = pred::incircle(a[0], a[1], b[0], b[1], c[0], c[1], d[0], d[1], stage);
+    st->incircle.add(stage);
+    return s;
+  }
+};
+//! [fastPredicates]
+
+// The ladder's first rungs: the library's out-of-line predicates (predicates.h), which count
+// into the global record; fastDelaunay copies the difference into FastStats.
+struct CalledPredicates {
+  int orient(const double* a, const double* b, const double* c) const {
+    return orient2d(a[0], a[1], b[0], b[1], c[0], c[1]);
+  }
+  int incircle(const double* a, const double* b, const double* c, const double* d) const {
+    return dt::incircle(a[0], a[1], b[0], b[1], c[0], c[1], d[0], d[1]);
+  }
+};
+
+/// Asks the kernel to back [p, p + bytes) with 2 MB pages where it can (transparent huge pages
+/// in "madvise" mode, Debian's default): the arrays of 10^6 points span tens of MB, and with
+/// 4 KB pages their first touch costs one page fault per 4 KB (a quarter of the sequential
+/// kernel's time in a profile at 10^6). A hint only: nothing changes where it is refused.
+void adviseHugePages(const void* p, std::size_t bytes);
+
+// ---------------------------------------------------------------------------------------------
+// Access policies.
+struct PlainAccess {
+  static int ld(const int& x) { return x; }
+  static void st(int& x, int v) { x = v; }
+};
+// Relaxed atomic loads and stores: plain moves on x86, but defined behaviour when another
+// thread writes the same entry (what a reader finds is a hint, checked under a lock).
+struct RelaxedAccess {
+  static int ld(const int& x) { return __atomic_load_n(&x, __ATOMIC_RELAXED); }
+  static void st(int& x, int v) { __atomic_store_n(&x, v, __ATOMIC_RELAXED); }
+};
+
+// ---------------------------------------------------------------------------------------------
+// The storage. Triangle t has vertices V[t][0..2] (counter-clockwise) and, across its edge
+// V[t][k] V[t][(k+1)%3], the neighbour half-edge A[3 t + k] = 3 t' + k' (the same edge seen
+// from t'). Vertices are the points in insertion order, 0..n-1; INF = n is the vertex at
+// infinity, always at position 2 of a ghost; P holds a dummy point for it (a stale walk of the
+// parallel kernel may read it). Two arrays rather than one record: at the end A is freed and V,
+// compacted in place, becomes the output. Everything is allocated once: nothing reallocates
+// while an insertion (or a thread) holds a pointer into it.
+//! [fastArrays]
+struct Store {
+  const double* P = nullptr;
+  int INF = 0;
+  std::vector<Tri> V;   // V[t]: the vertices of triangle t, counter-clockwise
+  std::vector<int> A;   // A[3 t + k] = 3 t' + k' (flat: linking needs no division)
+  std::atomic<int> count{0};  // slots handed out; a slot below it that is not a triangle holds
+                              // {INF, INF, INF} (compaction drops it with the ghosts)
+//! [fastArrays]
+
+  /// Room for `slots` triangles; unused slots read as {INF, INF, INF}.
+  Store(const double* points, int n, std::size_t slots) : P(points), INF(n) {
+    V.reserve(slots);
+    A.reserve(3 * slots);
+    adviseHugePages(V.data(), slots * sizeof(Tri));
+    adviseHugePages(A.data(), 3 * slots * sizeof(int));
+    V.assign(slots, Tri{n, n, n});
+    A.assign(3 * slots, 0);
+  }
+
+  /// The first triangle a b c (counter-clockwise) and its three ghosts, in slots 0..3.
+  void init(int a, int b, int c) {
+    V[0] = {a, b, c};
+    V[1] = {b, a, INF};
+    V[2] = {c, b, INF};
+    V[3] = {a, c, INF};
+    const int links[12] = {3 * 1 + 0, 3 * 2 + 0, 3 * 3 + 0,   // a->b, b->c, c->a of 0
+                           3 * 0 + 0, 3 * 3 + 2, 3 * 2 + 1,   // ghost b a
+                           3 * 0 + 1, 3 * 1 + 2, 3 * 3 + 1,   // ghost c b
+                           3 * 0 + 2, 3 * 2 + 2, 3 * 1 + 1};  // ghost a c
+    std::copy(links, links + 12, A.begin());
+    count.store(4, std::memory_order_relaxed);
+  }
+};
+
+// ---------------------------------------------------------------------------------------------
+// Claim policies. Both answer, for a neighbour n met by the cavity search, whether it is in the
+// cavity already (kInCavity), already tested and left out by this insertion (kHeld), or new.
+
+/// One thread: a mark per triangle. Claims cannot fail; marks are cleared after the fill.
+class MarkClaim {
+ public:
+  static constexpr bool kShared = false;
+  enum State { kNew, kInCavity, kHeld };
+  explicit MarkClaim(Store& S) : S_(S), mark_(S.V.size(), 0) {}
+  bool lock(int) { return true; }
+  State state(int n) const { return mark_[std::size_t(n)] ? kInCavity : kNew; }
+  void enterCavity(int n) { mark_[std::size_t(n)] = 1; }
+  void releaseAll(const std::vector<int>& cav) {
+    for (int t : cav) mark_[std::size_t(t)] = 0;
+  }
+  /// Two fresh slots for the two triangles an insertion adds.
+  int newSlots() {
+    const int base = S_.count.load(std::memory_order_relaxed);
+    S_.count.store(base + 2, std::memory_order_relaxed);
+    return base;
+  }
+  void freeMarks() { std::vector<unsigned char>().swap(mark_); }
+
+ private:
+  Store& S_;
+  std::vector<unsigned char> mark_;
+};
+
+/// Several threads: owner[t] is the lock of triangle t: kFree, 2 id (locked by thread id),
+/// 2 id + 1 (locked by thread id and in its cavity), or kFresh (a slot not handed out). Fresh
+/// slots come from a block of kBlock slots that the thread takes from the shared counter at once,
+/// so that the triangles one thread creates are neighbours in memory (and in the lock array),
+/// not interleaved with the other threads' (the cache lines would then travel between cores).
+//! [parShared]
+constexpr unsigned char kFree = 0, kFresh = 255;
+constexpr int kMaxThreads = 64;  // 2 id + 1 < kFresh
+
+struct Locks {
+  std::unique_ptr<std::atomic<unsigned char>[]> owner;
+  explicit Locks(std::size_t slots, std::size_t live) : owner(new std::atomic<unsigned char>[slots]) {
+    for (std::size_t t = 0; t < slots; ++t) owner[t].store(t < live ? kFree : kFresh);
+  }
+};
+//! [parShared]
+
+class LockClaim {
+ public:
+  static constexpr bool kShared = true;
+  static constexpr int kBlock = 512;  // slots per block: 24 KB of V, 36 KB of A
+  enum State { kNew, kInCavity, kHeld };
+  LockClaim(Store& S, Locks& L, int id, int block = kBlock)
+      : S_(S), L_(L), tagLock_((unsigned char)(2 * id)), tagCav_((unsigned char)(2 * id + 1)),
+        block_(block) {}
+  bool lock(int t) {
+    unsigned char e = kFree;
+    if (!L_.owner[t].compare_exchange_strong(e, tagLock_, std::memory_order_acquire,
+                                             std::memory_order_relaxed))
+      return false;
+    locked_.push_back(t);
+    return true;
+  }
+  State state(int n) const {
+    const unsigned char tag = L_.owner[n].load(std::memory_order_relaxed);
+    return tag == tagCav_ ? kInCavity : tag == tagLock_ ? kHeld : kNew;
+  }
+  void enterCavity(int n) { L_.owner[n].store(tagCav_, std::memory_order_relaxed); }
+  void releaseAll(const std::vector<int>&) {
+    for (int t : locked_) L_.owner[t].store(kFree, std::memory_order_release);
+    locked_.clear();
+  }
+  /// Two fresh slots from this thread's block (a new block when it is used up). This thread
+  /// owns them from the moment it takes them (they are kFresh to everyone else).
+  int newSlots() {
+    if (next_ + 2 > end_) {
+      next_ = S_.count.fetch_add(block_, std::memory_order_relaxed);
+      end_ = next_ + block_;
+      if (std::size_t(end_) > S_.V.size())
+        throw std::logic_error("fastDelaunayParallel: out of triangle slots");
+    }
+    const int base = next_;
+    next_ += 2;
+    for (int s : {base, base + 1}) {
+      L_.owner[s].store(tagLock_, std::memory_order_relaxed);
+      locked_.push_back(s);
+    }
+    return base;
+  }
+
+ private:
+  Store& S_;
+  Locks& L_;
+  const unsigned char tagLock_, tagCav_;
+  const int block_;
+  int next_ = 0, end_ = 0;
+  std::vector<int> locked_;
+};
+
+// ---------------------------------------------------------------------------------------------
+/// The ghost rule of predicates_inline.h on the kernel's point array.
+inline bool onOpenSegment(const double* a, const double* b, const double* p) {
+  return pred::onOpenSegment(a[0], a[1], b[0], b[1], p[0], p[1]);
+}
+
+/// One inserter: the walk, the cavity, the fill. kMapAdjacency and kCentroidWalk put back
+/// features of the listings for the optimisation ladder (one thread only).
+template <class Pred, class Access, class Claim, bool kMapAdjacency = false,
+          bool kCentroidWalk = false>
+class alignas(64) Inserter {  // aligned: two threads' inserters never share a cache line
+ public:
+  enum Outcome { Inserted, Duplicate, Busy };
+
+  Inserter(Store& S, Claim& claim, Pred pred, FastStats& st)
+      : S_(S), claim_(claim), pred_(pred), st_(st) {}
+
+  int last = 0;  // where the next walk starts: a triangle of the last cavity
+
+  /// Inserts vertex ip; or sets dup to the vertex it duplicates (nothing changes); or, with a
+  /// shared claim, reports Busy: a triangle it needed was another thread's (nothing changed and
+  /// every lock it took is released).
+//! [fastInsert]
+  Outcome insert(int ip, int& dup) {
+    const double* p = pt(ip);
+    for (int attempt = 0; attempt < (Claim::kShared ? 3 : 1); ++attempt) {
+      const int t = kCentroidWalk ? walkCentroid(p, dup) : walk(p);
+      if (t == kDuplicate) return Duplicate;
+      if (t < 0) {
+        if (!Claim::kShared) throw std::logic_error("fastDelaunay: walk does not terminate");
+        return Busy;
+      }
+      if (!claim_.lock(t)) return Busy;
+      // (With a shared claim: under the lock, t is a live triangle no one else changes.)
+      if (ld(S_.V[t][2]) != S_.INF)
+        for (int j = 0; j < 3; ++j) {
+          const int v = ld(S_.V[t][j]);
+          if (pt(v)[0] == p[0] && pt(v)[1] == p[1]) {
+            dup = v;
+            claim_.releaseAll(cav_);
+            return Duplicate;
+          }
+        }
+      // The walk read a triangle being rewritten: walk again from t. (One thread: a triangle
+      // that contains p and does not have p as a vertex has p strictly inside its circle.)
+      if (Claim::kShared && !conflict(t, p)) {
+        claim_.releaseAll(cav_);
+        last = t;
+        continue;
+      }
+      if (!cavity(t, p)) {
+        claim_.releaseAll(cav_);
+        return Busy;
+      }
+      if (bnd_.size() != cav_.size() + 2)  // Property 2.1.1: the cavity is a disk
+        throw std::logic_error("fastDelaunay: cavity boundary has " +
+                               std::to_string(bnd_.size()) + " edges for " +
+                               std::to_string(cav_.size()) + " triangles");
+      st_.cavityFaces += cav_.size();
+      ++st_.insertions;
+      fill(ip);
+      claim_.releaseAll(cav_);
+      return Inserted;
+    }
+    return Busy;
+  }
+//! [fastInsert]
+
+ private:
+  struct BoundaryEdge {
+    int a, b;  // the edge a -> b as the cavity triangle sees it
+    int out;   // the half-edge of the triangle outside the cavity
+    int e1;    // the half-edge b -> p of the new triangle a b p
+    int e2;    // the half-edge p -> a of the new triangle a b p
+  };
+  static constexpr int kDuplicate = -2;
+  static constexpr int kNext[3] = {1, 2, 0};
+
+  static int ld(const int& x) { return Access::ld(x); }
+  const double* pt(int v) const { return S_.P + 2 * std::size_t(v); }
+
+  // Inlined by force: it is the innermost call of the walk and of the cavity search.
+  __attribute__((always_inline)) bool conflict(int t, const double* p) const {
+    const int a = ld(S_.V[t][0]), b = ld(S_.V[t][1]), c = ld(S_.V[t][2]);
+    if (c == S_.INF)  // ghost (a, b, inf): the rule of predicates_inline.h
+      return pred::ghostConflict(pred_.orient(pt(a), pt(b), p), pt(a)[0], pt(a)[1], pt(b)[0],
+                                 pt(b)[1], p[0], p[1]);
+    return pred_.incircle(pt(a), pt(b), pt(c), p) > 0;
+  }
+
+//! [fastWalk]
+  // A visibility walk by orientation tests, from the last triangle created, that does not test
+  // the edge it came through. On a Delaunay triangulation it cannot cycle (Edelsbrunner). It
+  // ends in a triangle that contains p or in a ghost that sees p; -1 after more steps than
+  // there are triangles (one thread: a corrupted mesh; several: it read links being rewritten).
+  int walk(const double* p) {
+    int t = last, from = -1;
+    const std::size_t cap = std::size_t(S_.count.load(std::memory_order_relaxed)) + 1;
+    for (std::size_t steps = 1; steps <= cap; ++steps) {
+      const int v0 = ld(S_.V[t][0]), v1 = ld(S_.V[t][1]), v2 = ld(S_.V[t][2]);
+      int k = -1;
+      if (v2 == S_.INF) {
+        // Entered from its finite side: p is strictly beyond that hull edge, a conflict.
+        if (from == 0 || conflict(t, p)) {
+          st_.walkSteps += steps;
+          return t;
+        }
+        k = 0;
+      } else {
+        const double *a = pt(v0), *b = pt(v1), *c = pt(v2);
+        if (from != 0 && pred_.orient(a, b, p) < 0)
+          k = 0;
+        else if (from != 1 && pred_.orient(b, c, p) < 0)
+          k = 1;
+        else if (from != 2 && pred_.orient(c, a, p) < 0)
+          k = 2;
+        if (k < 0) {
+          st_.walkSteps += steps;
+          return t;
+        }
+      }
+      const int h = ld(S_.A[3 * std::size_t(t) + k]);
+      t = h / 3;
+      from = h % 3;
+    }
+    return -1;
+  }
+//! [fastWalk]
+
+  // The ladder's walk: Listing 2.6 as corrected in search.cpp (an incircle test at every
+  // triangle, then the half-open sector of the centroid's ray). One thread only.
+  int walkCentroid(const double* p, int& dup) {
+    int t = last;
+    const std::size_t cap = std::size_t(S_.count.load(std::memory_order_relaxed)) + 1;
+    for (std::size_t steps = 1; steps <= cap; ++steps) {
+      if (conflict(t, p)) {
+        st_.walkSteps += steps;
+        return t;
+      }
+      const Tri& v = S_.V[t];
+      if (v[2] == S_.INF) {
+        t = S_.A[3 * std::size_t(t)] / 3;
+        continue;
+      }
+      const double c[2] = {(pt(v[0])[0] + pt(v[1])[0] + pt(v[2])[0]) / 3,
+                           (pt(v[0])[1] + pt(v[1])[1] + pt(v[2])[1]) / 3};
+      int next = -1;
+      for (int k = 0; k < 3 && next < 0; ++k) {
+        const double *a = pt(v[k]), *b = pt(v[(k + 1) % 3]);
+        if (pred_.orient(c, a, p) >= 0 && pred_.orient(c, b, p) < 0 && pred_.orient(a, b, p) < 0)
+          next = k;
+      }
+      for (int k = 0; k < 3 && next < 0; ++k)
+        if (pred_.orient(pt(v[k]), pt(v[(k + 1) % 3]), p) < 0) next = k;
+      if (next < 0) {
+        st_.walkSteps += steps;
+        for (int j = 0; j < 3; ++j)
+          if (pt(v[j])[0] == p[0] && pt(v[j])[1] == p[1]) {
+            dup = v[j];
+            return kDuplicate;
+          }
+        throw std::logic_error("fastDelaunay: point inside a triangle but outside its circle");
+      }
+      t = S_.A[3 * std::size_t(t) + next] / 3;
+    }
+    return -1;
+  }
+
+//! [fastCavity]
+  // Delaunay cavity (Listing 2.5) from a seed in conflict: the list of cavity triangles is its
+  // own work queue, so there is neither recursion nor a separate stack. A neighbour the claim
+  // cannot take (another thread's) ends the search: false.
+  bool cavity(int seed, const double* p) {
+    cav_.clear();
+    bnd_.clear();
+    claim_.enterCavity(seed);
+    cav_.push_back(seed);
+    for (std::size_t i = 0; i < cav_.size(); ++i) {
+      const int t = cav_[i];
+      for (int k = 0; k < 3; ++k) {
+        const int h = ld(S_.A[3 * std::size_t(t) + k]);
+        const int n = h / 3;
+        const typename Claim::State s = claim_.state(n);
+        if (s == Claim::kInCavity) continue;  // an interior edge of the cavity
+        if (s == Claim::kNew) {               // not seen yet: take it, then test it
+          if (!claim_.lock(n)) return false;
+          if (conflict(n, p)) {
+            claim_.enterCavity(n);
+            cav_.push_back(n);
+            continue;
+          }
+        }
+        bnd_.push_back({ld(S_.V[t][k]), ld(S_.V[t][kNext[k]]), h, -1, -1});
+      }
+    }
+    return true;
+  }
+//! [fastCavity]
+
+//! [fastFill]
+  void link(int h, int g) {  // half-edge h = 3 t + k is entry h of A: no division
+    Access::st(S_.A[std::size_t(h)], g);
+    Access::st(S_.A[std::size_t(g)], h);
+  }
+
+  // The Delaunay ball: triangle a b p on each boundary edge a -> b, in the slots of the cavity
+  // and two fresh ones. Its edge b -> p meets the edge p -> b of the triangle built on the
+  // boundary edge that leaves b (the boundary is one closed polygon, Property 2.1.1): a search
+  // among the few boundary edges finds it, without a map.
+  void fill(int ip) {
+    const std::size_t nc = cav_.size();
+    const int base = claim_.newSlots();
+    const int INF = S_.INF;
+    for (std::size_t i = 0; i < bnd_.size(); ++i) {
+      const int s = i < nc ? cav_[i] : base + int(i - nc);
+      BoundaryEdge& e = bnd_[i];
+      // The vertex at infinity stays at position 2 of a ghost: a b p, or p a inf, or b p inf.
+      int w[3], k0;  // k0: the position of the edge a -> b in the new triangle
+      if (__builtin_expect(e.a != INF && e.b != INF, 1)) {
+        w[0] = e.a, w[1] = e.b, w[2] = ip, k0 = 0;
+      } else if (e.b == INF) {
+        w[0] = ip, w[1] = e.a, w[2] = INF, k0 = 1;
+      } else {
+        w[0] = e.b, w[1] = ip, w[2] = INF, k0 = 2;
+      }
+      for (int j = 0; j < 3; ++j) Access::st(S_.V[std::size_t(s)][j], w[j]);
+      e.e1 = 3 * s + kNext[k0];
+      e.e2 = 3 * s + kNext[kNext[k0]];
+      if (!kMapAdjacency) link(3 * s + k0, e.out);
+    }
+    if (kMapAdjacency)
+      linkWithMap();
+    else
+      linkAround();
+    last = bnd_.back().e1 / 3;
+  }
+
+  void linkAround() {
+    const std::size_t m = bnd_.size();
+    if (m <= 32) {  // the usual case (about 6 edges): a plain search
+      for (const BoundaryEdge& e : bnd_) {
+        std::size_t j = 0;
+        while (j < m && bnd_[j].a != e.b) ++j;
+        if (j == m) throw std::logic_error("fastDelaunay: cavity boundary is not closed");
+        link(e.e1, bnd_[j].e2);
+      }
+      return;
+    }
+    byStart_.clear();  // a large cavity (degenerate input): sort the edges by their start
+    for (const BoundaryEdge& e : bnd_) byStart_.emplace_back(e.a, e.e2);
+    std::sort(byStart_.begin(), byStart_.end());
+    for (const BoundaryEdge& e : bnd_) {
+      const auto it = std::lower_bound(byStart_.begin(), byStart_.end(), std::make_pair(e.b, -1));
+      if (it == byStart_.end() || it->first != e.b)
+        throw std::logic_error("fastDelaunay: cavity boundary is not closed");
+      link(e.e1, it->second);
+    }
+  }
+//! [fastFill]
+
+  // The ladder's adjacency: Listing 2.4's std::map from edges to half-edges, over the new
+  // triangles and the outer side of the boundary.
+  void linkWithMap() {
+    std::map<std::pair<int, int>, int> edgeToHalf;
+    auto key = [](int u, int v) { return std::make_pair(std::min(u, v), std::max(u, v)); };
+    for (const BoundaryEdge& e : bnd_) edgeToHalf.emplace(key(e.a, e.b), e.out);
+    for (const BoundaryEdge& e : bnd_) {
+      const int s = e.e1 / 3;
+      for (int k = 0; k < 3; ++k) {
+        const auto q = key(S_.V[s][k], S_.V[s][kNext[k]]);
+        auto it = edgeToHalf.find(q);
+        if (it == edgeToHalf.end()) {
+          edgeToHalf.emplace(q, 3 * s + k);
+        } else {
+          link(3 * s + k, it->second);
+          edgeToHalf.erase(it);
+        }
+      }
+    }
+  }
+
+  Store& S_;
+  Claim& claim_;
+  Pred pred_;
+  FastStats& st_;
+  std::vector<int> cav_;
+  std::vector<BoundaryEdge> bnd_;
+  std::vector<std::pair<int, int>> byStart_;  // large cavities: (start vertex, half-edge p -> a)
+};
+
+// ---------------------------------------------------------------------------------------------
+// What both kernels do around the insertions.
+
+/// The input checks: an even number of finite coordinates, at most 2^28 points, at least 3.
+void checkInput(const std::vector<double>& xy, const char* who);
+
+/// The points of xy in the order `orig` (orig[i]: input number of the i-th), contiguous, with
+/// a dummy point at the end for the vertex at infinity. threads > 1 copies in pieces.
+std::vector<double> pointsInOrder(const std::vector<double>& xy, const std::vector<int>& orig,
+                                  int threads);
+
+/// The first triangle: point 0, the first point distinct from it (i1), the first one off their
+/// line (i2), as delaunayTrglHull chooses it; the points skipped on the way are inserted later.
+/// Throws DegenerateInput when there is none. ccw: 0 i1 i2 turn counter-clockwise.
+struct FirstTriangle {
+  int i1, i2;
+  bool ccw;
+};
+FirstTriangle firstTriangle(const std::vector<double>& P, int n);
+
+/// body(k, lo, hi) on `threads` consecutive pieces [lo, hi) of [0, n), piece k by thread k
+/// (piece 0 by the calling thread). An exception of any piece is rethrown after all joined.
+template <class Body>
+void parallelFor(int threads, std::size_t n, Body body) {
+  if (threads <= 1) {
+    body(0, std::size_t(0), n);
+    return;
+  }
+  std::vector<std::exception_ptr> err(static_cast<std::size_t>(threads));
+  auto piece = [&](int k) {
+    try {
+      body(k, n * std::size_t(k) / std::size_t(threads), n * std::size_t(k + 1) / std::size_t(threads));
+    } catch (...) {
+      err[std::size_t(k)] = std::current_exception();
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int k = 1; k < threads; ++k) pool.emplace_back(piece, k);
+  piece(0);
+  for (std::thread& th : pool) th.join();
+  for (const std::exception_ptr& e : err)
+    if (e) std::rethrow_exception(e);
+}
+
+/// The end of a run: the adjacencies and the marks are already freed; the slots [0, count) of
+/// V hold the triangles, the ghosts and unused slots ({INF, INF, INF}). Keeps the finite
+/// triangles, packed at the front (renumbered as the input unless res asks for insertion
+/// numbering), in pieces over `threads` threads; fills res.tri, res.duplicates (from the pairs
+/// (point, vertex it duplicates) in insertion numbers, keeping the smallest input number of
+/// equal points), and res.points / res.inserted with insertion numbering.
+void finish(std::vector<Tri>& V, std::size_t count, int INF, std::vector<double>& P,
+            std::vector<int>& orig, const std::vector<std::pair<int, int>>& dups,
+            bool insertionNumbering, int threads, FastResult& res);
+
+}  // namespace fast
+}  // namespace dt
