@@ -127,7 +127,8 @@ void figureFlip(const ch::Options& o) {
     const ch::FigureSize fs = ch::figureSize("fig_flip");
     const double lw = std::max(1.5, fs.em / 18);
     const ch::Panel pv = ch::cellPanel(fs, 1, 2, after ? 1 : 0, -3.5, 7, -5, 4.6);
-    ch::LabelPlacer placer(pv, fs.em);
+    // The labels at 0.85 em (7.2 pt at 15 cm): "b: 5 (−1)" is wide for the triangles around b.
+    ch::LabelPlacer placer(pv, 0.85 * fs.em);
     placer.segments(ch::faceSegs(T.finiteFaces()), 1.2 * lw);
     placer.segment(e0->x, e0->y, e1->x, e1->y, 3.5 * lw);
     std::ostringstream lab;
@@ -138,7 +139,7 @@ void figureFlip(const ch::Options& o) {
       std::string t = ch::mathText(names[i]) + ": " + std::to_string(after ? now : before);
       if (after) t += std::string(" (") + (now > before ? "+" : "\u2212") + std::to_string(std::abs(now - before)) + ")";
       const auto [x, y] = placer.place(v->x, v->y, t);
-      lab << "set label \"" << t << "\" at " << x << "," << y << " center front\n";
+      lab << "set label \"" << t << "\" at " << x << "," << y << " center front font sprintf(',%.1f', 0.85 * FS)\n";
     }
     obj += lab.str() + "VIEW = \"" + pv.gnuplot() + "\"\n";
     ch::writeOut(o, stem + ".gp", obj);

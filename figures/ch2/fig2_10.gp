@@ -16,11 +16,11 @@ do for [term in "png svg"] {
   set xrange [STATS_min_x - m:STATS_max_x + m]
   set yrange [STATS_min_y - m:STATS_max_y + m]
   eval layout(1, 2)
-  eval panel(1, "the cavity of p")
+  eval panel(1, "the cavity of ".M."𝑝}")
   plot datadir."/fig2_10_cavity.dat" with filledcurves closed fc rgb C_CAVITY fs solid 1.0 title "cavity", \
        datadir."/fig2_10_before.dat" with lines lw 1.2 lc rgb C_TRI notitle, \
        datadir."/fig2_10_point.dat" with points pt 7 ps (1.6*PS) lc rgb C_NEW notitle, \
-       datadir."/fig2_10_point.dat" using 1:2:("p") with labels offset 0.9,0.9 tc rgb C_NEW notitle
+       datadir."/fig2_10_point.dat" using 1:2:(M."𝑝}") with labels offset 0.9,0.9 tc rgb C_NEW notitle
   eval panel(2, "the ball and its adjacencies")
   plot datadir."/fig2_10_outer.dat" with filledcurves closed fc rgb C_NEIGH fs solid 1.0 title "neighbours", \
        datadir."/fig2_10_ball.dat" with filledcurves closed fc rgb C_BALL fs solid 1.0 title "ball", \
@@ -28,6 +28,6 @@ do for [term in "png svg"] {
        datadir."/fig2_10_links_new.dat" using 1:2:3:4 with vectors head filled size screen 0.007,25 lw 2 lc rgb C_BALL_EDGE title "new - new", \
        datadir."/fig2_10_links_outer.dat" using 1:2:3:4 with vectors head filled size screen 0.007,25 lw 2 lc rgb C_NEIGH_EDGE title "new - neighbour", \
        datadir."/fig2_10_point.dat" with points pt 7 ps (1.6*PS) lc rgb C_NEW notitle, \
-       datadir."/fig2_10_point.dat" using 1:2:("p") with labels offset 0.9,0.9 tc rgb C_NEW notitle
+       datadir."/fig2_10_point.dat" using 1:2:(M."𝑝}") with labels offset 0.9,0.9 tc rgb C_NEW notitle
   unset multiplot
 }

@@ -9,7 +9,9 @@ do for [term in "png svg"] {
   set output (term eq "png" ? outdir."/fig2_9.png" : outdir."/fig2_9.svg")
   set offsets 0.15, 0.15, 0.15, 0.15
   set key outside bottom center horizontal samplen 1 width 2
-  set title title
+  # Two lines (the count, then eq. (2.2)): one line is wider than the figure at its print size.
+  cut = strstrt(title, ";")
+  set title (cut > 0 ? title[1:cut] . "\n" . title[cut + 1:] : title)
   plot datadir."/fig2_9_tri.dat" with lines lw 1.5 lc rgb C_TRI notitle, \
        datadir."/fig2_9_vertices.dat" using 1:2:(0.085):($5 > 0 ? 0xf6d55c : 0xffffff) \
          with circles lc rgb variable fs solid 1.0 border lc rgb "black" notitle, \

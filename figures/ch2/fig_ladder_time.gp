@@ -20,5 +20,5 @@ do for [t in "png svg"] {
   set ytics nomirror
   set rmargin 6
   plot datadir.'/ladder.dat' using 3:xtic(2) linecolor rgb word(C_SERIES, 1), \
-       '' using 0:3:(sprintf("%.2f s\n×%.1f", $3, $4)) with labels offset 0,1.6
+       '' using 0:3:(sprintf("×%.1f", $4)) with labels offset 0,0.9
 }

@@ -17,7 +17,7 @@ do for [t in "png svg"] {
       plot datadir.'/'.s.'_'.w.'.dat' with lines lc rgb C_TRI lw 1.2, \
            datadir.'/'.s.'_points.dat' with points pt 7 ps (0.8*PS) lc rgb C_POINT, \
            datadir.'/'.s.'_q.dat' with points pt 7 ps (1.6*PS) lc rgb C_NEW, \
-           datadir.'/'.s.'_q.dat' using 1:2:("p") with labels offset 1.0,0.8 tc rgb C_NEW
+           datadir.'/'.s.'_q.dat' using 1:2:(M."𝑝}") with labels offset 1.0,0.8 tc rgb C_NEW
       unset object; unset arrow
     }
   }
