@@ -16,7 +16,8 @@ stats f using 2 nooutput
 nlo = STATS_min; nhi = STATS_max
 # The stopped series of random order (r = 1) or of Hilbert and BRIO (r = 0); a circle around
 # each one's last point, only where some series stopped (a plot must draw something).
-nstops(r) = (system(sprintf("awk '$1 != \"NaN\" && ($3 == 0) == %d' '%s' | wc -l", r, g)) + 0)
+# (The file reaches the shell as "$DT_DATADIR/...": expanded, never read as code.)
+nstops(r) = (system(sprintf("awk '$1 != \"NaN\" && ($3 == 0) == %d' -- \"${DT_DATADIR:-.}/brio_compare_stops.dat\" | wc -l", r)) + 0)
 nstopsR = nstops(1); nstopsHB = nstops(0)
 stopped(c, r) = ((r ? nstopsR : nstopsHB) > 0) ? sprintf(", g using ((%d ? $3 == 0 : $3 > 0) ? $2 : NaN):%d with points pt 6 ps (3.2*PS) lw 1.5 lc rgb 'black' notitle", r, c) : ""
 series(c, order, dash) = sprintf("for [i = 0:%d] f using ($1 == i && $3 == %d ? $2 : NaN):%d with linespoints lw 2 dt %d pt int(word(marks, i + 1)) ps (1.1*PS) lc rgb word(C_SERIES, i + 1) notitle", ninputs - 1, order, c, dash)
