@@ -150,12 +150,17 @@ TEST_CASE("exercises a release holds no line of any solution and is refused insi
                     dttest::readText(std::string(DT_SOURCE_DIR) + "/code/stats.cpp"));
   dttest::writeText(oddBuild + "/CMakeCache.txt", "\n");
   dttest::writeText(oddBuild + "/star.cpp", dttest::readText(std::string(DT_SOURCE_DIR) + "/code/star.cpp"));
+  // And the folder grade writes prove answers to, with the teacher's sheet.
+  const std::string answers = std::string(DT_SOURCE_DIR) + "/answers_" + pid;
+  sh("mkdir -p '" + answers + "'");
+  dttest::writeText(answers + "/SHEET.md", dttest::readText(std::string(DT_SOURCE_DIR) + "/book/solutions.md"));
   const Run r = exercise("release 2.3.4-1 2.1-1 2.3.5-1 '" + root + "'");
-  sh("rm -rf '" + nested + "' '" + oddBuild + "'");
+  sh("rm -rf '" + nested + "' '" + oddBuild + "' '" + answers + "'");
   INFO(r.out << r.err);
   REQUIRE(r.status == 0);
   CHECK_FALSE(fs::exists(root + "/nested_ws_" + pid));
   CHECK_FALSE(fs::exists(root + "/objects_" + pid));
+  CHECK_FALSE(fs::exists(root + "/answers_" + pid));
   CHECK(contains(dttest::readText(root + "/.exercise"), "ids: 2.3.4-1 2.1-1 2.3.5-1"));
   CHECK(contains(dttest::readText(root + "/answers.md"), "## Exercise 2.3.5-1"));
   CHECK_FALSE(fs::exists(root + "/.git"));
