@@ -128,7 +128,7 @@ void sh(const std::string& cmd) { REQUIRE_MESSAGE(std::system(cmd.c_str()) == 0,
 
 }  // namespace
 
-TEST_CASE("exercises a release holds no line of any solution and is refused inside the repository") {
+TEST_CASE("exercises class a release holds no line of any solution and is refused inside the repository") {
   const std::string root = outsideTmp("class_release");
   sh("rm -rf '" + root + "'");
   // Inside the repository: refused, nothing made.
@@ -197,7 +197,7 @@ TEST_CASE("exercises a release holds no line of any solution and is refused insi
   sh("rm -rf '" + root + "'");
 }
 
-TEST_CASE("exercises a class of 30 workspaces is graded in one command into a TSV right for every row") {
+TEST_CASE("exercises class 30 workspaces are graded in one command into a TSV right for every row") {
   const std::string root = outsideTmp("class_30");
   sh("rm -rf '" + root + "' && mkdir -p '" + root + "'");
   const Run rel = exercise("release 2.3.4-1 '" + root + "/release'");
@@ -309,7 +309,7 @@ TEST_CASE("exercises a class of 30 workspaces is graded in one command into a TS
   sh("rm -rf '" + root + "'");
 }
 
-TEST_CASE("exercises grade catches the planted bugs of 2.1-1 and collects prove answers beside the sheet") {
+TEST_CASE("exercises class grade catches the planted bugs of 2.1-1 and collects prove answers beside the sheet") {
   const std::string root = outsideTmp("class_21");
   sh("rm -rf '" + root + "' && mkdir -p '" + root + "'");
   const Run rel = exercise("release 2.1-1 2.3.5-1 '" + root + "/release'");
