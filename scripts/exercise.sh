@@ -294,19 +294,31 @@ cmd_list() {
   done
 }
 
-# copy_project SRC DIR: the project's own files, without the git history (it holds the
-# solutions), build directories (build, build-*, any directory holding a CMakeCache.txt) and
-# workspaces made inside the tree (a directory holding .exercise, or its own CMakeLists.txt and
-# scripts/exercise.sh).
+# copy_project SRC DIR: the project's own files: those git tracks when SRC is a git work tree
+# (so grade's answers_ID/SHEET.md, handout sheets and other outputs left in the tree stay out),
+# every file but grade's answers_* folders otherwise; never the git history (it holds the solutions), build directories
+# (build, build-*, any directory holding a CMakeCache.txt) or workspaces made inside the tree (a
+# directory holding .exercise, or its own CMakeLists.txt and scripts/exercise.sh).
 copy_project() {
   local src="$1" dst="$2" d
-  local prune=(-name .git -o -name build -o -name 'build-*')
+  local prune=(-name .git -o -name build -o -name 'build-*' -o -name 'answers_*') skip=()
   while IFS= read -r -d '' d; do
     if [ -e "$src/$d/.exercise" ] || [ -e "$src/$d/CMakeCache.txt" ] ||
        { [ -f "$src/$d/CMakeLists.txt" ] && [ -f "$src/$d/scripts/exercise.sh" ]; }; then
-      prune+=(-o -path "$d")
+      prune+=(-o -path "$d"); skip+=("${d#./}/")
     fi
   done < <(cd "$src" && find . -mindepth 1 -type d \( -name .git -prune -o -print0 \))
+  local top=""
+  top="$(git -C "$src" rev-parse --show-toplevel 2>/dev/null || true)"
+  if [ -n "$top" ] && [ "$(cd "$top" && pwd -P)" = "$src" ]; then
+    (cd "$src" && git ls-files -z | while IFS= read -r -d '' d; do
+       [ -f "$d" ] || continue
+       case "$d" in build/*|build-*/*) continue ;; esac
+       for p in "${skip[@]}"; do [[ $d == "$p"* ]] && continue 2; done
+       printf '%s\0' "$d"
+     done | xargs -0 -r cp --parents -t "$dst")
+    return
+  fi
   (cd "$src" && find . \( "${prune[@]}" \) -prune -o -type f -print0 | xargs -0 -r cp --parents -t "$dst")
 }
 
@@ -458,7 +470,8 @@ cmd_hint() {
 cmd_watch() {
   parse_ids_dir "$@"
   local stamp; stamp="$(mktemp)"
-  trap 'rm -f "$stamp"' EXIT
+  # shellcheck disable=SC2064  # the name now: the local is gone when the trap runs
+  trap "rm -f '$stamp'" EXIT
   local rounds="${DT_WATCH_ROUNDS:-0}" done_rounds=0 args=("${SEL[@]}" "$DIR")
   while :; do
     touch "$stamp"

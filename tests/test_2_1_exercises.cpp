@@ -124,3 +124,28 @@ TEST_CASE("2.1 exercise 2.1-1 a kernel without interior is reported empty") {
       CHECK_FALSE(dt::inOpenKernel(P, {2, 0}));
   }
 }
+
+TEST_CASE("2.1 exercise 2.1-1 the open kernel test is exact on the lines of the edges") {
+  // Grid points of the bounding box fall exactly on edge lines and their extensions, where a
+  // rounded line equation errs; the reference is the test's own exact half-plane check.
+  std::vector<Named> polys = starShaped();
+  polys.push_back({"comb (empty kernel)", {{0, 0}, {4, 0}, {4, 3}, {3, 3}, {3, 1}, {1, 1}, {1, 3}, {0, 3}}});
+  polys.push_back({"unit square", {{0, 0}, {1, 0}, {1, 1}, {0, 1}}});
+  for (const Named& n : polys) {
+    const Box b = box(n.poly);
+    std::size_t wrong = 0;
+    for (int i = 0; i <= 60; ++i)
+      for (int j = 0; j <= 60; ++j) {
+        const dt::Point2 x = {b.x0 + (b.x1 - b.x0) * i / 60, b.y0 + (b.y1 - b.y0) * j / 60};
+        const bool want = strictlyInside(n.poly, x), got = dt::inOpenKernel(n.poly, x);
+        if (got != want && wrong++ == 0)
+          FAIL_CHECK("polygon '" << n.name << "', point (" << x.x << ", " << x.y << "): inOpenKernel says "
+                                 << std::string(got ? "inside" : "outside") << ", the point is "
+                                 << std::string(want ? "strictly left of every edge" : "on or right of an edge"));
+      }
+    CHECK_MESSAGE(wrong == 0, "polygon '" << n.name << "': " << wrong << " of 3721 sample points wrong");
+  }
+  const std::vector<dt::Point2> comb = polys[polys.size() - 2].poly;
+  CHECK_MESSAGE(dt::polygonKernel(comb).empty(), "polygon 'comb (empty kernel)'");
+  CHECK_MESSAGE(dt::polygonKernel(polys.back().poly).size() == 4, "polygon 'unit square' is its own kernel");
+}

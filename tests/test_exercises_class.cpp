@@ -128,7 +128,7 @@ void sh(const std::string& cmd) { REQUIRE_MESSAGE(std::system(cmd.c_str()) == 0,
 
 }  // namespace
 
-TEST_CASE("exercises a release holds no line of any solution and is refused inside the repository") {
+TEST_CASE("exercises class a release holds no line of any solution and is refused inside the repository") {
   const std::string root = outsideTmp("class_release");
   sh("rm -rf '" + root + "'");
   // Inside the repository: refused, nothing made.
@@ -150,12 +150,17 @@ TEST_CASE("exercises a release holds no line of any solution and is refused insi
                     dttest::readText(std::string(DT_SOURCE_DIR) + "/code/stats.cpp"));
   dttest::writeText(oddBuild + "/CMakeCache.txt", "\n");
   dttest::writeText(oddBuild + "/star.cpp", dttest::readText(std::string(DT_SOURCE_DIR) + "/code/star.cpp"));
+  // And the folder grade writes prove answers to, with the teacher's sheet.
+  const std::string answers = std::string(DT_SOURCE_DIR) + "/answers_" + pid;
+  sh("mkdir -p '" + answers + "'");
+  dttest::writeText(answers + "/SHEET.md", dttest::readText(std::string(DT_SOURCE_DIR) + "/book/solutions.md"));
   const Run r = exercise("release 2.3.4-1 2.1-1 2.3.5-1 '" + root + "'");
-  sh("rm -rf '" + nested + "' '" + oddBuild + "'");
+  sh("rm -rf '" + nested + "' '" + oddBuild + "' '" + answers + "'");
   INFO(r.out << r.err);
   REQUIRE(r.status == 0);
   CHECK_FALSE(fs::exists(root + "/nested_ws_" + pid));
   CHECK_FALSE(fs::exists(root + "/objects_" + pid));
+  CHECK_FALSE(fs::exists(root + "/answers_" + pid));
   CHECK(contains(dttest::readText(root + "/.exercise"), "ids: 2.3.4-1 2.1-1 2.3.5-1"));
   CHECK(contains(dttest::readText(root + "/answers.md"), "## Exercise 2.3.5-1"));
   CHECK_FALSE(fs::exists(root + "/.git"));
@@ -192,7 +197,7 @@ TEST_CASE("exercises a release holds no line of any solution and is refused insi
   sh("rm -rf '" + root + "'");
 }
 
-TEST_CASE("exercises a class of 30 workspaces is graded in one command into a TSV right for every row") {
+TEST_CASE("exercises class 30 workspaces are graded in one command into a TSV right for every row") {
   const std::string root = outsideTmp("class_30");
   sh("rm -rf '" + root + "' && mkdir -p '" + root + "'");
   const Run rel = exercise("release 2.3.4-1 '" + root + "/release'");
@@ -304,7 +309,7 @@ TEST_CASE("exercises a class of 30 workspaces is graded in one command into a TS
   sh("rm -rf '" + root + "'");
 }
 
-TEST_CASE("exercises grade catches the planted bugs of 2.1-1 and collects prove answers beside the sheet") {
+TEST_CASE("exercises class grade catches the planted bugs of 2.1-1 and collects prove answers beside the sheet") {
   const std::string root = outsideTmp("class_21");
   sh("rm -rf '" + root + "' && mkdir -p '" + root + "'");
   const Run rel = exercise("release 2.1-1 2.3.5-1 '" + root + "/release'");
