@@ -20,14 +20,20 @@ struct Run {
   std::string out, err;
 };
 
-// scripts/exercise.sh ARGS (already quoted), with ENV before it; stdout and stderr apart.
-Run exercise(const std::string& args, const std::string& env = "") {
+// scripts/exercise.sh ARGS (each one argument, never read by a shell) with the environment
+// variables ENV; stdout and stderr apart.
+Run exercise(const std::vector<std::string>& args,
+             const std::vector<std::pair<std::string, std::string>>& env = {}) {
   const std::string base = dttest::tmpPath("class_" + std::to_string(::getpid()));
-  const std::string cmd = env + " bash '" + DT_SOURCE_DIR + "/scripts/exercise.sh' " + args + " > '" +
-                          base + ".out' 2> '" + base + ".err'";
-  const int rc = std::system(cmd.c_str());
+  ch::ProcessIo io;
+  io.stdoutPath = base + ".out";
+  io.stderrPath = base + ".err";
+  io.env = env;
+  std::vector<std::string> argv = {"bash", std::string(DT_SOURCE_DIR) + "/scripts/exercise.sh"};
+  argv.insert(argv.end(), args.begin(), args.end());
+  const int rc = ch::runProgram(argv, io);
   Run r;
-  r.status = WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
+  r.status = rc >= 0 && rc < 128 ? rc : -1;
   r.out = dttest::readText(base + ".out");
   r.err = dttest::readText(base + ".err");
   return r;
@@ -124,16 +130,20 @@ std::string outsideTmp(const std::string& name) {
   return (fs::temp_directory_path() / ("dt_" + name + "_" + std::to_string(::getpid()))).string();
 }
 
-void sh(const std::string& cmd) { REQUIRE_MESSAGE(std::system(cmd.c_str()) == 0, cmd); }
+// A fresh empty directory (no shell: the paths are never read as code).
+void freshDirectory(const std::string& d) {
+  fs::remove_all(d);
+  fs::create_directories(d);
+}
 
 }  // namespace
 
 TEST_CASE("exercises class a release holds no line of any solution and is refused inside the repository") {
   const std::string root = outsideTmp("class_release");
-  sh("rm -rf '" + root + "'");
+  fs::remove_all(root);
   // Inside the repository: refused, nothing made.
   const std::string inside = std::string(DT_SOURCE_DIR) + "/mywork_release_test";
-  const Run in = exercise("release 2.3.4-1 '" + inside + "'");
+  const Run in = exercise({"release", "2.3.4-1", inside});
   CHECK(in.status == 2);
   CHECK(contains(in.err, "inside the repository"));
   CHECK_FALSE(fs::exists(inside));
@@ -143,7 +153,7 @@ TEST_CASE("exercises class a release holds no line of any solution and is refuse
   const std::string pid = std::to_string(::getpid());
   const std::string nested = std::string(DT_SOURCE_DIR) + "/nested_ws_" + pid;
   const std::string oddBuild = std::string(DT_SOURCE_DIR) + "/objects_" + pid;
-  sh("mkdir -p '" + nested + "/code' '" + nested + "/scripts' '" + oddBuild + "'");
+  for (const std::string& d : {nested + "/code", nested + "/scripts", oddBuild}) fs::create_directories(d);
   dttest::writeText(nested + "/CMakeLists.txt", "project(x)\n");
   dttest::writeText(nested + "/scripts/exercise.sh", "\n");
   dttest::writeText(nested + "/code/stats.cpp",
@@ -152,10 +162,10 @@ TEST_CASE("exercises class a release holds no line of any solution and is refuse
   dttest::writeText(oddBuild + "/star.cpp", dttest::readText(std::string(DT_SOURCE_DIR) + "/code/star.cpp"));
   // And the folder grade writes prove answers to, with the teacher's sheet.
   const std::string answers = std::string(DT_SOURCE_DIR) + "/answers_" + pid;
-  sh("mkdir -p '" + answers + "'");
+  fs::create_directories(answers);
   dttest::writeText(answers + "/SHEET.md", dttest::readText(std::string(DT_SOURCE_DIR) + "/book/solutions.md"));
-  const Run r = exercise("release 2.3.4-1 2.1-1 2.3.5-1 '" + root + "'");
-  sh("rm -rf '" + nested + "' '" + oddBuild + "' '" + answers + "'");
+  const Run r = exercise({"release", "2.3.4-1", "2.1-1", "2.3.5-1", root});
+  for (const std::string& d : {nested, oddBuild, answers}) fs::remove_all(d);
   INFO(r.out << r.err);
   REQUIRE(r.status == 0);
   CHECK_FALSE(fs::exists(root + "/nested_ws_" + pid));
@@ -194,13 +204,13 @@ TEST_CASE("exercises class a release holds no line of any solution and is refuse
   }
   CHECK(files > 100);
   CHECK(leaks == 0);
-  sh("rm -rf '" + root + "'");
+  fs::remove_all(root);
 }
 
 TEST_CASE("exercises class 30 workspaces are graded in one command into a TSV right for every row") {
   const std::string root = outsideTmp("class_30");
-  sh("rm -rf '" + root + "' && mkdir -p '" + root + "'");
-  const Run rel = exercise("release 2.3.4-1 '" + root + "/release'");
+  freshDirectory(root);
+  const Run rel = exercise({"release", "2.3.4-1", root + "/release"});
   INFO(rel.out << rel.err);
   REQUIRE(rel.status == 0);
 
@@ -263,10 +273,10 @@ TEST_CASE("exercises class 30 workspaces are graded in one command into a TSV ri
   cls.push_back({"untouched", "", "FAIL", "0/3", "fail\tfail\tfail", "exercise 2.3.4-1: not implemented yet"});
   REQUIRE(cls.size() == std::size_t(classSize));
 
-  std::string dirs;
+  std::vector<std::string> dirs;
   for (const Student& s : cls) {
     const std::string d = root + "/" + s.name;
-    sh("cp -r '" + root + "/release' '" + d + "'");
+    fs::copy(root + "/release", d, fs::copy_options::recursive | fs::copy_options::copy_symlinks);
     if (!s.body.empty()) dttest::writeText(d + "/code/stats.cpp", withRegion(released, "2.3.4-1", 0, s.body));
     if (s.editTest) {
       // The student's tests of the same names, made to pass on the stub: grade never uses them.
@@ -276,11 +286,13 @@ TEST_CASE("exercises class 30 workspaces are graded in one command into a TSV ri
                         "TEST_CASE(\"2.3.4 exercise 2.3.4-1 an edge two faces use in the same direction is rejected\") {}\n"
                         "TEST_CASE(\"2.3.4 exercise 2.3.4-1 a link across an unmatched edge is left as it was\") {}\n");
     }
-    dirs += " '" + d + "'";
+    dirs.push_back(d);
   }
   const auto t0 = std::chrono::steady_clock::now();
-  const Run g = exercise("grade 2.3.4-1" + dirs,
-                         "DT_GRADE_NO_BUILD=1 DT_TEST_TIMEOUT=15 DT_GRADE_BUILD='" + buildDir() + "'");
+  dirs.insert(dirs.begin(), {"grade", "2.3.4-1"});
+  const Run g = exercise(dirs, {{"DT_GRADE_NO_BUILD", "1"}, {"DT_TEST_TIMEOUT", "15"},
+                                {"DT_GRADE_BUILD", buildDir()}});
+  dirs.erase(dirs.begin(), dirs.begin() + 2);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   MESSAGE("graded " << classSize << " workspaces of 2.3.4-1 in " << seconds << " s");
   INFO(g.out << g.err);
@@ -306,13 +318,13 @@ TEST_CASE("exercises class 30 workspaces are graded in one command into a TSV ri
       CHECK(contains(rows[i + 1][6], "face "));
       CHECK(contains(rows[i + 1][6], ", edge "));
     }
-  sh("rm -rf '" + root + "'");
+  fs::remove_all(root);
 }
 
 TEST_CASE("exercises class grade catches the planted bugs of 2.1-1 and collects prove answers beside the sheet") {
   const std::string root = outsideTmp("class_21");
-  sh("rm -rf '" + root + "' && mkdir -p '" + root + "'");
-  const Run rel = exercise("release 2.1-1 2.3.5-1 '" + root + "/release'");
+  freshDirectory(root);
+  const Run rel = exercise({"release", "2.1-1", "2.3.5-1", root + "/release"});
   REQUIRE(rel.status == 0);
   const std::string teacher = dttest::readText(std::string(DT_SOURCE_DIR) + "/code/star.cpp");
   const std::string kernel = region(teacher, "2.1-1", 0), open = region(teacher, "2.1-1", 1);
@@ -328,18 +340,20 @@ TEST_CASE("exercises class grade catches the planted bugs of 2.1-1 and collects 
       {"correct", kernel, "PASS", "-"},
       {"last_edge", lastEdge, "FAIL", "polygon '"},
       {"flat", flat, "FAIL", "polygon 'two blocks whose kernel is a segment'"}};
-  std::string dirs;
+  std::vector<std::string> dirs;
   for (const Student& s : cls) {
     const std::string d = root + "/" + s.name;
-    sh("cp -r '" + root + "/release' '" + d + "'");
+    fs::copy(root + "/release", d, fs::copy_options::recursive | fs::copy_options::copy_symlinks);
     dttest::writeText(d + "/code/star.cpp",
                       withRegion(withRegion(released, "2.1-1", 0, s.body), "2.1-1", 1, open));
-    dirs += " '" + d + "'";
+    dirs.push_back(d);
   }
   dttest::writeText(root + "/correct/answers.md",
                     dttest::readText(root + "/correct/answers.md") + "Each update swaps or negates.\n");
-  const Run g = exercise("grade 2.1-1" + dirs,
-                         "DT_GRADE_NO_BUILD=1 DT_TEST_TIMEOUT=20 DT_GRADE_BUILD='" + buildDir() + "'");
+  dirs.insert(dirs.begin(), {"grade", "2.1-1"});
+  const Run g = exercise(dirs, {{"DT_GRADE_NO_BUILD", "1"}, {"DT_TEST_TIMEOUT", "20"},
+                                {"DT_GRADE_BUILD", buildDir()}});
+  dirs.erase(dirs.begin(), dirs.begin() + 2);
   INFO(g.out << g.err);
   REQUIRE(g.status == 0);
   const auto rows = tsv(g.out);
@@ -357,14 +371,15 @@ TEST_CASE("exercises class grade catches the planted bugs of 2.1-1 and collects 
   CHECK(rows[3][2] == "3/4");
 
   // A prove exercise: collected, never PASS; the answers beside the teacher's sheet.
-  const Run c = exercise("check '" + root + "/correct' 2.3.5-1");
+  const Run c = exercise({"check", root + "/correct", "2.3.5-1"});
   CHECK(c.status == 0);
   CHECK(contains(c.out, "collected 2.3.5-1"));
   CHECK_FALSE(contains(c.out, "PASS"));
-  const Run m = exercise("check 2.3.5-1 '" + root + "/flat'");
+  const Run m = exercise({"check", "2.3.5-1", root + "/flat"});
   CHECK(m.status == 1);
   CHECK(contains(m.out, "MISSING 2.3.5-1"));
-  const Run a = exercise("grade 2.3.5-1" + dirs, "DT_GRADE_ANSWERS='" + root + "/answers'");
+  dirs.insert(dirs.begin(), {"grade", "2.3.5-1"});
+  const Run a = exercise(dirs, {{"DT_GRADE_ANSWERS", root + "/answers"}});
   INFO(a.out << a.err);
   REQUIRE(a.status == 0);
   const auto arows = tsv(a.out);
@@ -374,5 +389,5 @@ TEST_CASE("exercises class grade catches the planted bugs of 2.1-1 and collects 
   CHECK(contains(dttest::readText(root + "/answers/correct.md"), "Each update swaps or negates."));
   CHECK(contains(dttest::readText(root + "/answers/SHEET.md"), "## Exercise 2.3.5-1"));
   CHECK(contains(dttest::readText(root + "/answers/SHEET.md"), "Tests (doctest names"));
-  sh("rm -rf '" + root + "'");
+  fs::remove_all(root);
 }
