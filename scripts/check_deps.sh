@@ -30,7 +30,12 @@ make         make               cmake (the generator)
 gnuplot      gnuplot-nox        chapters/common.h runGnuplot
 doxygen      doxygen            book/CMakeLists.txt
 clang++      clang              scripts/fuzz.sh
-chromium     chromium           README (looking at the book) and tests of the book
+chromium     chromium           README (looking at the book) and tests of the book, web/run_browser_test.sh
+em++         emscripten         web/build_wasm.sh web/CMakeLists.txt (the live figures in WebAssembly)
+emconfigure  emscripten         web/build_wasm.sh (GMP and MPFR for WebAssembly)
+emmake       emscripten         web/build_wasm.sh
+dpkg-source  dpkg-dev           web/build_wasm.sh (unpacks Debian's gmp source)
+chown        base               scripts/deps.sh
 perf         optional:linux-perf  chapters/ch2/sec2_3_4_algorithms.cpp (the profile table; optional)
 apt-get      base               scripts/deps.sh
 dpkg-query   base               scripts/deps.sh scripts/check_deps.sh
@@ -166,7 +171,7 @@ scan_sources() {
   local f
   # Shell scripts: the first word of every pipeline segment (after VAR=value assignments);
   # $(...) contents become segments of their own before quoted strings are dropped.
-  for f in scripts/*.sh .ci/run; do
+  for f in scripts/*.sh web/*.sh .ci/run; do
     [ -f "$f" ] || continue
     perl -0777 -ne '
       s/^[ \t]*#.*$//mg;                                  # comment lines

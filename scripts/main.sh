@@ -15,5 +15,10 @@ for src in chapters/ch2/*.cpp; do
 done
 if [ -f book/CMakeLists.txt ]; then
   cmake --build build --target book
+  # The live figures (web/): copied into the book's html/live when emscripten built them.
+  if [ -f build/web/dt_wasm.js ]; then
+    cmake --build build --target web_book > /dev/null
+    echo "live figures: build/book/html/live"
+  fi
   echo "book: build/book/html/index.html"
 fi
