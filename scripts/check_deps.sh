@@ -34,7 +34,7 @@ chromium     chromium           README (looking at the book) and tests of the bo
 em++         emscripten         web/build_wasm.sh web/CMakeLists.txt (the live figures in WebAssembly)
 emconfigure  emscripten         web/build_wasm.sh (GMP and MPFR for WebAssembly)
 emmake       emscripten         web/build_wasm.sh
-dpkg-source  dpkg-dev           web/build_wasm.sh (unpacks Debian's gmp source)
+dpkg-source  dpkg-dev           web/build_wasm.sh (unpacks the Debian source of gmp)
 chown        base               scripts/deps.sh
 perf         optional:linux-perf  chapters/ch2/sec2_3_4_algorithms.cpp (the profile table; optional)
 apt-get      base               scripts/deps.sh
