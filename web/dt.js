@@ -61,9 +61,10 @@ var DT = (function () {
       return outI();
     });
   };
-  // A scene (mode 0: DT(S) with ghost faces; 1: super-triangles, points inserted by step()).
-  api.sceneInit = function (xy, mode) {
-    return withPoints(xy, function (p, n) { return check(M._dtw_scene_init(p, n, mode)); });
+  // A scene (mode 0: DT(S) with ghost faces; 1: super-triangles `factor` times the box (10 if
+  // not given), the points inserted by step()).
+  api.sceneInit = function (xy, mode, factor) {
+    return withPoints(xy, function (p, n) { return check(M._dtw_scene_init(p, n, mode, factor || 10)); });
   };
   api.sceneMesh = function () {
     var k = M._dtw_scene_mesh();

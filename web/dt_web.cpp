@@ -40,6 +40,7 @@ struct Scene {
   std::unique_ptr<dt::Triangulation> T;
   std::vector<double> xy;  // the points of S
   std::size_t next = 0;    // 2.5: the next point to insert
+  double factor = 10;      // of the super-triangles (mode 1)
   dt::Face* start = nullptr;
   dt::InsertionStats stats;
   dt::InsertionScratch scratch;
@@ -183,10 +184,10 @@ DTW_EXPORT int dtw_triangulate_listings(const double* xy, int n) {
 }
 
 /// Starts a scene on n points. mode 0: DT(S) with ghost faces (2.2.2), for the cavity and ball
-/// of a moving point (2.1, 2.4); mode 1: the two super-triangles of 2.2.1 (factor 10 around the
+/// of a moving point (2.1, 2.4); mode 1: the two super-triangles of 2.2.1 (`factor` times the
 /// box of S), the points to be inserted one at a time by dtw_scene_step (2.5). Returns the
 /// number of finite faces, -1 on error.
-DTW_EXPORT int dtw_scene_init(const double* xy, int n, int mode) {
+DTW_EXPORT int dtw_scene_init(const double* xy, int n, int mode, double factor) {
   return guarded([&] {
     scene = Scene{};
     scene.T = std::make_unique<dt::Triangulation>();
@@ -203,8 +204,9 @@ DTW_EXPORT int dtw_scene_init(const double* xy, int n, int mode) {
         y0 = std::min(y0, xy[2 * i + 1]);
         y1 = std::max(y1, xy[2 * i + 1]);
       }
-      dt::initSuperTriangles(*scene.T, x0, y0, x1, y1);
+      dt::initSuperTriangles(*scene.T, x0, y0, x1, y1, factor);
     }
+    scene.factor = factor;
     scene.start = const_cast<dt::Face*>(firstLiveFace(*scene.T));
     return int(scene.T->numFiniteFaces());
   });
@@ -271,7 +273,7 @@ DTW_EXPORT int dtw_flip_prepare() {
       y0 = std::min(y0, scene.xy[2 * i + 1]);
       y1 = std::max(y1, scene.xy[2 * i + 1]);
     }
-    dt::initSuperTriangles(copy, x0, y0, x1, y1);
+    dt::initSuperTriangles(copy, x0, y0, x1, y1, scene.factor);
     dt::delaunayTrgl(copy, S, dt::StartRule::LastCavity);
     if (canonical(copy, false) != canonical(*scene.T, false))
       throw std::logic_error("the copy of DT(S0 u S) differs from the scene");

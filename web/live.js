@@ -87,7 +87,7 @@ var DTLive = (function () {
   function Cavity(root, opts) {
     opts = opts || {};
     var W = opts.width || 560, H = opts.height || 560;
-    var f = frame(root, "Figures 2.1 and 2.4, live: drag p_{n+1}", W, H);
+    var f = frame(root, "Figures 2.1 and 2.4, live: drag pₙ₊₁", W, H);
     var self = this;
     this.svg = f.svg;
     var gMesh = el("g", {}, f.svg), gCav = el("g", {}, f.svg), gBall = el("g", {}, f.svg),
@@ -175,7 +175,8 @@ var DTLive = (function () {
     var f = frame(root, "Figure 2.5, live: Bowyer-Watson one insertion at a time", W, H);
     var self = this;
     this.svg = f.svg;
-    var gMesh = el("g", {}, f.svg), gWalk = el("g", {}, f.svg), gCav = el("g", {}, f.svg),
+    // The faces of the walk and of the cavity (before the insertion) under the new mesh.
+    var gWalk = el("g", {}, f.svg), gCav = el("g", {}, f.svg), gMesh = el("g", {}, f.svg),
         gPts = el("g", {}, f.svg);
     var btn = html("button", { "class": "dt-step" }, f.controls, "insert the next point");
     var reset = html("button", { "class": "dt-reset" }, f.controls, "start again");
@@ -278,11 +279,13 @@ var DTLive = (function () {
       var stages = [0, 0, 0, 0, 0];
       for (var t = 2; t < cells.length; t += 3) stages[cells[t]]++;
       self.stages = stages;
-      f.info.textContent = "cell = " + (st / EPS) + " × 2^-53; naive sign wrong in " + wrong + " of " +
-        N * N + " cells; decided by: filter " + stages[0] + ", extended filter " + stages[4] +
-        ", exact doubles " + stages[2] + ", 128/256-bit integers " + stages[3] + ", GMP " + stages[1] +
-        " (stage colours: " + ["filter", "GMP", "doubles", "integers", "extended"].map(function (n, s) {
-          return n + " " + SERIES[s]; }).join(", ") + ")";
+      f.info.textContent = "cell = " + (st / EPS) + " × 2⁻⁵³; naive sign wrong in " + wrong + " of " +
+        N * N + " cells. Decided by: ";
+      [[0, "filter"], [4, "extended-exponent filter"], [2, "exact doubles"], [3, "128/256-bit integers"],
+       [1, "GMP"]].forEach(function (p) {
+        html("span", { "class": "dt-swatch", style: "background:" + SERIES[p[0]] }, f.info, "\u00a0\u00a0");
+        f.info.appendChild(document.createTextNode(" " + p[1] + " " + stages[p[0]] + "  "));
+      });
       return self;
     };
     this.zoom = function (d) {
@@ -370,6 +373,7 @@ var DTLive = (function () {
       var m = DT.sceneMesh(), d = [], dSuper = [];
       for (var t = 0; t < m.count; t++) {
         var sup = m.ids[3 * t] < 0 || m.ids[3 * t + 1] < 0 || m.ids[3 * t + 2] < 0;
+        if (sup && self.finished) continue;  // the end: DT(S) alone
         (sup ? dSuper : d).push(triPath(self.view, m.coords, 6 * t, 1));
       }
       clear(gMesh);
@@ -380,12 +384,13 @@ var DTLive = (function () {
     }
     this.start = function (xy) {
       self.xy = xy || randomPoints(opts.n || 25, 5);
-      DT.sceneInit(self.xy, 1);
+      // Super-triangles 1.25 times the box, as the static frames: small enough to need flips.
+      DT.sceneInit(self.xy, 1, 1.25);
       for (var left = self.xy.length / 2; left > 0;) left = DT.step().left;
       self.total = DT.flipPrepare();
       self.done = 0;
       self.finished = false;
-      self.view = new View(-0.35, -0.35, 1.35, 1.35, W, H);
+      self.view = new View(-0.7, -0.7, 1.7, 1.7, W, H);
       clear(gFlip); clear(gPts);
       drawMesh();
       for (var k = 0; k < self.xy.length; k += 2)
@@ -396,6 +401,7 @@ var DTLive = (function () {
       if (self.finished) return null;
       var r = DT.flipStep(), v = self.view, e = r.edges;
       clear(gFlip);
+      if (e.length !== 8) self.finished = true;
       drawMesh();
       if (e.length === 8) {
         self.done++;
@@ -406,7 +412,6 @@ var DTLive = (function () {
         f.info.textContent = "flip " + self.done + " of " + self.total + ": edge p" + r.ids[0] + " p" +
           r.ids[1] + " becomes p" + r.ids[2] + " p" + r.ids[3] + " (negative numbers: super vertices)";
       } else {
-        self.finished = true;
         f.info.textContent = "all " + self.total + " flips done: removing the faces that touch a super " +
           "vertex leaves DT(S), the same as recoverDelaunay's (checked by the library)";
       }

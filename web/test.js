@@ -200,6 +200,7 @@
       if (flips > 10000) break;
     }
     ok("2.3.6 flips replayed = recoverDelaunay's", flips === fig.total, flips + " vs " + fig.total);
+    ok("2.3.6 the last frame draws no super face", fig.svg.querySelector(".super").getAttribute("d") === "", "");
     var m = DT.sceneMesh(), real = 0;
     for (var t = 0; t < m.count; t++)
       if (m.ids[3 * t] >= 0 && m.ids[3 * t + 1] >= 0 && m.ids[3 * t + 2] >= 0) real++;
