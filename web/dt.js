@@ -118,5 +118,10 @@ var DT = (function () {
       return { order: o.slice(0, n), roundStarts: o.slice(n, n + rounds) };
     });
   };
+  // Seconds to triangulate dt::uniformPoints(n, seed) in WebAssembly, and the triangle count.
+  api.benchTriangulate = function (n, seed) {
+    var s = M._dtw_bench_triangulate(n, seed);
+    return { seconds: s, triangles: outI()[0] };
+  };
   return api;
 })();

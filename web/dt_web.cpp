@@ -3,6 +3,7 @@
 // here: every sign comes from the library's exact predicates, every triangle from its kernels.
 // Results go into two buffers (doubles and ints) that web/dt.js reads after each call.
 #include <algorithm>
+#include <chrono>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -15,6 +16,7 @@
 #include "cavity.h"
 #include "check.h"
 #include "fast_delaunay.h"
+#include "generators.h"
 #include "flip.h"
 #include "hilbert.h"
 #include "mesh.h"
@@ -391,4 +393,16 @@ DTW_EXPORT int dtw_brio_order(const double* xy, int n, int seed, int depth) {
     outI.insert(outI.end(), starts.begin(), starts.end());
     return int(starts.size());
   });
+}
+
+/// Speed (book/live.md): triangulates dt::uniformPoints(n, seed) with dt::fastDelaunay and
+/// returns the seconds it took (points already in memory); outI gets the triangle count.
+/// web_native_cases --bench runs the same function on the same points natively.
+DTW_EXPORT double dtw_bench_triangulate(int n, int seed) {
+  const std::vector<double> xy = dt::uniformPoints(std::size_t(n), std::uint64_t(seed));
+  const auto t0 = std::chrono::steady_clock::now();
+  const dt::FastResult r = dt::fastDelaunay(xy);
+  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  outI = {int(r.tri.size())};
+  return s;
 }

@@ -5,6 +5,8 @@
 //   web_native_cases OUT.js
 #include <algorithm>
 #include <array>
+#include <chrono>
+#include <cstdlib>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -71,8 +73,22 @@ void writeInts(std::FILE* f, const std::vector<T>& v) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (argc == 3 && std::string(argv[1]) == "--bench") {
+    // The native side of the speed comparison of the live page: dtw_bench_triangulate natively.
+    const long n = std::atol(argv[2]);
+    if (n < 3) {
+      std::fprintf(stderr, "web_native_cases: --bench '%s': need at least 3 points\n", argv[2]);
+      return 2;
+    }
+    const std::vector<double> xy = dt::uniformPoints(std::size_t(n), 1);
+    const auto t0 = std::chrono::steady_clock::now();
+    const dt::FastResult r = dt::fastDelaunay(xy);
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    std::printf("%.4f %zu\n", s, r.tri.size());
+    return 0;
+  }
   if (argc != 2) {
-    std::fprintf(stderr, "usage: web_native_cases OUT.js\n");
+    std::fprintf(stderr, "usage: web_native_cases OUT.js | web_native_cases --bench N\n");
     return 2;
   }
   const std::string out = argv[1], tmp = out + ".tmp";
