@@ -15,6 +15,7 @@ Face* lineSearch(Face* f, Vertex* v, SearchInfo* info) {
       return nullptr;
     }
     ++out.steps;
+    if (out.trace) out.trace->push_back(f);
     // A visibility walk on a Delaunay triangulation visits each face at most once; the cap
     // turns a corrupted mesh into an error instead of an endless loop.
     if (++visited > out.maxSteps) throw std::logic_error("lineSearch: walk does not terminate");

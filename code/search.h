@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 #include "mesh.h"
 
@@ -15,6 +16,8 @@ struct SearchInfo {
   /// Safety cap on the faces visited (the caller passes the number of faces: a visibility
   /// walk on a Delaunay triangulation never visits a face twice). Exceeding it throws.
   std::uint64_t maxSteps = ~std::uint64_t{0};
+  /// If set, every face visited is appended, in walk order (the live figure of 2.5 draws it).
+  std::vector<const Face*>* trace = nullptr;
 };
 
 /// Walks from face f towards v and returns the first face whose circumcircle strictly

@@ -31,6 +31,11 @@ gnuplot      gnuplot-nox        chapters/common.h runGnuplot (runProgram)
 doxygen      doxygen            book/CMakeLists.txt
 clang++      clang              scripts/fuzz.sh
 chromium     chromium           book/layout_check.sh (the book's layout, measured) and tests of the book
+em++         emscripten         web/build_wasm.sh web/CMakeLists.txt (the live figures in WebAssembly)
+emconfigure  emscripten         web/build_wasm.sh (GMP and MPFR for WebAssembly)
+emmake       emscripten         web/build_wasm.sh
+dpkg-source  dpkg-dev           web/build_wasm.sh (unpacks the Debian source of gmp)
+chown        base               scripts/deps.sh
 perf         optional:linux-perf  chapters/ch2/sec2_3_4_algorithms.cpp (the profile table; optional)
 apt-get      base               scripts/deps.sh
 dpkg-query   base               scripts/deps.sh scripts/check_deps.sh

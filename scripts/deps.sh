@@ -6,7 +6,7 @@
 set -euo pipefail
 DT_PACKAGES=(g++ cmake make libgmp-dev libmpfr-dev doctest-dev gnuplot-nox doxygen
              libjs-mathjax clang libclang-rt-14-dev chromium fonts-dejavu-core fonts-dejavu-extra git
-             shellcheck)
+             shellcheck emscripten dpkg-dev)
 # Optional: CGAL, the reference of bench_kernels (the build detects it; without it the benchmark
 # compares the listings with the fast kernel only), and perf, which samples one Table 2.1 run for
 # the 2.3.4 page (without it that table says so). Installed only when asked, e.g. by
@@ -25,6 +25,24 @@ if [ ${#missing[@]} -gt 0 ]; then
   echo "installing: ${missing[*]}"
   apt-get update -qq
   apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+# The live figures (web/, book/live.md) need GMP compiled to WebAssembly; it is built
+# (web/build_wasm.sh) from Debian's own source package, fetched here, once, with
+# `apt-get source gmp` into /var/cache/dt-wasm-src. deb-src is enabled for the system's Debian
+# release only if no source index is configured yet.
+wasm_src=${DT_WASM_SRC:-/var/cache/dt-wasm-src}
+if ! ls "$wasm_src"/gmp_*.dsc > /dev/null 2>&1; then
+  if [ -z "$(apt-cache showsrc gmp 2>/dev/null)" ]; then
+    codename=$(. /etc/os-release && echo "$VERSION_CODENAME")
+    printf '%s\n' "# Added by scripts/deps.sh: Debian's source packages (GMP for WebAssembly)" \
+      "Types: deb-src" "URIs: http://deb.debian.org/debian" "Suites: $codename" \
+      "Components: main" "Signed-By: /usr/share/keyrings/debian-archive-keyring.gpg" \
+      > /etc/apt/sources.list.d/dt-deb-src.sources
+    apt-get update -qq
+  fi
+  mkdir -p "$wasm_src"
+  chown _apt "$wasm_src" 2>/dev/null || true  # apt downloads as _apt when it can
+  (cd "$wasm_src" && apt-get source --download-only -qq gmp)
 fi
 if [ "${DT_WITH_OPTIONAL:-0}" = 1 ]; then
   for p in $(missing_of "${DT_OPTIONAL_PACKAGES[@]}"); do
