@@ -285,3 +285,14 @@ TEST_CASE("2.1.3 the ball has |C| + 2 triangles and DT_{n+1} is Delaunay") {
   CHECK(big.ok);
   CHECK(big.fullChecks == 400);
 }
+
+TEST_CASE("2.1.1 segmentsIntersect counts a touching endpoint of either segment") {
+  // Each endpoint of each segment in turn lies on the other segment, the segments otherwise
+  // apart: exactly one of the four "touching" clauses decides.
+  const dt::Point2 a = {0, 1}, b = {1, 0}, c = {0, 0}, d = {2, 0};
+  CHECK(dt::segmentsIntersect(a, b, c, d));  // b on cd
+  CHECK(dt::segmentsIntersect(b, a, c, d));  // a's end b, given first
+  CHECK(dt::segmentsIntersect(c, d, a, b));  // the second segment's end b on the first
+  CHECK(dt::segmentsIntersect(c, d, b, a));
+  CHECK_FALSE(dt::segmentsIntersect(a, {1, 0.5}, c, d));  // stops short of cd
+}
