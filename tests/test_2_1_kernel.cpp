@@ -296,3 +296,21 @@ TEST_CASE("2.1.1 segmentsIntersect counts a touching endpoint of either segment"
   CHECK(dt::segmentsIntersect(c, d, b, a));
   CHECK_FALSE(dt::segmentsIntersect(a, {1, 0.5}, c, d));  // stops short of cd
 }
+
+TEST_CASE("2.1.1 insidePolygon counts a ray through a vertex once") {
+  // The ray from x towards +x passes exactly through a corner of the polygon, where the
+  // boundary goes on from below the ray to above it (and, for the outer point, through two
+  // corners). The crossing number is half-open in y, so that corner is one crossing, not zero
+  // and not two; a rule closed at the lower end counts the wrong edge at the corner.
+  const std::vector<dt::Point2> diamond = {{0, -1}, {1, 0}, {0, 1}, {-1, 0}};
+  CHECK(dt::insidePolygon(diamond, {0, 0}));          // the ray meets corner (1, 0)
+  CHECK(dt::insidePolygon(diamond, {0.5, 0}));
+  CHECK(dt::insidePolygon(diamond, {-0.5, 0}));
+  CHECK_FALSE(dt::insidePolygon(diamond, {-2, 0}));   // through corners (-1, 0) and (1, 0)
+  CHECK_FALSE(dt::insidePolygon(diamond, {2, 0}));
+  CHECK_FALSE(dt::insidePolygon(diamond, {1, 0}));    // on the boundary
+  // The same polygon clockwise: the same answers.
+  const std::vector<dt::Point2> cw(diamond.rbegin(), diamond.rend());
+  CHECK(dt::insidePolygon(cw, {0, 0}));
+  CHECK_FALSE(dt::insidePolygon(cw, {-2, 0}));
+}
