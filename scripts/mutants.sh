@@ -159,6 +159,9 @@ if [ -n "${MUTANTS_WORK:-}" ]; then
   mkdir -p "$work"
 else
   work=$(mktemp -d "${TMPDIR:-/tmp}/dt_mutants.XXXXXX")
+  # Readable by others, like a checkout: a CLI test runs the copy's delaunay2d as user nobody
+  # (a file that user could not write must not be replaced), and mktemp's 0700 would stop it.
+  chmod 755 "$work"
   trap 'rm -rf "$work"' EXIT
 fi
 src="$work/src"
