@@ -30,7 +30,7 @@ make         make               cmake (the generator)
 gnuplot      gnuplot-nox        chapters/common.h runGnuplot (runProgram)
 doxygen      doxygen            book/CMakeLists.txt
 clang++      clang              scripts/fuzz.sh
-chromium     chromium           book/layout_check.sh (the book's layout, measured) and tests of the book
+chromium     chromium           book/layout_check.sh (the book layout, measured) and tests of the book
 em++         emscripten         web/build_wasm.sh web/CMakeLists.txt (the live figures in WebAssembly)
 emconfigure  emscripten         web/build_wasm.sh (GMP and MPFR for WebAssembly)
 emmake       emscripten         web/build_wasm.sh
@@ -72,6 +72,7 @@ xargs        base               scripts
 wc           base               scripts
 tr           base               scripts
 cut          base               scripts
+chmod        base               scripts/mutants.sh (the copy readable by others)
 seq          base               book/layout_check_selftest.sh
 diff         base               tests
 env          base               scripts (#!/usr/bin/env bash)

@@ -33,7 +33,7 @@ fi
 wasm_src=${DT_WASM_SRC:-/var/cache/dt-wasm-src}
 if ! ls "$wasm_src"/gmp_*.dsc > /dev/null 2>&1; then
   if [ -z "$(apt-cache showsrc gmp 2>/dev/null)" ]; then
-    codename=$(. /etc/os-release && echo "$VERSION_CODENAME")
+    codename=$(sed -n 's/^VERSION_CODENAME=//p' /etc/os-release)
     printf '%s\n' "# Added by scripts/deps.sh: Debian's source packages (GMP for WebAssembly)" \
       "Types: deb-src" "URIs: http://deb.debian.org/debian" "Suites: $codename" \
       "Components: main" "Signed-By: /usr/share/keyrings/debian-archive-keyring.gpg" \

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# shellcheck disable=SC2016,SC2128,SC2178  # literal backticks in sed patterns; 'sel' is a local string here and a local array elsewhere
 # Classroom exercises (exercises/exercises.txt). Solutions sit in code/ between
 # "BEGIN SOLUTION <id>" and "END SOLUTION <id>" comment lines, and in book/solutions.md between
 # the same markers.
@@ -522,7 +523,7 @@ grade_one() {
   # 3. Compile the spliced files with the library's own flags; link before the teacher's
   #    library and test objects (dt_tests' own link line, with the student's objects first).
   for f in $files; do
-    local o="$me/$(basename "$f" .cpp).o"
+    local o; o="$me/$(basename "$f" .cpp).o"
     # shellcheck disable=SC2086  # the flags are lists of words
     if ! (cd "$build" && "$GRADE_CXX" $GRADE_DEFINES -I"$HERE/code" $GRADE_INCLUDES $GRADE_FLAGS \
             -c "$me/$(basename "$f")" -o "$o") >"$me/cc.log" 2>&1; then

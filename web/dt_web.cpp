@@ -10,6 +10,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <limits>
 #include <vector>
 
 #include "bowyer_watson.h"
@@ -199,7 +200,8 @@ DTW_EXPORT int dtw_scene_init(const double* xy, int n, int mode, double factor) 
     if (mode == 0) {
       dt::delaunayTrglHull(*scene.T, S, dt::StartRule::LastCavity);
     } else {
-      double x0 = xy[0], x1 = xy[0], y0 = xy[1], y1 = xy[1];
+      const double inf = std::numeric_limits<double>::infinity();  // the points' bounding box
+      double x0 = inf, x1 = -inf, y0 = inf, y1 = -inf;
       for (int i = 0; i < n; ++i) {
         x0 = std::min(x0, xy[2 * i]);
         x1 = std::max(x1, xy[2 * i]);
