@@ -7,7 +7,7 @@ title = system('cat -- "${DT_DATADIR:-.}/fig2_9_title.txt"')
 do for [term in "png svg"] {
   eval fig_open(term, "fig2_9")
   set output (term eq "png" ? outdir."/fig2_9.png" : outdir."/fig2_9.svg")
-  set offsets 0.15, 0.15, 0.15, 0.15
+  set offsets 0.05, 0.05, 0.15, 0.15  # room for the end discs, no side band over 10 %
   set key outside bottom center horizontal samplen 1 width 2
   # Two lines (the count, then eq. (2.2)): one line is wider than the figure at its print size.
   cut = strstrt(title, ";")
