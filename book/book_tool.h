@@ -721,7 +721,7 @@ inline std::vector<SolutionBlock> solutionBlocks(const std::string& text, const 
 }
 
 /// A source file as an edition shows it. Student: a block becomes the one line the student's
-/// stub has (scripts/exercise.sh start), a "(remove)" block nothing. Teacher: the lines stay,
+/// stub has (scripts/exercise.sh start), a "(remove)" block nothing, padded with empty lines. Teacher: the lines stay,
 /// the markers become comments that say "answer", so line numbers match the repository.
 inline std::string editionCode(const std::string& text, const std::string& file, Edition ed) {
   solutionBlocks(text, file, false);  // balanced, or an error
@@ -737,14 +737,19 @@ inline std::string editionCode(const std::string& text, const std::string& file,
         out += indent + "// Answer to exercise " + id + " (teacher's edition) from here" + (rm ? ": a helper" : "") + "\n";
       else if (!rm)
         out += indent + "throw std::logic_error(\"exercise " + id + ": not implemented yet\");\n";
+      else
+        out += "\n";
       continue;
     }
     if (solutionMarker(line, "END", false, id, rm)) {
       inside = false;
-      if (ed == Edition::Teacher) out += indent + "// End of the answer to exercise " + id + "\n";
+      // Student: an empty line for every line dropped, so that line numbers (the claims index's
+      // links into the source browser) are the repository's in both editions.
+      out += ed == Edition::Teacher ? indent + "// End of the answer to exercise " + id + "\n" : "\n";
       continue;
     }
     if (!inside || ed == Edition::Teacher) out += line + "\n";
+    else out += "\n";
   }
   return out;
 }
