@@ -52,7 +52,7 @@ std::string trim(const std::string& s) {
   return s.substr(a, s.find_last_not_of(" \t\r") - a + 1);
 }
 
-// A marker line: "// BEGIN SOLUTION <id>" in code, "<!-- BEGIN SOLUTION <id> -->" in Markdown
+// A marker line: "BEGIN SOLUTION <id>" after // in code, "<!-- BEGIN SOLUTION <id> -->" in Markdown
 // (prose that mentions the markers, as exercises.txt's header does, is not one).
 bool isMarker(const std::string& line, const std::string& word) {
   const std::string t = trim(line);
@@ -177,7 +177,7 @@ TEST_CASE("exercises class a release holds no line of any solution and is refuse
   CHECK_FALSE(fs::exists(root + "/build"));
   // The markers stay around the stub, so that grade can cut the student's code out.
   const std::string stats = dttest::readText(root + "/code/stats.cpp");
-  CHECK(contains(stats, "// BEGIN SOLUTION 2.3.4-1\n  throw std::logic_error(\"exercise 2.3.4-1: not implemented yet\");\n  // END SOLUTION 2.3.4-1"));
+  CHECK(contains(stats, "// BEGIN " "SOLUTION 2.3.4-1\n  throw std::logic_error(\"exercise 2.3.4-1: not implemented yet\");\n  // END " "SOLUTION 2.3.4-1"));
   CHECK(contains(stats, "exercise 2.3.2-1: not implemented yet"));  // not released, stripped too
 
   // Every line of every solution region of the teacher's tree (code, tests, solutions page)
