@@ -11,6 +11,7 @@ function(step)
 endfunction()
 step(${CMAKE_COMMAND} --install "${BUILD_DIR}" --prefix "${work}/prefix")
 step(${CMAKE_COMMAND} -S "${SOURCE_DIR}/tests/consumer" -B "${work}/build"
-     -DCMAKE_PREFIX_PATH=${work}/prefix -DCMAKE_BUILD_TYPE=Release)
+     -DCMAKE_PREFIX_PATH=${work}/prefix -DCMAKE_BUILD_TYPE=Release
+     "-DCMAKE_CXX_FLAGS=${CONSUMER_FLAGS}" "-DCMAKE_EXE_LINKER_FLAGS=${CONSUMER_FLAGS}")
 step(${CMAKE_COMMAND} --build "${work}/build")
 step("${work}/build/app")
