@@ -64,29 +64,57 @@ inline std::string readText(const std::string& path) {
 
 inline bool fileExists(const std::string& path) { return std::ifstream(path).good(); }
 
-struct CliResult {
-  int status = -1;      // exit status of delaunay2d
-  std::string out, err; // its stdout and stderr
+/// What a program run by runCaptured() did.
+struct RunResult {
+  int status = -1;      // its exit status, or -1 when a signal ended it
+  std::string out, err; // its stdout and stderr (err is empty when stderr went to out)
 };
+using CliResult = RunResult;
+
+/// Runs the argument vector `argv` (no shell unless argv names one) with the extra environment
+/// `env`, capturing stdout and stderr into files of tmpPath(); with `mergeStderr` both go to out.
+inline RunResult runCaptured(const std::vector<std::string>& argv,
+                             const std::vector<std::pair<std::string, std::string>>& env = {},
+                             bool mergeStderr = false) {
+  static int counter = 0;
+  // The pid keeps parallel ctest entries (one process per test file) apart.
+  const std::string tag = std::to_string(::getpid()) + "_" + std::to_string(counter++);
+  const std::string o = tmpPath("run_out_" + tag), e = tmpPath("run_err_" + tag);
+  ch::ProcessIo io;
+  io.stdoutPath = o;
+  io.stderrPath = mergeStderr ? "&1" : e;
+  io.env = env;
+  const int rc = ch::runProgram(argv, io);
+  RunResult r;
+  r.status = rc >= 0 && rc < 128 ? rc : -1;
+  r.out = readText(o);
+  if (!mergeStderr) r.err = readText(e);
+  return r;
+}
 
 /// Runs build/delaunay2d with the given arguments, a shell command line the caller writes (and
 /// quotes: paths of tmpPath() are safe in '...'). The program's own path reaches the shell
 /// through the environment ("$DT_CLI_BIN"), so a build under any path works.
 inline CliResult runCli(const std::string& args) {
-  static int counter = 0;
-  // The pid keeps parallel ctest entries (one process per test file) apart.
-  const std::string tag = std::to_string(::getpid()) + "_" + std::to_string(counter++);
-  const std::string o = tmpPath("cli_out_" + tag), e = tmpPath("cli_err_" + tag);
-  ch::ProcessIo io;
-  io.stdoutPath = o;
-  io.stderrPath = e;
-  io.env = {{"DT_CLI_BIN", DT_CLI}};
-  const int rc = ch::runProgram({"sh", "-c", "\"$DT_CLI_BIN\" " + args}, io);
-  CliResult r;
-  r.status = rc >= 0 && rc < 128 ? rc : -1;
-  r.out = readText(o);
-  r.err = readText(e);
-  return r;
+  return runCaptured({"sh", "-c", "\"$DT_CLI_BIN\" " + args}, {{"DT_CLI_BIN", DT_CLI}});
+}
+
+/// Runs scripts/exercise.sh with `args` (each one argument, never read by a shell) and the
+/// environment variables `env`.
+inline RunResult runExerciseScript(const std::vector<std::string>& args,
+                                   const std::vector<std::pair<std::string, std::string>>& env,
+                                   bool mergeStderr) {
+  std::vector<std::string> argv = {"bash", std::string(DT_SOURCE_DIR) + "/scripts/exercise.sh"};
+  argv.insert(argv.end(), args.begin(), args.end());
+  return runCaptured(argv, env, mergeStderr);
+}
+
+/// The build directory of this test binary (not DT_TEST_TMP's parent: under a build path a
+/// shell would misread, DT_TEST_TMP is a directory of /tmp).
+inline std::string buildDir() { return DT_BINARY_DIR; }
+
+inline bool contains(const std::string& s, const std::string& part) {
+  return s.find(part) != std::string::npos;
 }
 
 /// Writes points as a Triangle .node file numbered from `first`.

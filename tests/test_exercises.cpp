@@ -8,37 +8,14 @@
 
 namespace {
 
-struct Run {
-  int status = -1;
-  std::string out;
-};
+using Run = dttest::RunResult;
+using dttest::buildDir;
+using dttest::contains;
 
-// Runs scripts/exercise.sh with `args` (each one argument, never read by a shell) and the
-// environment variables `env`; stdout and stderr together.
+// scripts/exercise.sh ARGS with the environment variables ENV; stdout and stderr together.
 Run exercise(const std::vector<std::string>& args,
              const std::vector<std::pair<std::string, std::string>>& env = {}) {
-  const std::string log = dttest::tmpPath("exercise_" + std::to_string(::getpid()) + ".log");
-  ch::ProcessIo io;
-  io.stdoutPath = log;
-  io.stderrPath = "&1";
-  io.env = env;
-  std::vector<std::string> argv = {"bash", std::string(DT_SOURCE_DIR) + "/scripts/exercise.sh"};
-  argv.insert(argv.end(), args.begin(), args.end());
-  const int rc = ch::runProgram(argv, io);
-  Run r;
-  r.status = rc >= 0 && rc < 128 ? rc : -1;
-  r.out = dttest::readText(log);
-  return r;
-}
-
-// The build directory of this test binary (DT_TEST_TMP is <build>/test_tmp).
-std::string buildDir() {
-  const std::string t = DT_TEST_TMP;
-  return t.substr(0, t.rfind('/'));
-}
-
-bool contains(const std::string& s, const std::string& part) {
-  return s.find(part) != std::string::npos;
+  return dttest::runExerciseScript(args, env, true);
 }
 
 }  // namespace

@@ -15,36 +15,15 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct Run {
-  int status = -1;
-  std::string out, err;
-};
+using Run = dttest::RunResult;
+using dttest::buildDir;
+using dttest::contains;
 
-// scripts/exercise.sh ARGS (each one argument, never read by a shell) with the environment
-// variables ENV; stdout and stderr apart.
+// scripts/exercise.sh ARGS with the environment variables ENV; stdout and stderr apart.
 Run exercise(const std::vector<std::string>& args,
              const std::vector<std::pair<std::string, std::string>>& env = {}) {
-  const std::string base = dttest::tmpPath("class_" + std::to_string(::getpid()));
-  ch::ProcessIo io;
-  io.stdoutPath = base + ".out";
-  io.stderrPath = base + ".err";
-  io.env = env;
-  std::vector<std::string> argv = {"bash", std::string(DT_SOURCE_DIR) + "/scripts/exercise.sh"};
-  argv.insert(argv.end(), args.begin(), args.end());
-  const int rc = ch::runProgram(argv, io);
-  Run r;
-  r.status = rc >= 0 && rc < 128 ? rc : -1;
-  r.out = dttest::readText(base + ".out");
-  r.err = dttest::readText(base + ".err");
-  return r;
+  return dttest::runExerciseScript(args, env, false);
 }
-
-std::string buildDir() {
-  const std::string t = DT_TEST_TMP;
-  return t.substr(0, t.rfind('/'));
-}
-
-bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
 
 std::string trim(const std::string& s) {
   const auto a = s.find_first_not_of(" \t\r");

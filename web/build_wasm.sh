@@ -24,32 +24,44 @@ srcdir=${DT_WASM_SRC:-/var/cache/dt-wasm-src}
 deps=$work/deps
 prefix=$deps/prefix
 
-# Unpacks the Debian source package $1 (version files from apt-get source) into $deps/$1.
+# Unpacks the Debian source package $1 (version files from apt-get source) into $2/$1.
 unpack() {
-  local pkg=$1 dsc
-  dsc=$(ls "$srcdir"/"$pkg"_*.dsc 2>/dev/null | head -n 1 || true)
+  local pkg=$1 dest=$2 dsc
+  dsc=$(find "$srcdir" -maxdepth 1 -name "${pkg}_*.dsc" 2>/dev/null | sort | head -n 1)
   if [ -z "$dsc" ]; then
     echo "build_wasm.sh: no Debian source of $pkg in $srcdir (run scripts/deps.sh as root)" >&2
     exit 1
   fi
-  rm -rf "$deps/$pkg"
-  dpkg-source --no-check -x "$dsc" "$deps/$pkg" > /dev/null
+  rm -rf "${dest:?}/$pkg"
+  dpkg-source --no-check -x "$dsc" "$dest/$pkg" > /dev/null
 }
 
 if [ ! -f "$prefix/lib/libgmp.a" ]; then
   echo "-- wasm: building GMP from Debian's source (once per build directory)"
   mkdir -p "$deps"
-  unpack gmp
+  # GMP's configure refuses a working directory whose name holds a space, a quote or a $
+  # ("unsafe absolute working directory name"), and make cannot install into one: GMP is built
+  # and installed in a fresh directory of mktemp (a safe name), and its library and headers are
+  # then copied into $prefix, whatever the build directory is called.
+  gmpwork=$(mktemp -d)
+  trap 'rm -rf "$gmpwork"' EXIT
+  unpack gmp "$gmpwork"
   (
-    cd "$deps/gmp"
+    cd "$gmpwork/gmp"
     # Debian's source has no doc/ (removed for licence reasons): drop it from the build.
     sed -i 's| doc/Makefile||' configure  # the list of outputs (and a case arm, left inert)
     sed -i 's|^\(SUBDIRS = .*\) doc$|\1|' Makefile.in
     emconfigure ./configure --host=none --disable-assembly --enable-cxx --disable-shared \
-      --enable-static --prefix="$prefix" > "$deps/gmp-configure.log" 2>&1
+      --enable-static --prefix="$gmpwork/prefix" > "$deps/gmp-configure.log" 2>&1
     emmake make -j"$jobs" > "$deps/gmp-make.log" 2>&1
     emmake make install > "$deps/gmp-install.log" 2>&1
   ) || { echo "build_wasm.sh: GMP build failed, see $deps/gmp-*.log" >&2; exit 1; }
+  mkdir -p "$prefix/lib" "$prefix/include"
+  cp "$gmpwork"/prefix/include/*.h "$prefix/include/"
+  cp "$gmpwork/prefix/lib/libgmp.a" "$prefix/lib/libgmp.a.part"
+  mv "$prefix/lib/libgmp.a.part" "$prefix/lib/libgmp.a"  # the marker of a finished build, last
+  rm -rf "$gmpwork"
+  trap - EXIT
 fi
 # MPFR is left out: only the notes' 200-bit scheme (dt::orient2dNotes, dt::*MPFR*) uses it, and
 # no live figure calls those. predicates.cpp still compiles against Debian's mpfr.h (its
