@@ -175,7 +175,9 @@ scan_sources() {
   local f
   # Shell scripts: the first word of every pipeline segment (after VAR=value assignments);
   # $(...) contents become segments of their own before quoted strings are dropped.
-  for f in scripts/*.sh book/*.sh web/*.sh .ci/run; do
+  local shells=(scripts/*.sh book/*.sh web/*.sh .ci/run)
+  [ -n "${DT_SCAN_SCRIPT:-}" ] && shells=("$DT_SCAN_SCRIPT")  # the self-test's planted script
+  for f in "${shells[@]}"; do
     [ -f "$f" ] || continue
     perl -0777 -ne '
       s/^[ \t]*#.*$//mg;                                  # comment lines
@@ -184,8 +186,13 @@ scan_sources() {
       while (s/`([^`]*)`/ Q /) { push @seg, $1 }
       push @seg, $_;
       for my $t (@seg) {
-        $t =~ s/\x27[^\x27]*\x27/Q/g; $t =~ s/"[^"]*"/Q/g;     # quoted strings (even multi-line)
+        # Quoted strings (even multi-line), in one left-to-right pass: an apostrophe inside
+        # "..." does not open a '...' string (two passes, first '...' then "...", paired the
+        # apostrophes of two messages and exposed the words between them as commands).
+        $t =~ s/"(?:[^"\\]|\\.)*"|\x27[^\x27]*\x27/Q/gs;
         $t =~ s/[ \t]#.*$//mg;                              # trailing comments
+        $t =~ s/=\([^()]*\)/=Q/g;                            # array assignments a=(...)
+        $t =~ s/(^[ \t]*|\bin[ \t]+|;;[ \t]*)[^\s()|;]+(?:\|[^\s()|;]+)*\)/$1/mg;  # case arms a|b)
         for my $part (split /&&|\|\||[|;(){}\n]/, $t) {
           my @w = split " ", $part;
           shift @w while @w && ($w[0] =~ /^[A-Za-z_][A-Za-z0-9_]*=/ ||
@@ -248,10 +255,31 @@ if [ "${1:-}" = --self-test ]; then
       echo "self-test: without $pkg: $(grep -m1 "package $pkg is not in" <<< "$out" | sed 's/^check_deps: //')"
     fi
   done
+  # The scanner: a planted script calls one program that is not in the table (uname), and
+  # names three others where the scan must not see a call: hostname in messages holding
+  # apostrophes, nice in a case arm, stat in an array. The check must name uname, and only it.
+  planted=$(mktemp)
+  trap 'rm -f "$tmp" "$planted"' EXIT
+  cat > "$planted" <<'PLANTED'
+echo "without $pkg: $(grep -m1 "is not in" <<< "$out" | sed 's/^x: //')"
+echo "the table's entries (hostname above)" >&2; echo "it's (hostname) not a call" >&2
+case "$1" in
+  nice|other) ;;
+esac
+local list=(stat cat) word
+uname -m
+PLANTED
+  out=$(DT_SCAN_SCRIPT=$planted DT_SCAN_ONLY=1 bash "$0" 2>&1) && status=1
+  if ! grep -q "calls 'uname'" <<< "$out" || grep "calls '" <<< "$out" | grep -qv "'uname'"; then
+    echo "self-test: FAILED: the scan of a planted script should name uname, and nothing else:"
+    echo "$out"; status=1
+  else
+    echo "self-test: the scan names the planted call of uname, and none of the quoted or case-arm words"
+  fi
   exit $status
 fi
 
-check_table
+[ "${DT_SCAN_ONLY:-0}" = 1 ] || check_table
 [ "${DT_CHECK_LISTS_ONLY:-0}" = 1 ] || check_scan
 if [ $fail != 0 ]; then
   echo "check_deps: FAILED (see above): install steps belong in scripts/deps.sh" >&2
