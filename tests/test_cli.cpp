@@ -355,14 +355,19 @@ std::string linkText(const std::string& path) {
   return n < 0 ? std::string() : std::string(buf, std::size_t(n));
 }
 
-// Runs a shell script (written to DIR/NAME.sh) with sh; returns its exit status.
+// Runs a shell script (written to DIR/NAME.sh) with sh; returns its exit status. The
+// triangulator's path reaches the script through the environment (cli() below): a build path
+// may hold a quote or a space, which no quoting pasted into the script survives.
 int runScript(const std::string& dir, const std::string& name, const std::string& script) {
   dttest::writeText(dir + "/" + name + ".sh", script + "\n");
-  const int rc = ch::runProgram({"sh", dir + "/" + name + ".sh"});
+  ch::ProcessIo io;
+  io.env = {{"DT_CLI_BIN", DT_CLI}};
+  const int rc = ch::runProgram({"sh", dir + "/" + name + ".sh"}, io);
   return rc >= 0 && rc < 128 ? rc : -1;
 }
 
-std::string cli() { return std::string("'") + DT_CLI + "'"; }
+// The triangulator in a script of runScript: its path, expanded by the shell, never parsed.
+std::string cli() { return "\"$DT_CLI_BIN\""; }
 
 // Every name in `dir` containing ".dttmp-": temporaries (or their backups) left behind.
 std::vector<std::string> temporariesIn(const std::string& dir) {
