@@ -356,6 +356,7 @@ struct Text {
   std::vector<Span> spans;
   int panel;
   bool inPlot;  // drawn by a plot (with labels, a key entry), not a set label or an axis
+  int plot;     // the plot's number in its panel (0: not in a plot)
 };
 struct Stroke {
   std::vector<std::pair<double, double>> pts;  // a polyline ("M" starts a new one: see `breaks`)
@@ -450,6 +451,7 @@ Svg parseSvg(const std::string& s) {
         t.colour = attr(tag, "fill");
         t.panel = panel;
         t.inPlot = depthInPlot > 0;
+        t.plot = depthInPlot > 0 ? plot : 0;
         const double size = std::atof(attr(tag, "font-size").c_str());
         const std::string family = attr(tag, "font-family");
         const std::size_t te = s.find("</text>", end);
@@ -839,11 +841,10 @@ TEST_CASE("figures the content check finds a plot that draws nothing") {
 namespace {
 
 /// The figures of geometry (points, edges, labels beside them) whose labels ch::LabelPlacer
-/// places: no label may touch anything. Not yet here: fig2_9 (its counts sit inside discs over
-/// the edges' ends), fig2_10 and fig_outside_hull (a fixed offset for p), fig_flip (in (b) the
-/// label "b: 5 (-1)" finds no clear place among the small triangles around b).
-const std::set<std::string> kGeometry = {"fig2_1", "fig2_2", "fig2_3", "fig2_4", "fig2_5", "fig2_6",
-                                         "fig2_11", "fig_recovery_frames"};
+/// places (fig2_9's counts sit inside their discs, where the edges stop): no label may touch
+/// anything.
+const std::set<std::string> kGeometry = {"fig2_1", "fig2_2", "fig2_3", "fig2_4", "fig2_5", "fig2_6", "fig2_9", "fig2_10",
+                                         "fig2_11", "fig_flip", "fig_outside_hull", "fig_recovery_frames"};
 
 std::map<std::string, Svg> runSvgs() {
   std::map<std::string, Svg> out;
@@ -877,6 +878,138 @@ TEST_CASE("figures every plot of every panel of every SVG draws something") {
       CHECK_MESSAGE(g.drawn > 0, name << ".svg panel " << g.panel << ": plot " << g.plot << " (" << g.title
                                       << ") draws nothing: its data is out of range or filtered away");
   }
+}
+
+namespace {
+
+/// What a plot draws per row or block of its data file: line segments (a block of k rows is
+/// k - 1 segments), point markers, labels, or paths (a circle each).
+enum class Draws { Segments, Markers, Texts, Paths };
+
+/// One series of a figure whose elements the program wrote into a data file.
+struct Series {
+  std::string figure;
+  int panel, plot;
+  std::string file;
+  Draws draws;
+};
+
+/// The number of elements the data file `text` holds for `d`: rows (not comments), or for
+/// segments the rows of each block (blocks end at a blank line) less one.
+int dataElements(const std::string& text, Draws d) {
+  std::istringstream in(text);
+  int rows = 0, segments = 0, block = 0;
+  for (std::string line; std::getline(in, line);) {
+    const std::size_t k = line.find_first_not_of(" \t\r");
+    if (k == std::string::npos) {
+      segments += std::max(0, block - 1), block = 0;
+      continue;
+    }
+    if (line[k] == '#') continue;
+    ++rows, ++block;
+  }
+  segments += std::max(0, block - 1);
+  return d == Draws::Segments ? segments : rows;
+}
+
+/// The number of elements plot `plot` of panel `panel` draws in the SVG: line segments (L
+/// commands: gnuplot joins a segment to the previous one when it starts where that ended),
+/// markers, texts or paths.
+int svgElements(const Svg& svg, int panel, int plot, Draws d) {
+  int n = 0;
+  for (const Stroke& st : svg.strokes)
+    if (st.panel == panel && st.plot == plot) n += d == Draws::Segments ? int(st.pts.size() - st.breaks.size()) : d == Draws::Paths ? 1 : 0;
+  if (d == Draws::Markers)
+    for (const Marker& m : svg.markers) n += m.panel == panel && m.plot == plot;
+  if (d == Draws::Texts)
+    for (const Text& t : svg.texts) n += t.panel == panel && t.plot == plot;
+  return n;
+}
+
+/// The series of the geometry figures whose data files hold exactly what they draw (the
+/// figures' scripts name these files; panel and plot as numbered in the SVG).
+std::vector<Series> knownSeries(const fs::path& dir) {
+  std::vector<Series> s = {
+      {"fig2_4", 1, 4, "fig2_4_dt.dat", Draws::Segments},
+      {"fig2_4", 1, 9, "fig2_1_points.dat", Draws::Markers},
+      {"fig2_4", 1, 10, "fig2_1_p.dat", Draws::Markers},
+      {"fig2_9", 1, 1, "fig2_9_tri.dat", Draws::Segments},
+      {"fig2_9", 1, 2, "fig2_9_vertices.dat", Draws::Paths},
+      {"fig2_9", 1, 3, "fig2_9_vertices.dat", Draws::Texts},
+      {"fig2_10", 1, 2, "fig2_10_before.dat", Draws::Segments},
+      {"fig2_10", 1, 3, "fig2_10_point.dat", Draws::Markers},
+      {"fig2_10", 1, 4, "fig2_10_label.dat", Draws::Texts},
+      {"fig2_10", 2, 3, "fig2_10_after.dat", Draws::Segments},
+      {"fig2_10", 2, 6, "fig2_10_point.dat", Draws::Markers},
+      {"fig2_10", 2, 7, "fig2_10_label.dat", Draws::Texts},
+      {"fig_flip", 1, 1, "flip_before_tri.dat", Draws::Segments},
+      {"fig_flip", 2, 1, "flip_after_tri.dat", Draws::Segments}};
+  int k = 0;
+  for (const std::string row : {"outhull", "outline"})
+    for (const std::string when : {"before", "after"}) {
+      ++k;
+      s.push_back({"fig_outside_hull", k, 1, row + "_" + when + ".dat", Draws::Segments});
+      s.push_back({"fig_outside_hull", k, 2, row + "_points.dat", Draws::Markers});
+      s.push_back({"fig_outside_hull", k, 3, row + "_q.dat", Draws::Markers});
+      s.push_back({"fig_outside_hull", k, 4, row + "_label.dat", Draws::Texts});
+    }
+  for (int f = 0; fs::exists(dir / ("rec_frame_" + std::to_string(f) + ".dat")); ++f) {
+    s.push_back({"fig_recovery_frames", f + 1, 1, "rec_frame_" + std::to_string(f) + ".dat", Draws::Segments});
+    s.push_back({"fig_recovery_frames", f + 1, 2, "rec_points.dat", Draws::Markers});
+    s.push_back({"fig_recovery_frames", f + 1, 3, "rec_super.dat", Draws::Markers});
+  }
+  return s;
+}
+
+/// Every series of `svg` (figure `name`) whose drawn count differs from its data file's.
+std::vector<std::string> seriesMismatches(const std::string& name, const Svg& svg, const std::vector<Series>& series,
+                                          const fs::path& dir) {
+  std::vector<std::string> out;
+  for (const Series& s : series) {
+    if (s.figure != name) continue;
+    const int want = dataElements(readAll(dir / s.file), s.draws), got = svgElements(svg, s.panel, s.plot, s.draws);
+    const char* what[] = {"segments", "markers", "labels", "paths"};
+    if (want != got || want == 0)
+      out.push_back("panel " + std::to_string(s.panel) + " plot " + std::to_string(s.plot) + " draws " + std::to_string(got) + " " +
+                    what[int(s.draws)] + ", its data " + s.file + " holds " + std::to_string(want));
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("figures the series count finds a dropped segment marker and label") {
+  CHECK(dataElements("# x y\n0 0\n1 1\n\n2 2\n3 3\n4 4\n", Draws::Segments) == 3);
+  CHECK(dataElements("# x y\n0 0\n1 1\n\n2 2\n", Draws::Markers) == 3);
+  const Svg svg = parseSvg(tinySvg("p", 40, 30));
+  CHECK(svgElements(svg, 1, 1, Draws::Segments) == 1);
+  CHECK(svgElements(svg, 1, 2, Draws::Markers) == 1);
+  CHECK(svgElements(svg, 1, 3, Draws::Texts) == 1);
+  const fs::path dir = fs::path(DT_TEST_TMP) / "series_check";
+  fs::create_directories(dir);
+  std::ofstream(dir / "edges.dat") << "10 50\n190 50\n\n";
+  std::ofstream(dir / "points.dat") << "100 20\n";
+  std::ofstream(dir / "two.dat") << "100 20\n120 20\n";
+  const std::vector<Series> ok = {{"tiny", 1, 1, "edges.dat", Draws::Segments}, {"tiny", 1, 2, "points.dat", Draws::Markers},
+                                  {"tiny", 1, 3, "points.dat", Draws::Texts}};
+  CHECK(seriesMismatches("tiny", svg, ok, dir).empty());
+  // The data holds two points, the figure draws one.
+  const std::vector<Series> dropped = {{"tiny", 1, 2, "two.dat", Draws::Markers}};
+  REQUIRE(seriesMismatches("tiny", svg, dropped, dir).size() == 1);
+  CHECK(seriesMismatches("tiny", svg, dropped, dir)[0] == "panel 1 plot 2 draws 1 markers, its data two.dat holds 2");
+  // An empty plot: its segment is gone.
+  CHECK(seriesMismatches("tiny", parseSvg(tinySvg("p", 40, 30, true)), ok, dir).size() == 1);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("figures every series of a geometry figure draws exactly what its data file holds") {
+  REQUIRE(svgs().size() >= 20);
+  const fs::path dir = figureRun().dir;
+  const auto series = knownSeries(dir);
+  REQUIRE(series.size() >= 30);
+  for (const Series& s : series) CHECK_MESSAGE(svgs().count(s.figure) == 1, s.figure << ".svg was not written");
+  for (const auto& [name, svg] : svgs())
+    for (const std::string& m : seriesMismatches(name, svg, series, dir)) FAIL_CHECK(name << ".svg: " << m);
 }
 
 TEST_CASE("figures every character of every SVG text is in the font the text names") {
@@ -1054,7 +1187,7 @@ TEST_CASE("figures the role check finds a solid circle and a super-vertex withou
   svg.strokes[0].colour = "rgb( 46, 125,  50)";  // the ball's green
   CHECK(roleBreaches("fig2_1", svg, roles).size() == 1);
   svg.strokes.clear();
-  Text super{"\xf0\x9d\x91\x9d\xe2\x88\x92" "1", 50, 50, 0, "middle", "rgb(123,  50, 148)", {{"DejaVu Math TeX Gyre", "\xf0\x9d\x91\x9d\xe2\x88\x92" "1", 20, 0}}, 1, true};
+  Text super{"\xf0\x9d\x91\x9d\xe2\x88\x92" "1", 50, 50, 0, "middle", "rgb(123,  50, 148)", {{"DejaVu Math TeX Gyre", "\xf0\x9d\x91\x9d\xe2\x88\x92" "1", 20, 0}}, 1, true, 1};
   svg.texts.push_back(super);
   CHECK(roleBreaches("fig2_5", svg, roles).size() == 1);  // no square
   svg.markers.push_back({60, 70, 5, "#gpPt4", "rgb(123,  50, 148)", 1, 2});
