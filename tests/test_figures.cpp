@@ -8,6 +8,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cstdint>
 #include <cstdlib>
@@ -1059,6 +1060,90 @@ TEST_CASE("figures every PNG is at least 1200 px wide") {
   for (const fs::path& p : pngs) {
     const auto [w, h] = pngSize(readAll(p));
     CHECK_MESSAGE(w >= 1200, p.filename().string() << " is " << w << " px wide");
+  }
+}
+
+namespace {
+
+/// The panel grid of a figure: its columns and rows, read from where the panel titles "(a) ...",
+/// "(b) ..." sit (style.gp's panel() centres each at the top of its cell of equal cells);
+/// {1, 1} without titles.
+std::pair<int, int> panelGrid(const Svg& svg) {
+  std::vector<double> xs, ys;
+  static const std::regex tag(R"(\([a-l]\) .*)");
+  auto add = [](std::vector<double>& v, double a) {
+    for (double b : v)
+      if (std::abs(a - b) < 2) return;
+    v.push_back(a);
+  };
+  for (const Text& t : svg.texts)
+    if (!t.inPlot && std::regex_match(t.str, tag)) add(xs, t.x), add(ys, t.y);
+  return {std::max<int>(1, int(xs.size())), std::max<int>(1, int(ys.size()))};
+}
+
+/// The blank band at each side (left, right, top, bottom) of each cell of the panel grid, as
+/// a fraction of the cell's width or height: ink (line points, markers, text boxes) is given
+/// to the cell it lies in.
+std::vector<std::array<double, 4>> cellBands(const Svg& svg, int cols, int rows) {
+  const double cw = svg.width / cols, ch = svg.height / rows;
+  std::vector<Box> ink(std::size_t(cols * rows), Box{1e300, 1e300, -1e300, -1e300});
+  auto grow = [&](double x, double y) {
+    if (x < 0 || y < 0 || x > svg.width || y > svg.height) return;
+    const int c = std::min(cols - 1, int(x / cw)), r = std::min(rows - 1, int(y / ch));
+    Box& b = ink[std::size_t(r * cols + c)];
+    b = {std::min(b.x0, x), std::min(b.y0, y), std::max(b.x1, x), std::max(b.y1, y)};
+  };
+  for (const Stroke& st : svg.strokes)
+    for (const auto& [x, y] : st.pts) grow(x, y);
+  for (const Marker& m : svg.markers) grow(m.x - m.r, m.y - m.r), grow(m.x + m.r, m.y + m.r);
+  for (const Text& t : svg.texts) {
+    const Box b = textBox(t);
+    grow(b.x0, b.y0), grow(b.x1, b.y1);
+  }
+  std::vector<std::array<double, 4>> out;
+  for (int r = 0; r < rows; ++r)
+    for (int c = 0; c < cols; ++c) {
+      const Box& b = ink[std::size_t(r * cols + c)];
+      if (b.x0 > b.x1) {
+        out.push_back({1, 1, 1, 1});  // an empty cell
+        continue;
+      }
+      out.push_back({(b.x0 - c * cw) / cw, ((c + 1) * cw - b.x1) / cw, (b.y0 - r * ch) / ch, ((r + 1) * ch - b.y1) / ch});
+    }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("figures the panel band check finds a half-empty panel") {
+  Svg svg;
+  svg.width = 400, svg.height = 200;
+  auto title = [](const std::string& s, double x) { return Text{s, x, 20, 0, "middle", "black", {{"Sans", s, 12, 0}}, 0, false, 0}; };
+  svg.texts = {title("(a) left", 100), title("(b) right", 300)};
+  REQUIRE(panelGrid(svg) == std::make_pair(2, 1));
+  svg.texts.clear();
+  // Panel (a) is filled edge to edge; panel (b) only in its left half.
+  svg.strokes.push_back({{{5, 30}, {195, 195}}, {0}, 2, "black", "", 1, 1});
+  svg.strokes.push_back({{{205, 30}, {300, 195}}, {0}, 2, "black", "", 2, 1});
+  const auto bands = cellBands(svg, 2, 1);
+  REQUIRE(bands.size() == 2);
+  CHECK(bands[0][1] == doctest::Approx(0.025));
+  CHECK(bands[1][1] == doctest::Approx(0.5));
+  CHECK(bands[1][3] == doctest::Approx(0.025));
+}
+
+TEST_CASE("figures no panel of a multi-panel figure has a blank band over 15 percent of its cell") {
+  REQUIRE(svgs().size() >= 20);
+  const char* side[] = {"left", "right", "top", "bottom"};
+  for (const auto& [name, svg] : svgs()) {
+    const auto [cols, rows] = panelGrid(svg);
+    if (cols * rows < 2) continue;
+    const auto bands = cellBands(svg, cols, rows);
+    for (std::size_t k = 0; k < bands.size(); ++k)
+      for (int s = 0; s < 4; ++s)
+        CHECK_MESSAGE(bands[k][std::size_t(s)] <= 0.15, name << ".svg panel " << std::string(1, char('a' + k)) << " (" << rows << " x " << cols
+                                                        << " grid): blank band at the " << std::string(side[s]) << ", "
+                                                        << 100 * bands[k][std::size_t(s)] << " % of its cell");
   }
 }
 

@@ -70,7 +70,7 @@ void panels(const ch::Options& o, const std::string& stem, int row, const XY& ba
     return std::to_string(k) + " " + w + (k == 1 ? "" : "s");
   };
   obj += "ftitle = \"" + note + plural(vis.size(), "visible edge") + ", " + plural(cavityFinite, "triangle") +
-         " in C\"\n";
+         " in " + ch::mathText("\\mathscr{C}") + "\"\n";
   // The row's two panels, laid out in pixels (VIEW), share one view: the after mesh contains q.
   double x0 = q->x, x1 = q->x, y0 = q->y, y1 = q->y;
   for (const dt::Vertex* v : S) x0 = std::min(x0, v->x), x1 = std::max(x1, v->x), y0 = std::min(y0, v->y), y1 = std::max(y1, v->y);

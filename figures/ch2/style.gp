@@ -38,7 +38,7 @@ FIGSIZES = " fig2_1 1400 640" . \
            " fig_ladder_time 1200 900" . \
            " fig_outlier_walk 1400 640" . \
            " fig_time_per_point 1200 860" . \
-           " fig_outside_hull 1200 1200" . \
+           " fig_outside_hull 1200 1440" . \
            " fig_parabola_cavity 1200 860" . \
            " fig_recovery_frames 1500 1100" . \
            " fig_table2_1_search 1200 860 "
