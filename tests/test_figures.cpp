@@ -1132,7 +1132,7 @@ TEST_CASE("figures the panel band check finds a half-empty panel") {
   CHECK(bands[1][3] == doctest::Approx(0.025));
 }
 
-TEST_CASE("figures no panel of a multi-panel figure has a blank band over 15 percent of its cell") {
+TEST_CASE("figures no panel of a multi-panel figure has a blank band over 12 percent of its cell") {
   REQUIRE(svgs().size() >= 20);
   const char* side[] = {"left", "right", "top", "bottom"};
   for (const auto& [name, svg] : svgs()) {
@@ -1141,7 +1141,7 @@ TEST_CASE("figures no panel of a multi-panel figure has a blank band over 15 per
     const auto bands = cellBands(svg, cols, rows);
     for (std::size_t k = 0; k < bands.size(); ++k)
       for (int s = 0; s < 4; ++s)
-        CHECK_MESSAGE(bands[k][std::size_t(s)] <= 0.15, name << ".svg panel " << std::string(1, char('a' + k)) << " (" << rows << " x " << cols
+        CHECK_MESSAGE(bands[k][std::size_t(s)] <= 0.12, name << ".svg panel " << std::string(1, char('a' + k)) << " (" << rows << " x " << cols
                                                         << " grid): blank band at the " << std::string(side[s]) << ", "
                                                         << 100 * bands[k][std::size_t(s)] << " % of its cell");
   }
