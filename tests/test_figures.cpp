@@ -1,6 +1,8 @@
 /// \file test_figures.cpp Tests of the figures themselves (the figure style, book/figure_style.md):
 /// every figure the book embeds is written by a run of the chapter programs, every SVG is
-/// well-formed XML in UTF-8, and every PNG (and the GIF) has the size figures/ch2/style.gp gives.
+/// well-formed XML in UTF-8, every PNG (and the GIF) has the size figures/ch2/style.gp gives, no
+/// label touches anything, each series draws what its data file holds, no panel has a wide
+/// blank band, and each PNG shows what its SVG shows.
 //
 // The suite runs the chapter programs that draw the book's figures once, into a fresh
 // directory (--quick --max-n 2000: the figures are the full ones, the tables small; about
