@@ -917,11 +917,15 @@ int dataElements(const std::string& text, Draws d) {
 
 /// The number of elements plot `plot` of panel `panel` draws in the SVG: line segments (L
 /// commands: gnuplot joins a segment to the previous one when it starts where that ended),
-/// markers, texts or paths.
+/// markers, texts or distinct paths.
 int svgElements(const Svg& svg, int panel, int plot, Draws d) {
   int n = 0;
+  std::set<std::vector<std::pair<double, double>>> paths;  // gnuplot strokes an empty circle twice, over itself
   for (const Stroke& st : svg.strokes)
-    if (st.panel == panel && st.plot == plot) n += d == Draws::Segments ? int(st.pts.size() - st.breaks.size()) : d == Draws::Paths ? 1 : 0;
+    if (st.panel == panel && st.plot == plot) {
+      if (d == Draws::Segments) n += int(st.pts.size() - st.breaks.size());
+      if (d == Draws::Paths) n += paths.insert(st.pts).second;
+    }
   if (d == Draws::Markers)
     for (const Marker& m : svg.markers) n += m.panel == panel && m.plot == plot;
   if (d == Draws::Texts)
@@ -933,6 +937,24 @@ int svgElements(const Svg& svg, int panel, int plot, Draws d) {
 /// figures' scripts name these files; panel and plot as numbered in the SVG).
 std::vector<Series> knownSeries(const fs::path& dir) {
   std::vector<Series> s = {
+      {"fig2_1", 1, 1, "fig2_1_dtn.dat", Draws::Segments},
+      {"fig2_1", 1, 2, "fig2_1_points.dat", Draws::Markers},
+      {"fig2_1", 1, 3, "fig2_1_p.dat", Draws::Markers},
+      {"fig2_1", 1, 4, "fig2_1_p.dat", Draws::Texts},
+      {"fig2_1", 2, 2, "fig2_1_circles.dat", Draws::Paths},
+      {"fig2_1", 2, 3, "fig2_1_dtn.dat", Draws::Segments},
+      {"fig2_1", 2, 5, "fig2_1_points.dat", Draws::Markers},
+      {"fig2_1", 2, 6, "fig2_1_p.dat", Draws::Markers},
+      {"fig2_1", 2, 7, "fig2_1_p.dat", Draws::Texts},
+      {"fig2_6", 1, 2, "fig2_6_all.dat", Draws::Segments},
+      {"fig2_6", 1, 3, "fig2_6_crossing.dat", Draws::Segments},
+      {"fig2_6", 1, 4, "fig2_6_circle.dat", Draws::Paths},
+      {"fig2_6", 1, 5, "fig2_6_points.dat", Draws::Markers},
+      {"fig2_6", 1, 6, "fig2_6_super.dat", Draws::Markers},
+      {"fig2_6", 1, 7, "fig2_6_super.dat", Draws::Texts},
+      {"fig2_6", 2, 3, "fig2_6_kept_edges.dat", Draws::Segments},
+      {"fig2_6", 2, 6, "fig2_6_points.dat", Draws::Markers},
+      {"fig2_6", 2, 7, "fig2_6_labels.dat", Draws::Texts},
       {"fig2_4", 1, 4, "fig2_4_dt.dat", Draws::Segments},
       {"fig2_4", 1, 9, "fig2_1_points.dat", Draws::Markers},
       {"fig2_4", 1, 10, "fig2_1_p.dat", Draws::Markers},
