@@ -1,6 +1,8 @@
 /// \file test_figures.cpp Tests of the figures themselves (the figure style, book/figure_style.md):
 /// every figure the book embeds is written by a run of the chapter programs, every SVG is
-/// well-formed XML in UTF-8, and every PNG (and the GIF) has the size figures/ch2/style.gp gives.
+/// well-formed XML in UTF-8, every PNG (and the GIF) has the size figures/ch2/style.gp gives, no
+/// label touches anything, each series draws what its data file holds, no panel has a wide
+/// blank band, and each PNG shows what its SVG shows.
 //
 // The suite runs the chapter programs that draw the book's figures once, into a fresh
 // directory (--quick --max-n 2000: the figures are the full ones, the tables small; about
@@ -8,6 +10,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cstdint>
 #include <cstdlib>
@@ -356,6 +359,7 @@ struct Text {
   std::vector<Span> spans;
   int panel;
   bool inPlot;  // drawn by a plot (with labels, a key entry), not a set label or an axis
+  int plot;     // the plot's number in its panel (0: not in a plot)
 };
 struct Stroke {
   std::vector<std::pair<double, double>> pts;  // a polyline ("M" starts a new one: see `breaks`)
@@ -450,6 +454,7 @@ Svg parseSvg(const std::string& s) {
         t.colour = attr(tag, "fill");
         t.panel = panel;
         t.inPlot = depthInPlot > 0;
+        t.plot = depthInPlot > 0 ? plot : 0;
         const double size = std::atof(attr(tag, "font-size").c_str());
         const std::string family = attr(tag, "font-family");
         const std::size_t te = s.find("</text>", end);
@@ -839,11 +844,10 @@ TEST_CASE("figures the content check finds a plot that draws nothing") {
 namespace {
 
 /// The figures of geometry (points, edges, labels beside them) whose labels ch::LabelPlacer
-/// places: no label may touch anything. Not yet here: fig2_9 (its counts sit inside discs over
-/// the edges' ends), fig2_10 and fig_outside_hull (a fixed offset for p), fig_flip (in (b) the
-/// label "b: 5 (-1)" finds no clear place among the small triangles around b).
-const std::set<std::string> kGeometry = {"fig2_1", "fig2_2", "fig2_3", "fig2_4", "fig2_5", "fig2_6",
-                                         "fig2_11", "fig_recovery_frames"};
+/// places (fig2_9's counts sit inside their discs, where the edges stop): no label may touch
+/// anything.
+const std::set<std::string> kGeometry = {"fig2_1", "fig2_2", "fig2_3", "fig2_4", "fig2_5", "fig2_6", "fig2_9", "fig2_10",
+                                         "fig2_11", "fig_flip", "fig_outside_hull", "fig_recovery_frames"};
 
 std::map<std::string, Svg> runSvgs() {
   std::map<std::string, Svg> out;
@@ -877,6 +881,160 @@ TEST_CASE("figures every plot of every panel of every SVG draws something") {
       CHECK_MESSAGE(g.drawn > 0, name << ".svg panel " << g.panel << ": plot " << g.plot << " (" << g.title
                                       << ") draws nothing: its data is out of range or filtered away");
   }
+}
+
+namespace {
+
+/// What a plot draws per row or block of its data file: line segments (a block of k rows is
+/// k - 1 segments), point markers, labels, or paths (a circle each).
+enum class Draws { Segments, Markers, Texts, Paths };
+
+/// One series of a figure whose elements the program wrote into a data file.
+struct Series {
+  std::string figure;
+  int panel, plot;
+  std::string file;
+  Draws draws;
+};
+
+/// The number of elements the data file `text` holds for `d`: rows (not comments), or for
+/// segments the rows of each block (blocks end at a blank line) less one.
+int dataElements(const std::string& text, Draws d) {
+  std::istringstream in(text);
+  int rows = 0, segments = 0, block = 0;
+  for (std::string line; std::getline(in, line);) {
+    const std::size_t k = line.find_first_not_of(" \t\r");
+    if (k == std::string::npos) {
+      segments += std::max(0, block - 1), block = 0;
+      continue;
+    }
+    if (line[k] == '#') continue;
+    ++rows, ++block;
+  }
+  segments += std::max(0, block - 1);
+  return d == Draws::Segments ? segments : rows;
+}
+
+/// The number of elements plot `plot` of panel `panel` draws in the SVG: line segments (L
+/// commands: gnuplot joins a segment to the previous one when it starts where that ended),
+/// markers, texts or distinct paths.
+int svgElements(const Svg& svg, int panel, int plot, Draws d) {
+  int n = 0;
+  std::set<std::vector<std::pair<double, double>>> paths;  // gnuplot strokes an empty circle twice, over itself
+  for (const Stroke& st : svg.strokes)
+    if (st.panel == panel && st.plot == plot) {
+      if (d == Draws::Segments) n += int(st.pts.size() - st.breaks.size());
+      if (d == Draws::Paths) n += paths.insert(st.pts).second;
+    }
+  if (d == Draws::Markers)
+    for (const Marker& m : svg.markers) n += m.panel == panel && m.plot == plot;
+  if (d == Draws::Texts)
+    for (const Text& t : svg.texts) n += t.panel == panel && t.plot == plot;
+  return n;
+}
+
+/// The series of the geometry figures whose data files hold exactly what they draw (the
+/// figures' scripts name these files; panel and plot as numbered in the SVG).
+std::vector<Series> knownSeries(const fs::path& dir) {
+  std::vector<Series> s = {
+      {"fig2_1", 1, 1, "fig2_1_dtn.dat", Draws::Segments},
+      {"fig2_1", 1, 2, "fig2_1_points.dat", Draws::Markers},
+      {"fig2_1", 1, 3, "fig2_1_p.dat", Draws::Markers},
+      {"fig2_1", 1, 4, "fig2_1_p.dat", Draws::Texts},
+      {"fig2_1", 2, 2, "fig2_1_circles.dat", Draws::Paths},
+      {"fig2_1", 2, 3, "fig2_1_dtn.dat", Draws::Segments},
+      {"fig2_1", 2, 5, "fig2_1_points.dat", Draws::Markers},
+      {"fig2_1", 2, 6, "fig2_1_p.dat", Draws::Markers},
+      {"fig2_1", 2, 7, "fig2_1_p.dat", Draws::Texts},
+      {"fig2_6", 1, 2, "fig2_6_all.dat", Draws::Segments},
+      {"fig2_6", 1, 3, "fig2_6_crossing.dat", Draws::Segments},
+      {"fig2_6", 1, 4, "fig2_6_circle.dat", Draws::Paths},
+      {"fig2_6", 1, 5, "fig2_6_points.dat", Draws::Markers},
+      {"fig2_6", 1, 6, "fig2_6_super.dat", Draws::Markers},
+      {"fig2_6", 1, 7, "fig2_6_super.dat", Draws::Texts},
+      {"fig2_6", 2, 3, "fig2_6_kept_edges.dat", Draws::Segments},
+      {"fig2_6", 2, 6, "fig2_6_points.dat", Draws::Markers},
+      {"fig2_6", 2, 7, "fig2_6_labels.dat", Draws::Texts},
+      {"fig2_4", 1, 4, "fig2_4_dt.dat", Draws::Segments},
+      {"fig2_4", 1, 9, "fig2_1_points.dat", Draws::Markers},
+      {"fig2_4", 1, 10, "fig2_1_p.dat", Draws::Markers},
+      {"fig2_9", 1, 1, "fig2_9_tri.dat", Draws::Segments},
+      {"fig2_9", 1, 2, "fig2_9_vertices.dat", Draws::Paths},
+      {"fig2_9", 1, 3, "fig2_9_vertices.dat", Draws::Texts},
+      {"fig2_10", 1, 2, "fig2_10_before.dat", Draws::Segments},
+      {"fig2_10", 1, 3, "fig2_10_point.dat", Draws::Markers},
+      {"fig2_10", 1, 4, "fig2_10_label.dat", Draws::Texts},
+      {"fig2_10", 2, 3, "fig2_10_after.dat", Draws::Segments},
+      {"fig2_10", 2, 6, "fig2_10_point.dat", Draws::Markers},
+      {"fig2_10", 2, 7, "fig2_10_label.dat", Draws::Texts},
+      {"fig_flip", 1, 1, "flip_before_tri.dat", Draws::Segments},
+      {"fig_flip", 2, 1, "flip_after_tri.dat", Draws::Segments}};
+  int k = 0;
+  for (const std::string row : {"outhull", "outline"})
+    for (const std::string when : {"before", "after"}) {
+      ++k;
+      s.push_back({"fig_outside_hull", k, 1, row + "_" + when + ".dat", Draws::Segments});
+      s.push_back({"fig_outside_hull", k, 2, row + "_points.dat", Draws::Markers});
+      s.push_back({"fig_outside_hull", k, 3, row + "_q.dat", Draws::Markers});
+      s.push_back({"fig_outside_hull", k, 4, row + "_label.dat", Draws::Texts});
+    }
+  for (int f = 0; fs::exists(dir / ("rec_frame_" + std::to_string(f) + ".dat")); ++f) {
+    s.push_back({"fig_recovery_frames", f + 1, 1, "rec_frame_" + std::to_string(f) + ".dat", Draws::Segments});
+    s.push_back({"fig_recovery_frames", f + 1, 2, "rec_points.dat", Draws::Markers});
+    s.push_back({"fig_recovery_frames", f + 1, 3, "rec_super.dat", Draws::Markers});
+  }
+  return s;
+}
+
+/// Every series of `svg` (figure `name`) whose drawn count differs from its data file's.
+std::vector<std::string> seriesMismatches(const std::string& name, const Svg& svg, const std::vector<Series>& series,
+                                          const fs::path& dir) {
+  std::vector<std::string> out;
+  for (const Series& s : series) {
+    if (s.figure != name) continue;
+    const int want = dataElements(readAll(dir / s.file), s.draws), got = svgElements(svg, s.panel, s.plot, s.draws);
+    const char* what[] = {"segments", "markers", "labels", "paths"};
+    if (want != got || want == 0)
+      out.push_back("panel " + std::to_string(s.panel) + " plot " + std::to_string(s.plot) + " draws " + std::to_string(got) + " " +
+                    what[int(s.draws)] + ", its data " + s.file + " holds " + std::to_string(want));
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("figures the series count finds a dropped segment marker and label") {
+  CHECK(dataElements("# x y\n0 0\n1 1\n\n2 2\n3 3\n4 4\n", Draws::Segments) == 3);
+  CHECK(dataElements("# x y\n0 0\n1 1\n\n2 2\n", Draws::Markers) == 3);
+  const Svg svg = parseSvg(tinySvg("p", 40, 30));
+  CHECK(svgElements(svg, 1, 1, Draws::Segments) == 1);
+  CHECK(svgElements(svg, 1, 2, Draws::Markers) == 1);
+  CHECK(svgElements(svg, 1, 3, Draws::Texts) == 1);
+  const fs::path dir = fs::path(DT_TEST_TMP) / "series_check";
+  fs::create_directories(dir);
+  std::ofstream(dir / "edges.dat") << "10 50\n190 50\n\n";
+  std::ofstream(dir / "points.dat") << "100 20\n";
+  std::ofstream(dir / "two.dat") << "100 20\n120 20\n";
+  const std::vector<Series> ok = {{"tiny", 1, 1, "edges.dat", Draws::Segments}, {"tiny", 1, 2, "points.dat", Draws::Markers},
+                                  {"tiny", 1, 3, "points.dat", Draws::Texts}};
+  CHECK(seriesMismatches("tiny", svg, ok, dir).empty());
+  // The data holds two points, the figure draws one.
+  const std::vector<Series> dropped = {{"tiny", 1, 2, "two.dat", Draws::Markers}};
+  REQUIRE(seriesMismatches("tiny", svg, dropped, dir).size() == 1);
+  CHECK(seriesMismatches("tiny", svg, dropped, dir)[0] == "panel 1 plot 2 draws 1 markers, its data two.dat holds 2");
+  // An empty plot: its segment is gone.
+  CHECK(seriesMismatches("tiny", parseSvg(tinySvg("p", 40, 30, true)), ok, dir).size() == 1);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("figures every series of a geometry figure draws exactly what its data file holds") {
+  REQUIRE(svgs().size() >= 20);
+  const fs::path dir = figureRun().dir;
+  const auto series = knownSeries(dir);
+  REQUIRE(series.size() >= 30);
+  for (const Series& s : series) CHECK_MESSAGE(svgs().count(s.figure) == 1, s.figure << ".svg was not written");
+  for (const auto& [name, svg] : svgs())
+    for (const std::string& m : seriesMismatches(name, svg, series, dir)) FAIL_CHECK(name << ".svg: " << m);
 }
 
 TEST_CASE("figures every character of every SVG text is in the font the text names") {
@@ -929,6 +1087,90 @@ TEST_CASE("figures every PNG is at least 1200 px wide") {
   }
 }
 
+namespace {
+
+/// The panel grid of a figure: its columns and rows, read from where the panel titles "(a) ...",
+/// "(b) ..." sit (style.gp's panel() centres each at the top of its cell of equal cells);
+/// {1, 1} without titles.
+std::pair<int, int> panelGrid(const Svg& svg) {
+  std::vector<double> xs, ys;
+  static const std::regex tag(R"(\([a-l]\) .*)");
+  auto add = [](std::vector<double>& v, double a) {
+    for (double b : v)
+      if (std::abs(a - b) < 2) return;
+    v.push_back(a);
+  };
+  for (const Text& t : svg.texts)
+    if (!t.inPlot && std::regex_match(t.str, tag)) add(xs, t.x), add(ys, t.y);
+  return {std::max<int>(1, int(xs.size())), std::max<int>(1, int(ys.size()))};
+}
+
+/// The blank band at each side (left, right, top, bottom) of each cell of the panel grid, as
+/// a fraction of the cell's width or height: ink (line points, markers, text boxes) is given
+/// to the cell it lies in, ink past the canvas to the edge it is cut by.
+std::vector<std::array<double, 4>> cellBands(const Svg& svg, int cols, int rows) {
+  const double cw = svg.width / cols, ch = svg.height / rows;
+  std::vector<Box> ink(std::size_t(cols * rows), Box{1e300, 1e300, -1e300, -1e300});
+  auto grow = [&](double x, double y) {
+    x = std::clamp(x, 0.0, svg.width), y = std::clamp(y, 0.0, svg.height);  // cut by the canvas edge: ink up to it
+    const int c = std::min(cols - 1, int(x / cw)), r = std::min(rows - 1, int(y / ch));
+    Box& b = ink[std::size_t(r * cols + c)];
+    b = {std::min(b.x0, x), std::min(b.y0, y), std::max(b.x1, x), std::max(b.y1, y)};
+  };
+  for (const Stroke& st : svg.strokes)
+    for (const auto& [x, y] : st.pts) grow(x, y);
+  for (const Marker& m : svg.markers) grow(m.x - m.r, m.y - m.r), grow(m.x + m.r, m.y + m.r);
+  for (const Text& t : svg.texts) {
+    const Box b = textBox(t);
+    grow(b.x0, b.y0), grow(b.x1, b.y1);
+  }
+  std::vector<std::array<double, 4>> out;
+  for (int r = 0; r < rows; ++r)
+    for (int c = 0; c < cols; ++c) {
+      const Box& b = ink[std::size_t(r * cols + c)];
+      if (b.x0 > b.x1) {
+        out.push_back({1, 1, 1, 1});  // an empty cell
+        continue;
+      }
+      out.push_back({(b.x0 - c * cw) / cw, ((c + 1) * cw - b.x1) / cw, (b.y0 - r * ch) / ch, ((r + 1) * ch - b.y1) / ch});
+    }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("figures the panel band check finds a half-empty panel") {
+  Svg svg;
+  svg.width = 400, svg.height = 200;
+  auto title = [](const std::string& s, double x) { return Text{s, x, 20, 0, "middle", "black", {{"Sans", s, 12, 0}}, 0, false, 0}; };
+  svg.texts = {title("(a) left", 100), title("(b) right", 300)};
+  REQUIRE(panelGrid(svg) == std::make_pair(2, 1));
+  svg.texts.clear();
+  // Panel (a) is filled edge to edge; panel (b) only in its left half.
+  svg.strokes.push_back({{{5, 30}, {195, 195}}, {0}, 2, "black", "", 1, 1});
+  svg.strokes.push_back({{{205, 30}, {300, 195}}, {0}, 2, "black", "", 2, 1});
+  const auto bands = cellBands(svg, 2, 1);
+  REQUIRE(bands.size() == 2);
+  CHECK(bands[0][1] == doctest::Approx(0.025));
+  CHECK(bands[1][1] == doctest::Approx(0.5));
+  CHECK(bands[1][3] == doctest::Approx(0.025));
+}
+
+TEST_CASE("figures no panel of a multi-panel figure has a blank band over 12 percent of its cell") {
+  REQUIRE(svgs().size() >= 20);
+  const char* side[] = {"left", "right", "top", "bottom"};
+  for (const auto& [name, svg] : svgs()) {
+    const auto [cols, rows] = panelGrid(svg);
+    if (cols * rows < 2) continue;
+    const auto bands = cellBands(svg, cols, rows);
+    for (std::size_t k = 0; k < bands.size(); ++k)
+      for (int s = 0; s < 4; ++s)
+        CHECK_MESSAGE(bands[k][std::size_t(s)] <= 0.12, name << ".svg panel " << std::string(1, char('a' + k)) << " (" << rows << " x " << cols
+                                                        << " grid): blank band at the " << std::string(side[s]) << ", "
+                                                        << 100 * bands[k][std::size_t(s)] << " % of its cell");
+  }
+}
+
 TEST_CASE("figures no blank band wider than 10 percent of the canvas at any side") {
   REQUIRE(svgs().size() >= 20);
   for (const auto& [name, svg] : svgs()) {
@@ -947,6 +1189,272 @@ TEST_CASE("figures no blank band wider than 10 percent of the canvas at any side
     CHECK_MESSAGE(ink.y0 <= 0.1 * svg.height, name << ".svg: blank band at the top, " << ink.y0 << " px of " << svg.height);
     CHECK_MESSAGE(svg.height - ink.y1 <= 0.1 * svg.height, name << ".svg: blank band at the bottom, " << svg.height - ink.y1 << " px of " << svg.height);
   }
+}
+
+// ---- the PNG against its SVG -------------------------------------------------------------------
+
+namespace {
+
+/// A raw DEFLATE stream (RFC 1951) inflated: stored, fixed and dynamic Huffman blocks. Throws
+/// on a malformed stream. (The test reads the PNGs itself, so that it depends on no library.)
+class Inflater {
+ public:
+  explicit Inflater(const std::string& in, std::size_t from) : in_(in), pos_(from) {}
+  std::string run() {
+    for (int last = 0; !last;) {
+      last = bits(1);
+      const int type = bits(2);
+      if (type == 0) stored();
+      else if (type == 1) fixed();
+      else if (type == 2) dynamic();
+      else throw std::runtime_error("inflate: bad block type");
+    }
+    return out_;
+  }
+
+ private:
+  struct Huffman {
+    std::array<int, 16> count{};
+    std::vector<int> symbol;
+  };
+  int bits(int need) {
+    std::uint64_t v = buf_;
+    while (cnt_ < need) {
+      if (pos_ >= in_.size()) throw std::runtime_error("inflate: stream ends early");
+      v |= std::uint64_t(static_cast<unsigned char>(in_[pos_++])) << cnt_;
+      cnt_ += 8;
+    }
+    buf_ = v >> need;
+    cnt_ -= need;
+    return int(v & ((std::uint64_t(1) << need) - 1));
+  }
+  static Huffman build(const int* lengths, int n) {
+    Huffman h;
+    for (int s = 0; s < n; ++s) ++h.count[std::size_t(lengths[s])];
+    std::array<int, 16> offs{};
+    for (int len = 1; len < 15; ++len) offs[std::size_t(len + 1)] = offs[std::size_t(len)] + h.count[std::size_t(len)];
+    h.symbol.assign(std::size_t(n), 0);
+    for (int s = 0; s < n; ++s)
+      if (lengths[s]) h.symbol[std::size_t(offs[std::size_t(lengths[s])]++)] = s;
+    return h;
+  }
+  int decode(const Huffman& h) {
+    int code = 0, first = 0, index = 0;
+    for (int len = 1; len <= 15; ++len) {
+      code |= bits(1);
+      const int count = h.count[std::size_t(len)];
+      if (code - count < first) return h.symbol[std::size_t(index + (code - first))];
+      index += count, first += count;
+      first <<= 1, code <<= 1;
+    }
+    throw std::runtime_error("inflate: bad code");
+  }
+  void stored() {
+    buf_ = 0, cnt_ = 0;
+    if (pos_ + 4 > in_.size()) throw std::runtime_error("inflate: stored block ends early");
+    const std::size_t len = static_cast<unsigned char>(in_[pos_]) | std::size_t(static_cast<unsigned char>(in_[pos_ + 1])) << 8;
+    pos_ += 4;
+    if (pos_ + len > in_.size()) throw std::runtime_error("inflate: stored block ends early");
+    out_.append(in_, pos_, len);
+    pos_ += len;
+  }
+  void codes(const Huffman& lencode, const Huffman& distcode) {
+    static const int lbase[] = {3, 4, 5, 6, 7, 8, 9, 10, 11, 13, 15, 17, 19, 23, 27, 31, 35, 43, 51, 59, 67, 83, 99, 115, 131, 163, 195, 227, 258};
+    static const int lext[] = {0, 0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 2, 2, 2, 2, 3, 3, 3, 3, 4, 4, 4, 4, 5, 5, 5, 5, 0};
+    static const int dbase[] = {1, 2, 3, 4, 5, 7, 9, 13, 17, 25, 33, 49, 65, 97, 129, 193, 257, 385, 513, 769, 1025, 1537, 2049, 3073,
+                                4097, 6145, 8193, 12289, 16385, 24577};
+    static const int dext[] = {0, 0, 0, 0, 1, 1, 2, 2, 3, 3, 4, 4, 5, 5, 6, 6, 7, 7, 8, 8, 9, 9, 10, 10, 11, 11, 12, 12, 13, 13};
+    for (;;) {
+      int sym = decode(lencode);
+      if (sym < 256) out_ += char(sym);
+      else if (sym == 256) return;
+      else {
+        sym -= 257;
+        if (sym >= 29) throw std::runtime_error("inflate: bad length");
+        const int len = lbase[sym] + bits(lext[sym]);
+        const int ds = decode(distcode);
+        if (ds >= 30) throw std::runtime_error("inflate: bad distance");
+        const std::size_t dist = std::size_t(dbase[ds] + bits(dext[ds]));
+        if (dist > out_.size()) throw std::runtime_error("inflate: distance too far back");
+        for (int k = 0; k < len; ++k) out_ += out_[out_.size() - dist];
+      }
+    }
+  }
+  void fixed() {
+    int l[288], d[30];
+    for (int s = 0; s < 288; ++s) l[s] = s < 144 ? 8 : s < 256 ? 9 : s < 280 ? 7 : 8;
+    for (int& x : d) x = 5;
+    codes(build(l, 288), build(d, 30));
+  }
+  void dynamic() {
+    static const int order[19] = {16, 17, 18, 0, 8, 7, 9, 6, 10, 5, 11, 4, 12, 3, 13, 2, 14, 1, 15};
+    const int nlen = bits(5) + 257, ndist = bits(5) + 1, ncode = bits(4) + 4;
+    int lengths[320] = {};
+    for (int k = 0; k < ncode; ++k) lengths[order[k]] = bits(3);
+    const Huffman lencode = build(lengths, 19);
+    int k = 0;
+    while (k < nlen + ndist) {
+      int sym = decode(lencode);
+      if (sym < 16) {
+        lengths[k++] = sym;
+        continue;
+      }
+      int len = 0, rep;
+      if (sym == 16) {
+        if (k == 0) throw std::runtime_error("inflate: repeat with no length");
+        len = lengths[k - 1], rep = 3 + bits(2);
+      } else if (sym == 17) rep = 3 + bits(3);
+      else rep = 11 + bits(7);
+      if (k + rep > nlen + ndist) throw std::runtime_error("inflate: too many lengths");
+      while (rep--) lengths[k++] = len;
+    }
+    codes(build(lengths, nlen), build(lengths + nlen, ndist));
+  }
+  const std::string& in_;
+  std::size_t pos_;
+  std::uint64_t buf_ = 0;
+  int cnt_ = 0;
+  std::string out_;
+};
+
+/// A PNG's pixels as an ink mask (true where a pixel is darker than 235 in some channel, or
+/// not transparent over white): 8-bit grey, RGB, grey+alpha or RGBA, not interlaced (what
+/// pngcairo writes). Throws on anything else.
+struct InkImage {
+  int w = 0, h = 0;
+  std::vector<bool> ink;
+};
+InkImage pngInk(const std::string& data) {
+  const auto [w, h] = pngSize(data);
+  if (w <= 0) throw std::runtime_error("not a PNG");
+  const int depth = static_cast<unsigned char>(data[24]), type = static_cast<unsigned char>(data[25]),
+            interlace = static_cast<unsigned char>(data[28]);
+  const int channels = type == 0 ? 1 : type == 2 ? 3 : type == 4 ? 2 : type == 6 ? 4 : 0;
+  if (depth != 8 || channels == 0 || interlace != 0) throw std::runtime_error("PNG: only 8-bit grey/RGB(A), not interlaced");
+  std::string z;
+  for (std::size_t at = 8; at + 8 <= data.size();) {
+    const std::size_t len = bigEndian32(data, at);
+    if (data.compare(at + 4, 4, "IDAT") == 0) z.append(data, at + 8, len);
+    at += 12 + len;
+  }
+  const std::string raw = Inflater(z, 2).run();  // after the 2-byte zlib header
+  const std::size_t stride = std::size_t(w) * std::size_t(channels);
+  if (raw.size() < std::size_t(h) * (stride + 1)) throw std::runtime_error("PNG: too little pixel data");
+  std::vector<unsigned char> prev(stride, 0), cur(stride);
+  InkImage img{w, h, std::vector<bool>(std::size_t(w) * std::size_t(h))};
+  for (int y = 0; y < h; ++y) {
+    const std::size_t row = std::size_t(y) * (stride + 1);
+    const int filter = static_cast<unsigned char>(raw[row]);
+    for (std::size_t i = 0; i < stride; ++i) {
+      const int x = static_cast<unsigned char>(raw[row + 1 + i]);
+      const int a = i >= std::size_t(channels) ? cur[i - std::size_t(channels)] : 0, b = prev[i],
+                c = i >= std::size_t(channels) ? prev[i - std::size_t(channels)] : 0;
+      int p = 0;
+      if (filter == 1) p = a;
+      else if (filter == 2) p = b;
+      else if (filter == 3) p = (a + b) / 2;
+      else if (filter == 4) {
+        const int pa = std::abs(b - c), pb = std::abs(a - c), pc = std::abs(a + b - 2 * c);
+        p = pa <= pb && pa <= pc ? a : pb <= pc ? b : c;
+      } else if (filter != 0) throw std::runtime_error("PNG: bad filter");
+      cur[i] = static_cast<unsigned char>(x + p);
+    }
+    for (int x = 0; x < w; ++x) {
+      const unsigned char* px = &cur[std::size_t(x) * std::size_t(channels)];
+      const bool hasAlpha = channels == 2 || channels == 4;
+      const int alpha = hasAlpha ? px[channels - 1] : 255;
+      int darkest = 255;
+      for (int k = 0; k < (hasAlpha ? channels - 1 : channels); ++k) darkest = std::min<int>(darkest, px[k]);
+      // Over white: a channel shows as 255 - alpha (255 - v) / 255.
+      img.ink[std::size_t(y) * std::size_t(w) + std::size_t(x)] = 255 - alpha * (255 - darkest) / 255 < 235;
+    }
+    std::swap(prev, cur);
+  }
+  return img;
+}
+
+/// The blank bands of each cell of a PNG (as cellBands does for an SVG), and each cell's share
+/// of ink pixels.
+std::vector<std::array<double, 5>> pngCellBands(const InkImage& img, int cols, int rows) {
+  const double cw = double(img.w) / cols, ch = double(img.h) / rows;
+  std::vector<Box> ink(std::size_t(cols * rows), Box{1e300, 1e300, -1e300, -1e300});
+  std::vector<double> count(std::size_t(cols * rows), 0);
+  for (int y = 0; y < img.h; ++y)
+    for (int x = 0; x < img.w; ++x) {
+      if (!img.ink[std::size_t(y) * std::size_t(img.w) + std::size_t(x)]) continue;
+      const std::size_t k = std::size_t(std::min(rows - 1, int(y / ch)) * cols + std::min(cols - 1, int(x / cw)));
+      Box& b = ink[k];
+      b = {std::min(b.x0, double(x)), std::min(b.y0, double(y)), std::max(b.x1, x + 1.0), std::max(b.y1, y + 1.0)};
+      ++count[k];
+    }
+  std::vector<std::array<double, 5>> out;
+  for (int r = 0; r < rows; ++r)
+    for (int c = 0; c < cols; ++c) {
+      const std::size_t k = std::size_t(r * cols + c);
+      const Box& b = ink[k];
+      if (b.x0 > b.x1) {
+        out.push_back({1, 1, 1, 1, 0});
+        continue;
+      }
+      out.push_back({(b.x0 - c * cw) / cw, ((c + 1) * cw - b.x1) / cw, (b.y0 - r * ch) / ch, ((r + 1) * ch - b.y1) / ch, count[k] / (cw * ch)});
+    }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("figures the PNG reader inflates and unfilters what pngcairo writes") {
+  // A 3 x 2 RGB PNG made by hand: a stored (uncompressed) deflate block, filters None and Sub.
+  // Row 0: white, black, white; row 1 (Sub): white, then +0 (white), then -255 (black).
+  const std::string rows("\x00\xff\xff\xff\x00\x00\x00\xff\xff\xff"
+                         "\x01\xff\xff\xff\x00\x00\x00\x01\x01\x01", 20);
+  std::string z("\x78\x01", 2);
+  z += '\x01';  // final stored block
+  z += char(rows.size()), z += '\0', z += char(~rows.size()), z += '\xff';
+  z += rows;
+  auto chunk = [](const std::string& type, const std::string& body) {
+    std::string c;
+    for (int k = 3; k >= 0; --k) c += char((body.size() >> (8 * k)) & 0xff);
+    return c + type + body + std::string(4, '\0');  // the CRC is not read
+  };
+  const std::string png = std::string("\x89PNG\r\n\x1a\n", 8) + chunk("IHDR", std::string("\0\0\0\x03\0\0\0\x02\x08\x02\0\0\0", 13)) +
+                          chunk("IDAT", z) + chunk("IEND", "");
+  const InkImage img = pngInk(png);
+  REQUIRE(img.w == 3);
+  REQUIRE(img.h == 2);
+  CHECK(img.ink == std::vector<bool>{false, true, false, false, false, true});
+  // A fixed-Huffman stream: "aaaa" as literal a then a copy (distance 1, length 3).
+  const std::string fixedAaaa("\x4b\x04\x02\x00", 4);
+  CHECK(Inflater(fixedAaaa, 0).run() == "aaaa");
+  CHECK_THROWS(Inflater(std::string("\x07", 1), 0).run());  // block type 3
+}
+
+TEST_CASE("figures every PNG shows what its SVG shows in each panel") {
+  REQUIRE(svgs().size() >= 20);
+  const fs::path dir = figureRun().dir;
+  int compared = 0;
+  const char* side[] = {"left", "right", "top", "bottom"};
+  for (const auto& [name, svg] : svgs()) {
+    const fs::path png = dir / (name + ".png");
+    if (!fs::exists(png)) continue;
+    const auto [cols, rows] = panelGrid(svg);
+    const auto s = cellBands(svg, cols, rows);
+    const auto p = pngCellBands(pngInk(readAll(png)), cols, rows);
+    ++compared;
+    for (std::size_t k = 0; k < s.size(); ++k) {
+      CHECK_MESSAGE(p[k][4] > 0.002, name << ".png panel " << std::string(1, char('a' + k)) << " is blank: " << 100 * p[k][4] << " % ink");
+      // The outer sides only: a text that crosses into the next cell (a tick label, a long
+      // title) is split between the cells by its box in the SVG, by its pixels in the PNG.
+      const int col = int(k) % cols, row = int(k) / cols;
+      const bool outer[4] = {col == 0, col == cols - 1, row == 0, row == rows - 1};
+      for (int e = 0; e < 4; ++e)
+        if (outer[e])
+          CHECK_MESSAGE(std::abs(p[k][std::size_t(e)] - s[k][std::size_t(e)]) <= 0.04,
+                      name << " panel " << std::string(1, char('a' + k)) << ": the ink ends " << 100 * p[k][std::size_t(e)] << " % from the "
+                           << std::string(side[e]) << " of its cell in the PNG, " << 100 * s[k][std::size_t(e)] << " % in the SVG");
+    }
+  }
+  CHECK(compared >= 20);
 }
 
 // ---- the style's roles -----------------------------------------------------------------------
@@ -1054,7 +1562,7 @@ TEST_CASE("figures the role check finds a solid circle and a super-vertex withou
   svg.strokes[0].colour = "rgb( 46, 125,  50)";  // the ball's green
   CHECK(roleBreaches("fig2_1", svg, roles).size() == 1);
   svg.strokes.clear();
-  Text super{"\xf0\x9d\x91\x9d\xe2\x88\x92" "1", 50, 50, 0, "middle", "rgb(123,  50, 148)", {{"DejaVu Math TeX Gyre", "\xf0\x9d\x91\x9d\xe2\x88\x92" "1", 20, 0}}, 1, true};
+  Text super{"\xf0\x9d\x91\x9d\xe2\x88\x92" "1", 50, 50, 0, "middle", "rgb(123,  50, 148)", {{"DejaVu Math TeX Gyre", "\xf0\x9d\x91\x9d\xe2\x88\x92" "1", 20, 0}}, 1, true, 1};
   svg.texts.push_back(super);
   CHECK(roleBreaches("fig2_5", svg, roles).size() == 1);  // no square
   svg.markers.push_back({60, 70, 5, "#gpPt4", "rgb(123,  50, 148)", 1, 2});

@@ -25,9 +25,6 @@ namespace {
 
 using dt::XY;
 
-// Each edge once (a closed triangle draws an inner edge twice, darker than a hull edge).
-std::string triData(const std::vector<const dt::Face*>& F) { return ch::gnuplotSegs(ch::faceSegs(F)); }
-
 std::string polygon(int& id, const dt::Face* f, const char* color) {
   std::ostringstream s;
   s.precision(17);
@@ -46,7 +43,7 @@ std::string segment(const dt::Vertex* a, const dt::Vertex* b, const char* color,
 }
 
 // One panel pair: DT of `base`, then q inserted. Writes <stem>_{before,after}.{gp,dat}.
-void panels(const ch::Options& o, const std::string& stem, const XY& base, double qx, double qy,
+void panels(const ch::Options& o, const std::string& stem, int row, const XY& base, double qx, double qy,
             const std::string& note) {
   dt::Triangulation T;
   std::vector<dt::Vertex*> S;
@@ -73,9 +70,29 @@ void panels(const ch::Options& o, const std::string& stem, const XY& base, doubl
     return std::to_string(k) + " " + w + (k == 1 ? "" : "s");
   };
   obj += "ftitle = \"" + note + plural(vis.size(), "visible edge") + ", " + plural(cavityFinite, "triangle") +
-         " in C\"\n";
+         " in " + ch::mathText("\\mathscr{C}") + "\"\n";
+  // The row's two panels, laid out in pixels (VIEW), share one view: the after mesh contains q.
+  double x0 = q->x, x1 = q->x, y0 = q->y, y1 = q->y;
+  for (const dt::Vertex* v : S) x0 = std::min(x0, v->x), x1 = std::max(x1, v->x), y0 = std::min(y0, v->y), y1 = std::max(y1, v->y);
+  const double m = 0.06 * std::max(x1 - x0, y1 - y0);
+  const ch::FigureSize fs = ch::figureSize("fig_outside_hull");
+  const double lw = std::max(1.5, fs.em / 18);
+  const ch::Panel pBefore = ch::cellPanel(fs, 2, 2, 2 * row, x0 - m, x1 + m, y0 - m, y1 + m),
+                  pAfter = ch::cellPanel(fs, 2, 2, 2 * row + 1, x0 - m, x1 + m, y0 - m, y1 + m);
+  // The label of q keeps one place in both panels: placed once, clear of what either draws.
+  ch::LabelPlacer placer(pBefore, fs.em);
+  const std::vector<ch::Seg> beforeSegs = ch::faceSegs(T.finiteFaces());
+  placer.segments(beforeSegs, 1.2 * lw);
+  for (const auto& e : vis) {
+    placer.segment(e.a->x, e.a->y, e.b->x, e.b->y, 4 * lw);
+    placer.segment(e.a->x, e.a->y, q->x, q->y, 1.5 * lw);
+    placer.segment(e.b->x, e.b->y, q->x, q->y, 1.5 * lw);
+  }
+  for (const dt::Vertex* v : S) placer.marker(v->x, v->y, ch::pointRadius(fs, 0.8));
+  placer.marker(q->x, q->y, ch::pointRadius(fs, 1.6));
+  obj += "VIEW = \"" + pBefore.gnuplot() + "\"\n";
   ch::writeOut(o, stem + "_before.gp", obj);
-  ch::writeOut(o, stem + "_before.dat", triData(T.finiteFaces()));
+  ch::writeOut(o, stem + "_before.dat", ch::gnuplotSegs(beforeSegs));
   // After: insertVertex (the Delaunay kernel with ghost faces), new triangles in blue.
   dt::InsertionStats st;
   dt::InsertionScratch scratch;
@@ -88,13 +105,13 @@ void panels(const ch::Options& o, const std::string& stem, const XY& base, doubl
   for (const dt::Face* f : T.finiteFaces())
     if (f->V[0] == q || f->V[1] == q || f->V[2] == q) obj += polygon(id, f, "#b8e0b0"), ++fresh;
   obj += "ftitle = \"after: " + plural(fresh, "new triangle") + "\"\n";
-  // One view for both panels of the row (the after mesh contains q), so they share a scale.
-  double x0 = q->x, x1 = q->x, y0 = q->y, y1 = q->y;
-  for (const dt::Vertex* v : S) x0 = std::min(x0, v->x), x1 = std::max(x1, v->x), y0 = std::min(y0, v->y), y1 = std::max(y1, v->y);
-  const double m = 0.06 * std::max(x1 - x0, y1 - y0);
-  ch::writeOut(o, stem + "_view.gp", ch::fmt("set xrange [%.17g:%.17g]; set yrange [%.17g:%.17g]\n", x0 - m, x1 + m, y0 - m, y1 + m));
+  const std::vector<ch::Seg> afterSegs = ch::faceSegs(T.finiteFaces());
+  placer.segments(afterSegs, 1.2 * lw);
+  const auto [lx, ly] = placer.place(q->x, q->y, ch::mathText("p"));
+  ch::writeOut(o, stem + "_label.dat", ch::fmt("%.17g %.17g\n", lx, ly));
+  obj += "VIEW = \"" + pAfter.gnuplot() + "\"\n";
   ch::writeOut(o, stem + "_after.gp", obj);
-  ch::writeOut(o, stem + "_after.dat", triData(T.finiteFaces()));
+  ch::writeOut(o, stem + "_after.dat", ch::gnuplotSegs(afterSegs));
   std::ostringstream pts;
   for (const dt::Vertex* v : S) pts << v->x << " " << v->y << "\n";
   ch::writeOut(o, stem + "_points.dat", pts.str());
@@ -123,13 +140,13 @@ void figure(const ch::Options& o) {
   const auto& e = H[best];
   // Just outside the middle of the longest hull edge: a few finite faces join the cavity.
   const double mx = 0.5 * (e.a->x + e.b->x), my = 0.5 * (e.a->y + e.b->y);
-  panels(o, "outhull", base, mx + 0.12 * (e.b->y - e.a->y), my - 0.12 * (e.b->x - e.a->x), "");
+  panels(o, "outhull", 0, base, mx + 0.12 * (e.b->y - e.a->y), my - 0.12 * (e.b->x - e.a->x), "");
   // Half-integers: q = b + (b - a) / 2 is computed exactly, so it is exactly on the line.
   const double qx = e.b->x + 0.5 * (e.b->x - e.a->x), qy = e.b->y + 0.5 * (e.b->y - e.a->y);
   dt::Vertex q(qx, qy);
   std::cout << "supporting-line point: orient = " << dt::orientationTest(e.a, e.b, &q)
             << " (0: exactly on the line of the hull edge)\n";
-  panels(o, "outline", base, qx, qy, "on a hull line: ");
+  panels(o, "outline", 1, base, qx, qy, "on a hull line: ");
   ch::runGnuplot(o, "fig_outside_hull.gp");
 }
 

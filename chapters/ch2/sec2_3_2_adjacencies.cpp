@@ -45,7 +45,16 @@ void figure29(const ch::Options& o) {
   const dt::MeshCounts& c = r.counts;
   if (c.n != 12 || c.nh != 9 || c.sumVF != 39)
     throw std::runtime_error("Figure 2.9: expected n = 12, n_h = 9, 39 corners");
-  ch::writeOut(o, "fig2_9_tri.dat", ch::gnuplotEdges(r.mesh.xy, r.mesh.tri));
+  // Each vertex is a disc with its count inside: the edges stop at the discs, so that no edge
+  // runs under a count (fig2_9_disc.gp: the radius, in data units).
+  const double R = 0.085;
+  std::vector<ch::Seg> edges = ch::triangleSegs(r.mesh.xy, r.mesh.tri);
+  for (ch::Seg& e : edges) {
+    const double len = std::hypot(e.x1 - e.x0, e.y1 - e.y0), ux = (e.x1 - e.x0) / len, uy = (e.y1 - e.y0) / len;
+    e = {e.x0 + R * ux, e.y0 + R * uy, e.x1 - R * ux, e.y1 - R * uy};
+  }
+  ch::writeOut(o, "fig2_9_tri.dat", ch::gnuplotSegs(edges));
+  ch::writeOut(o, "fig2_9_disc.gp", ch::fmt("R = %.17g\n", R));
   std::string labels = "# x y n_vf(vertex) n_ve(vertex) on_hull\n";
   // A boundary vertex has one edge more than triangles (its fan is open); inner ones as many.
   for (std::size_t v = 0; v < c.vf.size(); ++v)

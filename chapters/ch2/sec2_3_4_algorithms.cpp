@@ -17,6 +17,7 @@
 #include <memory>
 #include <random>
 #include <set>
+#include <sstream>
 
 #include "cavity.h"
 #include "check.h"
@@ -137,6 +138,30 @@ void figure210(const ch::Options& o) {
   ch::writeOut(o, "fig2_10_links_new.dat", arrowsNew);
   ch::writeOut(o, "fig2_10_links_outer.dat", arrowsOut);
   ch::writeOut(o, "fig2_10_point.dat", ch::fmt("%.17g %.17g\n", p->x, p->y));
+  // Both panels laid out in pixels (fig2_10_view.gp: PA, PB; one view, 4.5 em below each for
+  // the legend), and the label of p placed once, clear of what either panel draws.
+  double x0 = p->x, x1 = p->x, y0 = p->y, y1 = p->y;
+  for (const dt::Vertex* v : S) x0 = std::min(x0, v->x), x1 = std::max(x1, v->x), y0 = std::min(y0, v->y), y1 = std::max(y1, v->y);
+  const double m = 0.04 * (x1 - x0);
+  const ch::FigureSize fs = ch::figureSize("fig2_10");
+  const double lw = std::max(1.5, fs.em / 18);
+  const ch::Panel pa = ch::cellPanel(fs, 1, 2, 0, x0 - m, x1 + m, y0 - m, y1 + m, 4.5),
+                  pb = ch::cellPanel(fs, 1, 2, 1, x0 - m, x1 + m, y0 - m, y1 + m, 4.5);
+  ch::LabelPlacer placer(pa, fs.em);
+  placer.segments(ch::faceSegs(beforeFaces), 1.2 * lw);
+  placer.segments(ch::faceSegs(T.finiteFaces()), 1.2 * lw);
+  for (const std::string* arrows : {&arrowsNew, &arrowsOut}) {
+    std::istringstream in(*arrows);
+    for (double ax, ay, dx, dy; in >> ax >> ay >> dx >> dy;) {
+      placer.segment(ax, ay, ax + dx, ay + dy, 2 * lw);
+      placer.marker(ax + dx, ay + dy, 0.007 * fs.W);  // the head: "size screen 0.007"
+    }
+  }
+  for (const dt::Vertex* v : S) placer.marker(v->x, v->y, 0.5 * lw);
+  placer.marker(p->x, p->y, ch::pointRadius(fs, 1.6));
+  const auto [lx, ly] = placer.place(p->x, p->y, ch::mathText("p"));
+  ch::writeOut(o, "fig2_10_label.dat", ch::fmt("%.17g %.17g\n", lx, ly));
+  ch::writeOut(o, "fig2_10_view.gp", "PA = \"" + pa.gnuplot() + "\"\nPB = \"" + pb.gnuplot() + "\"\n");
   std::cout << "Figure 2.10: cavity of " << cavity.size() << " faces, ball of " << ballFaces.size()
             << " faces, " << outer.size() << " neighbours outside\n";
   ch::runGnuplot(o, "fig2_10.gp");

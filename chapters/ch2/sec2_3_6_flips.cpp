@@ -80,8 +80,8 @@ void figureFlip(const ch::Options& o) {
   dt::Triangulation T;
   // A convex quadrilateral a d b c around the edge a b, four outer neighbours, and a ring.
   const XY p = {0, 0, 4, 0.4, 2.2, 2.2, 1.8, -1.6,        // a b c d
-                -1.6, 1.6, 5.2, 2.4, 0.2, -3.2, 4.4, -2.6,  // beyond c a, b c, a d, d b
-                -3, -1, 6.5, -0.5, 1.5, 4, 2.5, -4.5};
+                -1.6, 1.6, 5.2, 2.4, 0.2, -3.2, 5.0, -3.0,  // beyond c a, b c, a d, d b
+                -3, -1, 6.8, -0.2, 1.5, 4, 2.5, -4.5};
   auto S = dt::addVertices(T, p);
   dt::delaunayTrglHull(T, S, dt::StartRule::LastCavity);
   // The face with edge a b (either direction). If the Delaunay triangulation chose the other
@@ -126,7 +126,7 @@ void figureFlip(const ch::Options& o) {
     // label of it.
     const ch::FigureSize fs = ch::figureSize("fig_flip");
     const double lw = std::max(1.5, fs.em / 18);
-    const ch::Panel pv = ch::cellPanel(fs, 1, 2, after ? 1 : 0, -3.5, 7, -5, 4.6);
+    const ch::Panel pv = ch::cellPanel(fs, 1, 2, after ? 1 : 0, -3.2, 7.0, -4.8, 4.3);
     // The labels at 0.85 em (7.2 pt at 15 cm): "b: 5 (−1)" is wide for the triangles around b.
     ch::LabelPlacer placer(pv, 0.85 * fs.em);
     placer.segments(ch::faceSegs(T.finiteFaces()), 1.2 * lw);

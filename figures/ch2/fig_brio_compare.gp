@@ -14,10 +14,18 @@ stats f using 1 nooutput
 ninputs = int(STATS_max) + 1
 stats f using 2 nooutput
 nlo = STATS_min; nhi = STATS_max
+# The linear axes' tic step: the smallest of 1, 2, 5 x 10^k with at most 4 steps up to the top
+# value (gnuplot's own choice crowded the tick labels of a half-height panel on top of each other).
+nb(m) = 10**floor(log10(m / 4.0))
+nstep(m) = (m / nb(m) <= 4 ? nb(m) : m / (2 * nb(m)) <= 4 ? 2 * nb(m) : m / (5 * nb(m)) <= 4 ? 5 * nb(m) : 10 * nb(m))
+stats f using 5 nooutput
+cavstep = nstep(STATS_max)
+stats f using 7 nooutput
+timestep = nstep(STATS_max)
 # The stopped series of random order (r = 1) or of Hilbert and BRIO (r = 0); a circle around
 # each one's last point, only where some series stopped (a plot must draw something).
 # (The file reaches the shell as "$DT_DATADIR/...": expanded, never read as code.)
-nstops(r) = (system(sprintf("awk '$1 != \"NaN\" && ($3 == 0) == %d' -- \"${DT_DATADIR:-.}/brio_compare_stops.dat\" | wc -l", r)) + 0)
+nstops(r) = (system(sprintf("awk -- '$1 != \"NaN\" && ($3 == 0) == %d' \"${DT_DATADIR:-.}/brio_compare_stops.dat\" | wc -l", r)) + 0)
 nstopsR = nstops(1); nstopsHB = nstops(0)
 stopped(c, r) = ((r ? nstopsR : nstopsHB) > 0) ? sprintf(", g using ((%d ? $3 == 0 : $3 > 0) ? $2 : NaN):%d with points pt 6 ps (3.2*PS) lw 1.5 lc rgb 'black' notitle", r, c) : ""
 series(c, order, dash) = sprintf("for [i = 0:%d] f using ($1 == i && $3 == %d ? $2 : NaN):%d with linespoints lw 2 dt %d pt int(word(marks, i + 1)) ps (1.1*PS) lc rgb word(C_SERIES, i + 1) notitle", ninputs - 1, order, c, dash)
@@ -37,18 +45,22 @@ do for [term in "png svg"] {
   set tmargin 2.5
   eval panel(1, M."𝑁}_{cavity}: Hilbert (dashed) and BRIO (solid)")
   set yrange [0:*]
+  set ytics cavstep
   eval "plot " . series(5, 1, 2) . ", " . series(5, 2, 1) . stopped(5, 0)
   eval panel(2, M."𝑁}_{search} (log scale)")
   set logscale y
   set yrange [*:*]
+  set ytics autofreq
   eval "plot " . series(4, 1, 2) . ", " . series(4, 2, 1) . stopped(4, 0)
   eval panel(3, "time per point (µs)")
   unset logscale y
   set yrange [0:*]
+  set ytics timestep
   eval "plot " . series(7, 1, 2) . ", " . series(7, 2, 1) . stopped(7, 0)
   eval panel(4, "random order: ".M."𝑁}_{search} (log scale)")
   set logscale y
   set yrange [*:*]
+  set ytics autofreq
   # The legend: one entry per input (colour and marker), in (d), whose large sizes are empty
   # (random order is only run at the small ones).
   set key inside top right Left reverse samplen 1.5 spacing 1.0 width -1

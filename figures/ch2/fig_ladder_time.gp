@@ -12,13 +12,13 @@ do for [t in "png svg"] {
   set style fill solid 0.85 border -1
   set boxwidth 0.7
   set ylabel "CPU time (s), sorting included"
-  set xlabel "step (each adds one change to the previous one)"
+  set xlabel "step (each adds one change)"  # longer, it ran past the canvas at 8 cm
   set yrange [0:*]
-  set offsets 0, 0, graph 0.18, 0
+  set offsets 0, 0, graph 0.3, 0
   set grid ytics lc rgb "#d8d8d8" lw 1
   set xtics rotate by -30 left nomirror
   set ytics nomirror
   set rmargin 6
   plot datadir.'/ladder.dat' using 3:xtic(2) linecolor rgb word(C_SERIES, 1), \
-       '' using 0:3:(sprintf("×%.1f", $4)) with labels offset 0,0.9
+       '' using 0:3:(sprintf("×%.1f", $4)) with labels rotate by 90 left offset 0,0.5  # upright, they overlapped (a bar is 2 em wide)
 }

@@ -22,7 +22,7 @@ FIGSIZES = " fig2_1 1400 640" . \
            " fig2_4 1200 1000" . \
            " fig2_5 1500 1080" . \
            " fig2_5_anim 1200 1260" . \
-           " fig2_6 1400 780" . \
+           " fig2_6 1400 860" . \
            " fig2_7 1400 800" . \
            " fig2_7_errors 1500 800" . \
            " fig2_8 1400 800" . \
@@ -38,9 +38,9 @@ FIGSIZES = " fig2_1 1400 640" . \
            " fig_ladder_time 1200 900" . \
            " fig_outlier_walk 1400 640" . \
            " fig_time_per_point 1200 860" . \
-           " fig_outside_hull 1200 1200" . \
+           " fig_outside_hull 1200 1440" . \
            " fig_parabola_cavity 1200 860" . \
-           " fig_recovery_frames 1500 1100" . \
+           " fig_recovery_frames 1500 1160" . \
            " fig_table2_1_search 1200 860 "
 
 # Figures printed at about 8 cm (one panel); the others are printed at 15 cm.
