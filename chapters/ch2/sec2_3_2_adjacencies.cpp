@@ -88,7 +88,7 @@ void countsTable(const ch::Options& o) {
         c.push_back(double(i) * double(i));
       }
       dt::shufflePoints(c, 11u);
-      inputs.push_back({"convex (parabola)", c});
+      inputs.push_back({"convex position (parabola)", c});
     }
   {
     // 1000 points rounded onto the unit circle: nearly cocircular, a hard case for the
@@ -128,6 +128,15 @@ void countsTable(const ch::Options& o) {
   }
   t.emit(o, "table_adjacency_counts");
   m.emit(o, "table_adjacency_means");
+  // The student's edition of the book shows both tables without the rows of points in convex
+  // position, which answer exercise 2.3.2-3.
+  for (ch::Table* x : {&t, &m}) {
+    x->rows.erase(std::remove_if(x->rows.begin(), x->rows.end(),
+                                 [](const std::vector<std::string>& r) { return r[0] == "convex position (parabola)"; }),
+                  x->rows.end());
+  }
+  t.emit(o, "table_adjacency_counts_student");
+  m.emit(o, "table_adjacency_means_student");
 }
 
 }  // namespace
