@@ -976,15 +976,29 @@ inline std::vector<std::string> editionLeaks(const std::map<std::string, AnswerK
                                              const std::vector<std::string>& ids,
                                              const std::string& student, const std::string& teacher) {
   std::vector<std::string> out;
-  // Values are looked for without any white space: a formula or a test name may space
-  // "4 + (6-D)/n" differently from the answer's "4 + (6 - D)/n".
+  // Values are looked for with white space squeezed and none next to a sign or bracket: a
+  // formula or a test name may space "4 + (6-D)/n" differently from the answer's
+  // "4 + (6 - D)/n". Between two letters or digits a space stays ("16 namespace" is not 16n).
   auto bare = [](const std::string& s) {
+    const std::string q = squeeze(s);
+    auto word = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0; };
     std::string o;
-    for (char c : s)
-      if (!std::isspace(static_cast<unsigned char>(c))) o += c;
+    for (std::size_t i = 0; i < q.size(); ++i)
+      if (q[i] != ' ' || (i > 0 && i + 1 < q.size() && word(q[i - 1]) && word(q[i + 1]))) o += q[i];
     return o;
   };
   const std::string studentBare = bare(student), teacherBare = bare(teacher);
+  // A value is found as a whole: not inside a longer word ("16n" is not in "16namespace", the
+  // line number 16 of a source listing before its code).
+  auto contains = [](const std::string& text, const std::string& v) {
+    auto word = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0; };
+    for (std::size_t at = text.find(v); at != std::string::npos; at = text.find(v, at + 1)) {
+      const bool before = at > 0 && word(text[at - 1]) && word(v.front());
+      const bool after = at + v.size() < text.size() && word(text[at + v.size()]) && word(v.back());
+      if (!before && !after) return true;
+    }
+    return false;
+  };
   for (const std::string& id : ids) {
     auto it = keys.find(id);
     if (it == keys.end() || (it->second.lines.empty() && it->second.values.empty())) {
@@ -993,9 +1007,10 @@ inline std::vector<std::string> editionLeaks(const std::map<std::string, AnswerK
     }
     auto look = [&](const std::string& item, const std::string& needle, const std::string& s,
                     const std::string& t, const char* kind) {
-      if (s.find(needle) != std::string::npos)
+      const bool value = std::string(kind) == "value";  // a line is looked for as it is
+      if (value ? contains(s, needle) : s.find(needle) != std::string::npos)
         out.push_back(id + ": the student edition shows the answer's " + kind + " '" + item + "'");
-      if (t.find(needle) == std::string::npos)
+      if (value ? !contains(t, needle) : t.find(needle) == std::string::npos)
         out.push_back(id + ": the teacher edition lacks the answer's " + kind + " '" + item + "'");
     };
     for (const std::string& l : it->second.lines) look(l, l, student, teacher, "line");

@@ -580,8 +580,12 @@ TEST_CASE("book the student edition shows no line or value of any answer and the
   }
   SUBCASE("a test name that states an answer value is found in the claims index") {
     auto bad = code;
-    // The value split in two literals: this file's own source page must not show it.
-    bad["tests/test_planted.cpp"] = "TEST_CASE(\"2.3.3 exercise 1: a half-edge structure needs 3" "6 n pointers\") {}\n";
+    // The value split in two literals: this file's own source page must not show it. A
+    // formula spaced otherwise than the answer's is found too.
+    auto spaced = pages;
+    spaced["book/sec2_3_4.md"] += "\nThe mean is 4+(6 - D)" " / n here.\n";
+    CHECK(mentions(editionDefects(code, spaced), "2.3.4-2: the student edition shows the answer's value"));
+    bad["tests/test_planted.cpp"] = "TEST_CASE(\"2.3.3 exercise 1: a half-edge structure needs 3" "6n pointers\") {}\n";
     CHECK(mentions(editionDefects(bad, pages), "2.3.3-1: the student edition shows the answer's value '3" "6n'"));
   }
   SUBCASE("a table that answers an exercise is found where the student edition shows it") {
