@@ -129,12 +129,13 @@ void countsTable(const ch::Options& o) {
   t.emit(o, "table_adjacency_counts");
   m.emit(o, "table_adjacency_means");
   // The student's edition of the book shows both tables without the rows of points in convex
-  // position, which answer exercise 2.3.2-3.
-  for (ch::Table* x : {&t, &m}) {
-    x->rows.erase(std::remove_if(x->rows.begin(), x->rows.end(),
-                                 [](const std::vector<std::string>& r) { return r[0] == "convex position (parabola)"; }),
-                  x->rows.end());
-  }
+  // position (n_h = n: the parabola, and the circle too), which answer exercise 2.3.2-3. The
+  // two tables have the same rows in the same order.
+  for (std::size_t k = t.rows.size(); k-- > 0;)
+    if (t.rows[k][1] == t.rows[k][2]) {
+      t.rows.erase(t.rows.begin() + long(k));
+      m.rows.erase(m.rows.begin() + long(k));
+    }
   t.emit(o, "table_adjacency_counts_student");
   m.emit(o, "table_adjacency_means_student");
 }
