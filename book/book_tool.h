@@ -756,7 +756,10 @@ inline std::string editionCode(const std::string& text, const std::string& file,
 
 /// A page as an edition shows it. Student: blocks dropped. Teacher: each block framed as the
 /// answer to its exercise. Lines "<!-- values: a | b -->" inside a block (the answer's
-/// distinctive values, for the edition check) are dropped in both.
+/// distinctive values, for the edition check) are dropped in both. A line
+/// "<!-- student: TEXT -->" outside the blocks is TEXT in the student's edition and nothing in
+/// the teacher's: where a block shows a full table, the student's edition shows the version
+/// without the answer (e.g. "\htmlinclude table_brio_student.html").
 inline std::string editionPage(const std::string& text, const std::string& file, Edition ed) {
   solutionBlocks(text, file, true);
   std::string out;
@@ -764,6 +767,20 @@ inline std::string editionPage(const std::string& text, const std::string& file,
   for (const std::string& line : splitLines(text)) {
     std::string id;
     bool rm = false;
+    const std::string studentLead = "<!-- student:";
+    const std::size_t lead = line.find_first_not_of(" \t");
+    if (lead != std::string::npos && line.compare(lead, studentLead.size(), studentLead) == 0) {
+      const std::size_t close = line.rfind("-->");
+      if (inside || close == std::string::npos || close < lead + studentLead.size())
+        throw std::runtime_error(file + ": a '<!-- student: ... -->' line inside a solution block or not closed on its line");
+      if (ed == Edition::Student) {
+        std::string t = line.substr(lead + studentLead.size(), close - lead - studentLead.size());
+        t.erase(0, t.find_first_not_of(' '));
+        t.erase(t.find_last_not_of(' ') + 1);
+        out += t + "\n";
+      }
+      continue;
+    }
     if (solutionMarker(line, "BEGIN", true, id, rm)) {
       inside = true;
       if (ed == Edition::Teacher)
@@ -959,20 +976,45 @@ inline std::vector<std::string> editionLeaks(const std::map<std::string, AnswerK
                                              const std::vector<std::string>& ids,
                                              const std::string& student, const std::string& teacher) {
   std::vector<std::string> out;
+  // Values are looked for with white space squeezed and none next to a sign or bracket: a
+  // formula or a test name may space "4 + (6-D)/n" differently from the answer's
+  // "4 + (6 - D)/n". Between two letters or digits a space stays ("16 namespace" is not 16n).
+  auto bare = [](const std::string& s) {
+    const std::string q = squeeze(s);
+    auto word = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0; };
+    std::string o;
+    for (std::size_t i = 0; i < q.size(); ++i)
+      if (q[i] != ' ' || (i > 0 && i + 1 < q.size() && word(q[i - 1]) && word(q[i + 1]))) o += q[i];
+    return o;
+  };
+  const std::string studentBare = bare(student), teacherBare = bare(teacher);
+  // A value is found as a whole: not inside a longer word ("16n" is not in "16namespace", the
+  // line number 16 of a source listing before its code).
+  auto contains = [](const std::string& text, const std::string& v) {
+    auto word = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0; };
+    for (std::size_t at = text.find(v); at != std::string::npos; at = text.find(v, at + 1)) {
+      const bool before = at > 0 && word(text[at - 1]) && word(v.front());
+      const bool after = at + v.size() < text.size() && word(text[at + v.size()]) && word(v.back());
+      if (!before && !after) return true;
+    }
+    return false;
+  };
   for (const std::string& id : ids) {
     auto it = keys.find(id);
     if (it == keys.end() || (it->second.lines.empty() && it->second.values.empty())) {
       out.push_back(id + ": no marked answer (no solution block with a distinctive line or value)");
       continue;
     }
-    auto look = [&](const std::string& item, const char* kind) {
-      if (student.find(item) != std::string::npos)
+    auto look = [&](const std::string& item, const std::string& needle, const std::string& s,
+                    const std::string& t, const char* kind) {
+      const bool value = std::string(kind) == "value";  // a line is looked for as it is
+      if (value ? contains(s, needle) : s.find(needle) != std::string::npos)
         out.push_back(id + ": the student edition shows the answer's " + kind + " '" + item + "'");
-      if (teacher.find(item) == std::string::npos)
+      if (value ? !contains(t, needle) : t.find(needle) == std::string::npos)
         out.push_back(id + ": the teacher edition lacks the answer's " + kind + " '" + item + "'");
     };
-    for (const std::string& l : it->second.lines) look(l, "line");
-    for (const std::string& v : it->second.values) look(v, "value");
+    for (const std::string& l : it->second.lines) look(l, l, student, teacher, "line");
+    for (const std::string& v : it->second.values) look(v, bare(v), studentBare, teacherBare, "value");
   }
   return out;
 }

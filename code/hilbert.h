@@ -75,8 +75,7 @@ std::vector<std::size_t> hilbertOrder(const std::vector<double>& xy, int depth =
 
 /// Sizes of the BRIO rounds for n points, first round first: the last round holds the larger
 /// half of the points, the one before half of the rest, and so on down to a first round of at
-/// most `firstRound` points (so the first two rounds have about the same size). From the
-/// second round on, sizes double from round to round (Amenta, Choi, Rote 2003).
+/// most `firstRound` points (Amenta, Choi, Rote 2003).
 std::vector<std::size_t> brioRoundSizes(std::size_t n, std::size_t firstRound = 64);
 
 /// BRIO: a random permutation (seeded, reproducible) cut into rounds of sizes brioRoundSizes(n),

@@ -65,7 +65,7 @@ MapErrors compareMaps(const SignMap& got, const SignMap& exact);
 long agreeingCells(const SignMap& a, const SignMap& b, int factor);
 
 /// Integer points on the circle x^2 + y^2 = r^2, r = 5^12 13^4 17^2 (about 2^50.8), all exactly
-/// representable: any four are exactly cocircular, and the incircle terms need about 205 bits.
+/// representable: any four are exactly cocircular, and the incircle terms outgrow 200-bit MPFR.
 std::vector<std::pair<double, double>> cocircularIntegerPoints();
 
 // ---- exercises of section 2.3.1 (the book states them; tests check the solutions) -------------

@@ -97,6 +97,7 @@ double halfEdgePointers(double n, double nh, bool exact) {
 //! [vertexStarImpl]
 std::vector<Face*> vertexStar(Face* f, const Vertex* v, std::size_t maxFaces) {
   // BEGIN SOLUTION 2.3.3-2
+  // A turn through F[] from face to face: time proportional to the degree of v.
   auto corner = [v](const Face* g) {
     for (int i = 0; i < 3; ++i)
       if (g->V[i] == v) return i;

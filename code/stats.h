@@ -58,8 +58,8 @@ std::vector<PointerCount> pointerCounts(double n, double nh, bool exact);
 double halfEdgePointers(double n, double nh, bool exact);
 
 //! [vertexStar]
-/// Exercise 2.3.3-2: the star of v in the face-based structure, from one face f of v, in time
-/// proportional to the degree of v. Returns the finite faces of v counter-clockwise,
+/// Exercise 2.3.3-2: the star of v in the face-based structure, starting from one face f of v.
+/// Returns the finite faces of v counter-clockwise,
 /// consecutive ones sharing an edge; around a hull vertex the fan starts at the hull (after the
 /// ghost faces, or at an F == nullptr that the turn then completes clockwise).
 /// Throws std::logic_error if v is not a vertex of f, or if the turn exceeds `maxFaces` faces
@@ -75,8 +75,9 @@ std::vector<Face*> vertexStar(Face* f, const Vertex* v, std::size_t maxFaces = 1
 void computeAdjacenciesSorted(std::vector<Face*>& faces);
 
 /// Exercise 2.3.4-2 (backward analysis of N_cavity): for T = DT(S0 u S) built on the
-/// super-triangles, returns {the mean over the real vertices (id >= 0) of their number of
-/// triangles minus 2, D the number of triangle corners at the four super-vertices}.
+/// super-triangles, returns {the mean over the real vertices v (id >= 0) of the size of the
+/// cavity v would have if it were the last point inserted, computed from T alone without
+/// removing or inserting a point; D, the number of triangle corners at the four super-vertices}.
 std::array<double, 2> backwardCavityMean(const Triangulation& T);
 
 }  // namespace dt

@@ -74,7 +74,7 @@ double margin(const std::vector<Point2>& P, std::size_t i) {
 
 }  // namespace
 
-TEST_CASE("2.2.2 exercise 2.2.2-1 squares and triangles have unbounded one-edge regions and regular polygons from five corners bounded ones") {
+TEST_CASE("2.2.2 exercise 2.2.2-1 oneEdgeRegionBounded on squares and triangles and regular polygons") {
   const std::vector<Point2> square = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
   for (std::size_t i = 0; i < 4; ++i) CHECK_FALSE(dt::oneEdgeRegionBounded(square, i));
   const std::vector<Point2> triangle = {{0, 0}, {10, 0}, {5, 0.01}};

@@ -298,7 +298,7 @@ TEST_CASE("2.3.1 exercise 2: exactBits bits make MPFR exact on wide random input
   CHECK(exactBitsIncircle(1.5, 1.25, 1.75, 1.125, 1.0, 1.875, 1.5, 1.5) == 220);  // > 200
 }
 
-TEST_CASE("2.3.1 exercise 1: sorting the points makes the naive test consistent but not correct") {
+TEST_CASE("2.3.1 exercise 1: orient2dNaiveCanonical under the six orders and against the exact sign") {
   const SignMap ex = orientMap(orientQ, OrientOrder::ABC);
   const SignMap abc = orientMap(orient2dNaiveCanonical, OrientOrder::ABC);
   const SignMap cba = orientMap(orient2dNaiveCanonical, OrientOrder::CBA);

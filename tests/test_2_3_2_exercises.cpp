@@ -42,7 +42,7 @@ TEST_CASE("2.3.2 exercise 2.3.2-3 the counts of points in convex position") {
   }
 }
 
-TEST_CASE("2.3.2 exercise 2.3.2-3 the largest fan on a parabola") {
+TEST_CASE("2.3.2 exercise 2.3.2-3 the largest number of triangles at one vertex") {
   for (int n : {3, 4, 5, 10, 57, 300}) {
     CAPTURE(n);
     const dt::MeshCounts c = parabolaCounts(n);

@@ -47,7 +47,7 @@ TEST_CASE("2.3.3 pointer counts: full 42n and bidirectional 30n and vertices-onl
   CHECK(a[4].perVertex * 8 * 1e6 == 120e6);
 }
 
-TEST_CASE("2.3.3 exercise 1: a half-edge structure needs 36n pointers") {
+TEST_CASE("2.3.3 exercise 1: halfEdgePointers counts the pointers of a half-edge structure") {
   CHECK(dt::halfEdgePointers(1e6, 0, false) == 36);
   CHECK(dt::halfEdgePointers(1000, 30, true) < 36);
 }

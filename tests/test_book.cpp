@@ -527,6 +527,14 @@ std::vector<std::string> editionDefects(const std::map<std::string, std::string>
     for (const std::string& l : booktool::splitLines(booktool::editionPage(t, f, booktool::Edition::Teacher)))
       teacher += booktool::squeeze(l) + "\n";
   }
+  // The claims index lists every test name, in both editions.
+  std::vector<booktool::TestCase> tests;
+  for (const auto& [f, t] : code)
+    if (f.rfind("tests/", 0) == 0)
+      for (const auto& c : booktool::testCases(t, f)) tests.push_back(c);
+  const std::string claims = booktool::squeeze(booktool::claimsPage(tests, "claims", "Claims")) + "\n";
+  student += claims;
+  teacher += claims;
   const auto keys = booktool::answerKeys(code, pages);
   std::vector<std::string> out = booktool::editionLeaks(keys, exerciseIds(), student, teacher);
   for (const std::string& l : booktool::snippetLeaks(keys, code)) out.push_back(l);
@@ -570,6 +578,21 @@ TEST_CASE("book the student edition shows no line or value of any answer and the
     bad["book/sec2_2.md"] = unmark(bad["book/sec2_2.md"], "2.2-2", true);
     CHECK(mentions(editionDefects(code, bad), "2.2-2: the student edition shows"));
   }
+  SUBCASE("a test name that states an answer value is found in the claims index") {
+    auto bad = code;
+    // The value split in two literals: this file's own source page must not show it. A
+    // formula spaced otherwise than the answer's is found too.
+    auto spaced = pages;
+    spaced["book/sec2_3_4.md"] += "\nThe mean is 4+(6 - D)" " / n here.\n";
+    CHECK(mentions(editionDefects(code, spaced), "2.3.4-2: the student edition shows the answer's value"));
+    bad["tests/test_planted.cpp"] = "TEST_CASE(\"2.3.3 exercise 1: a half-edge structure needs 3" "6n pointers\") {}\n";
+    CHECK(mentions(editionDefects(bad, pages), "2.3.3-1: the student edition shows the answer's value '3" "6n'"));
+  }
+  SUBCASE("a table that answers an exercise is found where the student edition shows it") {
+    auto bad = pages;
+    bad["book/sec2_3_5.md"] += "\nThe table: unit circle" " (random angles) 1e3 Hilbert 3.1\n";
+    CHECK(mentions(editionDefects(code, bad), "2.3.5-3: the student edition shows the answer's value 'unit circle" " (random angles)'"));
+  }
   SUBCASE("a code region left unmarked is found") {
     auto bad = code;
     bad["code/star.cpp"] = unmark(bad["code/star.cpp"], "2.1-1", false);
@@ -600,6 +623,17 @@ TEST_CASE("book the editions drop or frame each solution block and never show a 
     CHECK(e.find("SOLUTION") == std::string::npos);
     CHECK(e.find("values:") == std::string::npos);
   }
+  // A student line: its text in the student's edition only (where a block shows the full table).
+  const std::string withStudent = "x\n<!-- student: \\htmlinclude t_student.html -->\n<!-- BEGIN SOLUTION 9.9-1 -->\n"
+                                  "\\htmlinclude t.html\n<!-- END SOLUTION 9.9-1 -->\n";
+  const std::string ss = booktool::editionPage(withStudent, "book/p.md", booktool::Edition::Student);
+  const std::string st = booktool::editionPage(withStudent, "book/p.md", booktool::Edition::Teacher);
+  CHECK(ss.find("\\htmlinclude t_student.html\n") != std::string::npos);
+  CHECK(ss.find("\\htmlinclude t.html") == std::string::npos);
+  CHECK(st.find("t_student") == std::string::npos);
+  CHECK(st.find("\\htmlinclude t.html") != std::string::npos);
+  CHECK_THROWS(booktool::editionPage("<!-- BEGIN SOLUTION 9.9-1 -->\n<!-- student: x -->\n<!-- END SOLUTION 9.9-1 -->\n",
+                                     "book/p.md", booktool::Edition::Student));
   // The markers are split in two literals: this file's own source page must not show one.
   const std::string src = "int f() {\n  // " "BEGIN SOLUTION 9.9-1\n  return 42;\n  // " "END SOLUTION 9.9-1\n}\n";
   const std::string cs = booktool::editionCode(src, "code/x.cpp", booktool::Edition::Student);

@@ -62,6 +62,9 @@ std::string loadAverage() {
 // Runs job(out) in a child process: it fills up to 16 numbers, returned through a pipe; empty
 // on failure (the child's exception message goes to stderr).
 constexpr int kSlots = 16;
+// The target for one thread against CGAL: at most this share of CGAL's CPU time (the page
+// cites it as @{par.target1_bound}; the verdict par.target1 compares with the same number).
+constexpr double kCpuTarget1 = 0.65;
 std::vector<double> inChild(const std::function<void(double*)>& job) {
   int fd[2];
   if (pipe(fd) != 0) return {};
@@ -239,7 +242,8 @@ int main(int argc, char** argv) {
           pv << " Against CGAL: 2 threads take " << ch::fmt("%.2f", w2)
              << " of its wall time (target of issue 18: at most 0.50, "
              << (w2 <= 0.5 ? "met" : "missed") << "); one thread takes " << ch::fmt("%.2f", c1)
-             << " of its CPU time (target: at most 0.65, " << (c1 <= 0.65 ? "met" : "missed")
+             << " of its CPU time (target: at most " << ch::fmt("%.2f", kCpuTarget1) << ", "
+             << (c1 <= kCpuTarget1 ? "met" : "missed")
              << ").";
         }
         pv << "</p>\n";
@@ -258,7 +262,8 @@ int main(int argc, char** argv) {
         values.set("par.cgal_wall2", ref ? ch::fmt("%.2f", w2) : "(not measured)");
         values.set("par.cgal_cpu1", ref ? ch::fmt("%.2f", c1) : "(not measured)");
         values.set("par.target2", ref ? (w2 <= 0.5 ? "met" : "missed") : "not measured");
-        values.set("par.target1", ref ? (c1 <= 0.65 ? "met" : "missed") : "not measured");
+        values.set("par.target1", ref ? (c1 <= kCpuTarget1 ? "met" : "missed") : "not measured");
+        values.num("par.target1_bound", kCpuTarget1, "%.2f");
       }
       for (std::size_t j = 0; j < runs.size(); ++j) {
         const std::vector<double>& r = best[j];

@@ -469,6 +469,13 @@ void mpfr200(const ch::Options& o, ch::Values& v) {
         "incircle", y);
   }
   t.emit(o, "table_mpfr200");
+  {  // The student's edition of the book: without the column that answers exercise 2.3.1-2.
+    ch::Table student = t;
+    student.header.erase(student.header.begin() + 6);
+    for (auto& r : student.rows) r.erase(r.begin() + 6);
+    student.htmlParts = {{0, 1, 2, 3, 4, 5}, {6}};
+    student.emit(o, "table_mpfr200_student");
+  }
   // The simplest counterexample, spelled out.
   std::cout << "orient2d((1,1), (2,2), (2^-600, 0)): exact " << dt::orient2dExact(1, 1, 2, 2, 0x1p-600, 0)
             << ", MPFR-200 " << dt::orient2dMPFR200(1, 1, 2, 2, 0x1p-600, 0) << ", notes "

@@ -97,7 +97,7 @@ void countsTable(const ch::Options& o) {
         c.push_back(double(i) * double(i));
       }
       dt::shufflePoints(c, 11u);
-      inputs.push_back({"convex (parabola)", c});
+      inputs.push_back({"convex position (parabola)", c});
     }
   {
     // 1000 points rounded onto the unit circle: nearly cocircular, a hard case for the
@@ -137,6 +137,16 @@ void countsTable(const ch::Options& o) {
   }
   t.emit(o, "table_adjacency_counts");
   m.emit(o, "table_adjacency_means");
+  // The student's edition of the book shows both tables without the rows of points in convex
+  // position (n_h = n: the parabola, and the circle too), which answer exercise 2.3.2-3. The
+  // two tables have the same rows in the same order.
+  for (std::size_t k = t.rows.size(); k-- > 0;)
+    if (t.rows[k][1] == t.rows[k][2]) {
+      t.rows.erase(t.rows.begin() + long(k));
+      m.rows.erase(m.rows.begin() + long(k));
+    }
+  t.emit(o, "table_adjacency_counts_student");
+  m.emit(o, "table_adjacency_means_student");
 }
 
 }  // namespace

@@ -547,7 +547,7 @@ void parabola(const ch::Options& o) {
   t.caption = "Points on y = x^2 inserted in increasing x: away from the apex (x = 1..n) and "
               "towards it (x = -n..-1); Listing 2.7 in super-triangles (first-face walk), and "
               "DT(S) with ghost faces (walk from the previous ball). Every result checked exactly.";
-  t.header = {"method", "x", "n", "N_cavity", "largest cavity", "N_search", "t (s)", "t ratio"};
+  t.header = {"method", "order", "n", "N_cavity", "largest cavity", "N_search", "t (s)", "t ratio"};
   std::map<int, std::vector<std::uint64_t>> trace;  // cavity sizes, largest n, per variant
   const char* names[3] = {"super-triangles", "super-triangles", "ghost faces"};
   for (int variant = 0; variant < 3; ++variant) {
@@ -589,7 +589,7 @@ void parabola(const ch::Options& o) {
       const double sec = cpuSeconds() - t0;
       prog.update(std::uint64_t(n));
       checkOrThrow(T, "parabola");
-      t.add({names[variant], towards ? "-n..-1" : "1..n", std::to_string(n),
+      t.add({names[variant], towards ? "towards the apex" : "away from the apex", std::to_string(n),
              ch::fmt("%.1f", st.meanCavity()), std::to_string(largest),
              ch::fmt("%.1f", st.meanSearch()), ch::fmt("%.3g", sec),
              prev > 0 ? ch::fmt("%.1f", sec / prev) : "-"});
