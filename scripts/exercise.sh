@@ -487,8 +487,10 @@ cmd_watch() {
 }
 
 # ---- the teacher: grade --------------------------------------------------------------------------
-# flags_of BUILD VAR: a variable of the library's flags.make (CXX_FLAGS, CXX_DEFINES, CXX_INCLUDES).
-flags_of() { sed -n "s/^$2 = //p" "$1/CMakeFiles/dt.dir/flags.make"; }
+# flags_of BUILD VAR: a variable of the library's flags.make (CXX_FLAGS, CXX_DEFINES,
+# CXX_INCLUDES), one word per line. CMake quotes a word with a space or a quote in it
+# (-I"/tmp/a b/c'd/code"); xargs reads those quotes as a shell would, and nothing is evaluated.
+flags_of() { sed -n "s/^$2 = //p" "$1/CMakeFiles/dt.dir/flags.make" | xargs -r printf '%s\n'; }
 
 # grade_one ID BUILD WORK STUDENT_DIR NUMBER: one student's row, into WORK/rows/NUMBER.
 grade_one() {
@@ -524,8 +526,7 @@ grade_one() {
   #    library and test objects (dt_tests' own link line, with the student's objects first).
   for f in $files; do
     local o; o="$me/$(basename "$f" .cpp).o"
-    # shellcheck disable=SC2086  # the flags are lists of words
-    if ! (cd "$build" && "$GRADE_CXX" $GRADE_DEFINES -I"$HERE/code" $GRADE_INCLUDES $GRADE_FLAGS \
+    if ! (cd "$build" && "$GRADE_CXX" "${GRADE_ARGS[@]}" \
             -c "$me/$(basename "$f")" -o "$o") >"$me/cc.log" 2>&1; then
       row COMPILE-ERROR 0 "$(grep -m 3 -E 'error' "$me/cc.log" | sed "s#$me/##")"; return
     fi
@@ -570,9 +571,11 @@ cmd_grade() {
     die "$build is not a build of this tree with dt_tests (cmake --build $build --target dt_tests)"
   build="$(cd "$build" && pwd -P)"
   GRADE_CXX="$(sed -n 's/^CMAKE_CXX_COMPILER:[A-Z]*=//p' "$build/CMakeCache.txt")"
-  GRADE_FLAGS="$(flags_of "$build" CXX_FLAGS)"
-  GRADE_DEFINES="$(flags_of "$build" CXX_DEFINES)"
-  GRADE_INCLUDES="$(flags_of "$build" CXX_INCLUDES)"
+  local defines includes flags
+  mapfile -t defines < <(flags_of "$build" CXX_DEFINES)
+  mapfile -t includes < <(flags_of "$build" CXX_INCLUDES)
+  mapfile -t flags < <(flags_of "$build" CXX_FLAGS)
+  GRADE_ARGS=("${defines[@]}" -I"$HERE/code" "${includes[@]}" "${flags[@]}")
   local work; work="$(mktemp -d)"
   mkdir -p "$work/rows"
   # shellcheck disable=SC2064
