@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "fast_delaunay.h"
+#include "parallel_for.h"
 #include "predicates.h"
 #include "predicates_inline.h"
 #include "tri.h"
@@ -533,29 +534,7 @@ struct FirstTriangle {
 };
 FirstTriangle firstTriangle(const std::vector<double>& P, int n);
 
-/// body(k, lo, hi) on `threads` consecutive pieces [lo, hi) of [0, n), piece k by thread k
-/// (piece 0 by the calling thread). An exception of any piece is rethrown after all joined.
-template <class Body>
-void parallelFor(int threads, std::size_t n, Body body) {
-  if (threads <= 1) {
-    body(0, std::size_t(0), n);
-    return;
-  }
-  std::vector<std::exception_ptr> err(static_cast<std::size_t>(threads));
-  auto piece = [&](int k) {
-    try {
-      body(k, n * std::size_t(k) / std::size_t(threads), n * std::size_t(k + 1) / std::size_t(threads));
-    } catch (...) {
-      err[std::size_t(k)] = std::current_exception();
-    }
-  };
-  std::vector<std::thread> pool;
-  for (int k = 1; k < threads; ++k) pool.emplace_back(piece, k);
-  piece(0);
-  for (std::thread& th : pool) th.join();
-  for (const std::exception_ptr& e : err)
-    if (e) std::rethrow_exception(e);
-}
+using dt::parallelFor;  // parallel_for.h
 
 /// The end of a run: the adjacencies and the marks are already freed; the slots [0, count) of
 /// V hold the triangles, the ghosts and unused slots ({INF, INF, INF}). Keeps the finite

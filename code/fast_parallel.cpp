@@ -73,7 +73,7 @@ FastResult fastDelaunayParallel(const std::vector<double>& xy, int threads, cons
   const int rounds = std::max(1, std::min(opt.rounds, 32));
   std::vector<int> orig;
   {
-    const std::vector<std::size_t> o = brioCoinOrder(xy, opt.seed, rounds);
+    const std::vector<std::size_t> o = brioCoinOrder(xy, opt.seed, rounds, true, threads);
     orig.assign(o.begin(), o.end());
   }
   std::vector<double> P = fast::pointsInOrder(xy, orig, threads);

@@ -7,6 +7,8 @@
 #include <string>
 #include <utility>
 
+#include "parallel_for.h"
+
 namespace dt {
 
 //! [HilbertCoord]
@@ -446,6 +448,90 @@ std::vector<std::size_t> sortByGroupKeyIndex(const std::vector<double>& xy, int 
   return order;
 }
 
+// Merges the sorted runs a and b of distinct words into out, the output cut into `threads`
+// pieces merged at the same time.
+void mergeParallel(const std::vector<std::uint64_t>& a, const std::vector<std::uint64_t>& b,
+                   std::vector<std::uint64_t>& out, int threads) {
+  const std::size_t na = a.size(), nb = b.size();
+  out.resize(na + nb);
+  // The merge path: out[0, p) holds the i smallest words of a and the p - i smallest of b, i
+  // the least value with a[i] > b[p - i - 1] (the words are distinct), found by bisection.
+  auto fromA = [&](std::size_t p) {
+    std::size_t lo = p > nb ? p - nb : 0, hi = std::min(p, na);
+    while (lo < hi) {
+      const std::size_t i = lo + (hi - lo) / 2;
+      if (a[i] < b[p - i - 1]) lo = i + 1; else hi = i;
+    }
+    return lo;
+  };
+  parallelFor(threads, na + nb, [&](int, std::size_t lo, std::size_t hi) {
+    const std::size_t i = fromA(lo), e = fromA(hi);
+    std::merge(a.begin() + std::ptrdiff_t(i), a.begin() + std::ptrdiff_t(e),
+               b.begin() + std::ptrdiff_t(lo - i), b.begin() + std::ptrdiff_t(hi - e),
+               out.begin() + std::ptrdiff_t(lo));
+  });
+}
+
+// The parallel twin of sortByGroupKeyIndex's packed path (with `coarsen`), for `threads` > 1.
+// Every step is cut into consecutive pieces, one thread a piece, and none changes the result:
+// the words (group, key, index) are computed piece by piece; each piece (in index order, like
+// the whole) is radix-sorted on its own, which sorts it by whole word since the index breaks
+// every tie; the sorted pieces are merged (mergeParallel), which gives the one order of the
+// distinct words, the sequential sort's; and the refinement is cut only between runs of equal
+// (group, key), each run refined as before. So the order is the sequential one, bit for bit
+// (the fast kernel's tests compare them), whatever the number of threads.
+template <class GroupOf>
+std::vector<std::size_t> sortByGroupKeyIndexParallel(const std::vector<double>& xy, int depth,
+                                                     GroupOf groupOf, int groupBits,
+                                                     bool adaptive, int threads) {
+  const std::size_t n = xy.size() / 2;
+  const int idxBits = bitsFor(n);
+  depth = std::max(1, std::min(depth, (64 - groupBits - idxBits) / 2));  // as with `coarsen`
+  const int keyBits = 2 * depth;
+  const BoxCells cells(hilbertBox(xy), depth);
+  std::vector<std::vector<std::uint64_t>> pieces(static_cast<std::size_t>(threads));
+  parallelFor(threads, n, [&](int t, std::size_t lo, std::size_t hi) {
+    std::vector<std::uint64_t>& w = pieces[std::size_t(t)];
+    w.resize(hi - lo);
+    for (std::size_t k = lo; k < hi; ++k) {
+      int s = 0;
+      const std::uint64_t g = groupBits ? std::uint64_t(groupOf(k)) : 0;
+      w[k - lo] = (((g << keyBits) | cells.key(xy, k, s)) << idxBits) | k;
+    }
+    radixSort(w, idxBits, idxBits + keyBits + groupBits);
+  });
+  while (pieces.size() > 1) {  // merge neighbours, two by two, until one run is left
+    std::vector<std::vector<std::uint64_t>> merged((pieces.size() + 1) / 2);
+    for (std::size_t p = 0; p + 1 < pieces.size(); p += 2) {
+      mergeParallel(pieces[p], pieces[p + 1], merged[p / 2], threads);
+      std::vector<std::uint64_t>().swap(pieces[p]);
+      std::vector<std::uint64_t>().swap(pieces[p + 1]);
+    }
+    if (pieces.size() % 2) merged.back().swap(pieces.back());
+    pieces.swap(merged);
+  }
+  const std::vector<std::uint64_t>& w = pieces[0];
+  const std::uint64_t idxMask = (std::uint64_t{1} << idxBits) - 1;
+  std::vector<std::size_t> order(n);
+  parallelFor(threads, n, [&](int, std::size_t lo, std::size_t hi) {
+    for (std::size_t k = lo; k < hi; ++k) order[k] = std::size_t(w[k] & idxMask);
+  });
+  if (!adaptive) return order;
+  auto same = [&](std::size_t a, std::size_t b) { return (w[a] >> idxBits) == (w[b] >> idxBits); };
+  std::vector<std::size_t> cut(std::size_t(threads) + 1, n);  // piece t: [cut[t], cut[t + 1])
+  for (int t = 0; t < threads; ++t) {
+    std::size_t c = std::max(t ? cut[std::size_t(t) - 1] : 0, n * std::size_t(t) / std::size_t(threads));
+    while (c > 0 && c < n && same(c - 1, c)) ++c;  // a piece starts where a run starts
+    cut[std::size_t(t)] = c;
+  }
+  parallelFor(threads, std::size_t(threads), [&](int t, std::size_t, std::size_t) {
+    const std::size_t from = cut[std::size_t(t)], len = cut[std::size_t(t) + 1] - from;
+    refineSorted(xy, cells, order.data() + from, len,
+                 [&](std::size_t a, std::size_t b) { return same(from + a, from + b); });
+  });
+  return order;
+}
+
 // splitmix64: a small, fully specified generator, so BRIO orders are the same everywhere.
 std::uint64_t splitmix(std::uint64_t& s) {
   std::uint64_t z = (s += 0x9e3779b97f4a7c15ULL);
@@ -523,15 +609,19 @@ int brioCoinRound(std::size_t i, std::uint64_t seed, int rounds) {
 }
 
 std::vector<std::size_t> brioCoinOrder(const std::vector<double>& xy, std::uint64_t seed,
-                                       int rounds, bool adaptive) {
+                                       int rounds, bool adaptive, int threads) {
   if (xy.size() % 2 != 0) throw std::invalid_argument("hilbertBox: odd number of coordinates");
   if (rounds < 1 || rounds > 32) throw std::invalid_argument("brioCoinOrder: rounds out of 1..32");
   const std::size_t n = xy.size() / 2;
+  const int groupBits = rounds > 1 ? bitsFor(rounds) : 0;
+  if (threads > 1 && groupBits + 2 + bitsFor(n) <= 64)  // fits with one curve level at least
+    return sortByGroupKeyIndexParallel(
+        xy, checkedDepth(0, n), [&](std::size_t i) { return brioCoinRound(i, seed, rounds); },
+        groupBits, adaptive, threads);
   std::vector<std::uint32_t> round(n, 0);
   for (std::size_t i = 0; i < n && rounds > 1; ++i)
     round[i] = std::uint32_t(brioCoinRound(i, seed, rounds));
-  return sortByGroupKeyIndex(xy, checkedDepth(0, n), round, rounds > 1 ? bitsFor(rounds) : 0,
-                             adaptive, true);
+  return sortByGroupKeyIndex(xy, checkedDepth(0, n), round, groupBits, adaptive, true);
 }
 
 }  // namespace dt

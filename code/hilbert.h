@@ -94,8 +94,11 @@ std::vector<std::size_t> brioOrder(const std::vector<double>& xy, std::uint64_t 
 /// order is reproducible); each round in Hilbert order, adaptive as hilbertOrder unless
 /// adaptive = false (then equal keys by index). When (round, key, index) do not fit in 64 bits
 /// (about 10^7 points) the curve is taken a few levels coarser (the refinement makes up for it).
+/// With threads > 1 the same order, bit for bit, is computed by that many threads: keys,
+/// radix sorts and refinement piece by piece, the sorted pieces merged (the parallel kernel's
+/// sort; one thread's sort was a fifth of its time).
 std::vector<std::size_t> brioCoinOrder(const std::vector<double>& xy, std::uint64_t seed,
-                                       int rounds = 8, bool adaptive = true);
+                                       int rounds = 8, bool adaptive = true, int threads = 1);
 
 /// The round (0 = first, rounds - 1 = last) that brioCoinOrder(xy, seed, rounds) gives to point
 /// i: the parallel kernel (fast_parallel.h) finds the rounds' boundaries in the order with it.

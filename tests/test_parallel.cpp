@@ -5,12 +5,16 @@
 #include <array>
 #include <cmath>
 #include <stdexcept>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "check.h"
 #include "degenerate.h"
 #include "fast_delaunay.h"
 #include "fast_parallel.h"
+#include "generators.h"
+#include "hilbert.h"
 #include "support.h"
 #include "triangulate.h"
 
@@ -75,6 +79,33 @@ TEST_CASE("parallel a Delaunay triangulation on every degenerate family") {
       CHECK(r.duplicates == seq.duplicates);
     }
   }
+}
+
+TEST_CASE("parallel the sort with several threads gives the sequential order") {
+  // The parallel kernel's sort must be the sequential one, point for point: random, clustered
+  // (long refined runs, which the pieces must not cut), outliers, and every degenerate family
+  // (equal keys, equal points, flat boxes). Odd thread counts give uneven pieces and three
+  // runs to merge.
+  std::vector<std::pair<std::string, dttest::XY>> inputs = {
+      {"uniform", dttest::uniformPoints(100000, 3)},
+      {"clusters", dt::gaussianClusters(60000, 5, 3)},
+      {"cluster beside uniform", dt::clusterBesideUniform(30000, 9)},
+      {"outliers", dt::outlierPoints(20000, 11)},
+      {"exponent spread", dt::exponentSpreadPoints(5000, 13)},
+      {"tiny", dttest::uniformPoints(3, 1)}};
+  for (const dtdeg::Family& f : dtdeg::families()) inputs.emplace_back(f.name, f.points);
+  for (const auto& in : inputs)
+    for (bool adaptive : {true, false})
+      for (int rounds : {8, 1}) {
+        CAPTURE(in.first);
+        CAPTURE(adaptive);
+        CAPTURE(rounds);
+        const std::vector<std::size_t> seq = dt::brioCoinOrder(in.second, 1, rounds, adaptive);
+        for (int threads : {2, 3, 4}) {
+          CAPTURE(threads);
+          CHECK(dt::brioCoinOrder(in.second, 1, rounds, adaptive, threads) == seq);
+        }
+      }
 }
 
 TEST_CASE("parallel rejects what the sequential kernel rejects") {
