@@ -179,27 +179,7 @@ scan_sources() {
   [ -n "${DT_SCAN_SCRIPT:-}" ] && shells=("$DT_SCAN_SCRIPT")  # the self-test's planted script
   for f in "${shells[@]}"; do
     [ -f "$f" ] || continue
-    perl -0777 -ne '
-      s/^[ \t]*#.*$//mg;                                  # comment lines
-      my @seg;
-      while (s/\$\(([^()]*)\)/ Q /) { push @seg, $1 }       # $(...) become segments of their own
-      while (s/`([^`]*)`/ Q /) { push @seg, $1 }
-      push @seg, $_;
-      for my $t (@seg) {
-        # Quoted strings (even multi-line), in one left-to-right pass: an apostrophe inside
-        # "..." does not open a '...' string (two passes, first '...' then "...", paired the
-        # apostrophes of two messages and exposed the words between them as commands).
-        $t =~ s/"(?:[^"\\]|\\.)*"|\x27[^\x27]*\x27/Q/gs;
-        $t =~ s/[ \t]#.*$//mg;                              # trailing comments
-        $t =~ s/=\([^()]*\)/=Q/g;                            # array assignments a=(...)
-        $t =~ s/(^[ \t]*|\bin[ \t]+|;;[ \t]*)[^\s()|;]+(?:\|[^\s()|;]+)*\)/$1/mg;  # case arms a|b)
-        for my $part (split /&&|\|\||[|;(){}\n]/, $t) {
-          my @w = split " ", $part;
-          shift @w while @w && ($w[0] =~ /^[A-Za-z_][A-Za-z0-9_]*=/ ||
-                                $w[0] =~ /^(then|do|else|elif|if|while|until|time|exec|!)$/);
-          print "$ARGV: $w[0]\n" if @w;
-        }
-      }' "$f"
+    perl -0777 -n scripts/scan_commands.pl "$f"
   done
   # C++ sources that run commands through a shell: literals that begin with a program name and
   # a space.
@@ -258,17 +238,7 @@ if [ "${1:-}" = --self-test ]; then
   # The scanner: a planted script calls one program that is not in the table (uname), and
   # names three others where the scan must not see a call: hostname in messages holding
   # apostrophes, nice in a case arm, stat in an array. The check must name uname, and only it.
-  planted=$(mktemp)
-  trap 'rm -f "$tmp" "$planted"' EXIT
-  cat > "$planted" <<'PLANTED'
-echo "without $pkg: $(grep -m1 "is not in" <<< "$out" | sed 's/^x: //')"
-echo "the table's entries (hostname above)" >&2; echo "it's (hostname) not a call" >&2
-case "$1" in
-  nice|other) ;;
-esac
-local list=(stat cat) word
-uname -m
-PLANTED
+  planted=tests/check_deps_planted.txt  # not a script of the scan: its calls are planted
   out=$(DT_SCAN_SCRIPT=$planted DT_SCAN_ONLY=1 bash "$0" 2>&1) && status=1
   if ! grep -q "calls 'uname'" <<< "$out" || grep "calls '" <<< "$out" | grep -qv "'uname'"; then
     echo "self-test: FAILED: the scan of a planted script should name uname, and nothing else:"
