@@ -199,7 +199,13 @@ var DTLive = (function () {
       self.left = self.xy.length / 2;
       clear(gWalk); clear(gCav); clear(gPts);
       drawMesh();
-      f.info.textContent = "DT_0: the two super-triangles; " + self.left + " points to insert";
+      // The points still to insert, hollow as in the static Figure 2.5; each is filled when
+      // inserted (the super-triangles' corners lie outside the view: only their diagonal shows).
+      for (var k = 0; k < self.xy.length; k += 2)
+        el("circle", { cx: self.view.X(self.xy[k]), cy: self.view.Y(self.xy[k + 1]), r: 3,
+                       fill: "white", stroke: S.C_POINT, "stroke-width": 1, "class": "pending" }, gPts);
+      f.info.textContent = "DT_0: the two super-triangles (their diagonal crosses the view); " +
+        self.left + " points to insert";
     };
     // Inserts the next point: draws the faces its walk visited and its cavity, then the new mesh.
     this.step = function () {
