@@ -5,8 +5,8 @@ load system("dirname '".ARG0."'")."/style.gp"
 small = datadir.'/time_per_point.dat'
 large = datadir.'/time_per_point_large.dat'
 haveLarge = strlen(system('ls -- "${DT_DATADIR:-.}/time_per_point_large.dat" 2>/dev/null')) > 0
-curves = "plot small using 1:2 with linespoints lw 2 pt 7 lc rgb word(C_SERIES, 1) title 'total (sorting included)', " . \
-  "small using 1:4 with linespoints lw 1.5 pt 5 lc rgb word(C_SERIES, 5) title 'of which the sort (BRIO, Hilbert)', " . \
+curves = "plot small using 1:2 with linespoints lw 2 pt 7 lc rgb word(C_SERIES, 1) title 'total (sort included)', " . \
+  "small using 1:4 with linespoints lw 1.5 pt 5 lc rgb word(C_SERIES, 5) title 'the sort (BRIO, Hilbert)', " . \
   "small using 1:5 with linespoints lw 1.5 pt 9 lc rgb word(C_SERIES, 3) title 'the rest (insertions, output)'"
 extra = ", large using 1:2 with points pt 7 ps 1.6 lc rgb word(C_SERIES, 1) title 'total, from a --max-n run', " . \
   "large using 1:4 with points pt 5 ps 1.4 lc rgb word(C_SERIES, 5) notitle, " . \
