@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Mutation testing: does the test suite notice a bug? Applies each hand-written mutant of
 # tests/mutants.txt, one at a time, to a temporary copy of the repository, rebuilds everything
-# the suite runs (the default target: test_figures runs the chapter programs, test_cli the
-# triangulator), runs the suite, and reports each mutant as KILLED (a test failed, crashed or
+# the suite runs (the target dt_suite: the tests, the triangulator that test_cli runs and the
+# chapter programs that test_figures runs; not the WebAssembly build, which no test case of the
+# suite runs), runs the suite, and reports each mutant as KILLED (a test failed, crashed or
 # timed out), SURVIVED (every test passed: the suite misses that bug) or INVALID (the mutant
 # does not apply exactly once, changes nothing, or does not compile: fix the list). Exit status
 # 0 iff every mutant is killed; 2 if the unmutated tree does not build or its suite fails.
@@ -24,7 +25,7 @@
 # suite (build/dt_tests, stopping at the first failure, without test_progress.cpp, whose 30 s
 # of terminal sessions test only the progress display): about a minute per mutant on two
 # cores, so the whole list is not part of scripts/test.sh. MUTANTS_TEST_ARGS replaces the
-# doctest options, MUTANTS_TARGETS the build targets (default: all), MUTANTS_CMAKE_ARGS adds
+# doctest options, MUTANTS_TARGETS the build targets (default: dt_suite), MUTANTS_CMAKE_ARGS adds
 # configure options (e.g. -DDT_TEST_FILES=test_spine.cpp: a suite of one file). To reuse compiled objects
 # between runs, export CMAKE_CXX_COMPILER_LAUNCHER (e.g. a compiler cache) yourself.
 set -euo pipefail
@@ -33,7 +34,7 @@ repo=$(cd "$(dirname "$0")/.." && pwd)
 jobs=${MUTANTS_JOBS:-2}
 timeout_s=${MUTANTS_TIMEOUT:-300}
 test_args=${MUTANTS_TEST_ARGS:---source-file-exclude=*test_progress*}
-targets=${MUTANTS_TARGETS:-all}
+targets=${MUTANTS_TARGETS:-dt_suite}
 
 list_arg="$repo/tests/mutants.txt"
 mode=run
