@@ -26,6 +26,7 @@
 #include <string>
 #include <vector>
 
+#include "../chapters/cache_sizes.h"
 #include "../chapters/process.h"
 
 namespace fs = std::filesystem;
@@ -978,6 +979,16 @@ std::vector<Series> knownSeries(const fs::path& dir) {
       s.push_back({"fig_outside_hull", k, 3, row + "_q.dat", Draws::Markers});
       s.push_back({"fig_outside_hull", k, 4, row + "_label.dat", Draws::Texts});
     }
+  // fig_time_per_point's cache markers (bench_parallel), when the run marked some: a dashed
+  // line per marker (blocks of two rows) and its label, after the three curves (six when an
+  // earlier --max-n run left time_per_point_large.dat).
+  std::istringstream view(readAll(dir / "time_per_point_view.gp"));
+  for (std::string line; std::getline(view, line);)
+    if (line.rfind("ncaches = ", 0) == 0 && std::stoi(line.substr(10)) > 0) {
+      const int first = fs::exists(dir / "time_per_point_large.dat") ? 7 : 4;
+      s.push_back({"fig_time_per_point", 1, first, "time_per_point_cache_lines.dat", Draws::Segments});
+      s.push_back({"fig_time_per_point", 1, first + 1, "time_per_point_caches.dat", Draws::Texts});
+    }
   for (int f = 0; fs::exists(dir / ("rec_frame_" + std::to_string(f) + ".dat")); ++f) {
     s.push_back({"fig_recovery_frames", f + 1, 1, "rec_frame_" + std::to_string(f) + ".dat", Draws::Segments});
     s.push_back({"fig_recovery_frames", f + 1, 2, "rec_points.dat", Draws::Markers});
@@ -1035,6 +1046,47 @@ TEST_CASE("figures every series of a geometry figure draws exactly what its data
   for (const Series& s : series) CHECK_MESSAGE(svgs().count(s.figure) == 1, s.figure << ".svg was not written");
   for (const auto& [name, svg] : svgs())
     for (const std::string& m : seriesMismatches(name, svg, series, dir)) FAIL_CHECK(name << ".svg: " << m);
+}
+
+TEST_CASE("figures the cache markers come from the data and unified caches /sys describes") {
+  // A planted copy of /sys/devices/system/cpu/cpu0/cache: L1 instruction and data (in this
+  // order, so that an instruction cache taken for L1 would show), L2, L3.
+  const fs::path dir = fs::path(DT_TEST_TMP) / "cache_sizes";
+  fs::remove_all(dir);
+  auto plant = [&](const std::string& index, const char* level, const char* type, const char* size) {
+    fs::create_directories(dir / index);
+    std::ofstream(dir / index / "level") << level << "\n";
+    std::ofstream(dir / index / "type") << type << "\n";
+    std::ofstream(dir / index / "size") << size << "\n";
+  };
+  plant("index0", "1", "Instruction", "32K");
+  plant("index1", "1", "Data", "48K");
+  plant("index2", "2", "Unified", "1024K");
+  plant("index3", "3", "Unified", "32M");
+  const std::vector<ch::CacheSize> c = ch::dataCaches(dir);
+  REQUIRE(c.size() == 3);  // the instruction cache is no marker
+  CHECK(c[0].level == 1);
+  CHECK(c[0].bytes == 48 * 1024);
+  CHECK(c[0].label == "L1d 48 KiB");
+  CHECK(c[1].level == 2);
+  CHECK(c[1].bytes == 1024 * 1024);
+  CHECK(c[1].label == "L2 1 MiB");
+  CHECK(c[2].level == 3);
+  CHECK(c[2].bytes == 32ull * 1024 * 1024);
+  CHECK(c[2].label == "L3 32 MiB");
+  CHECK(ch::parseCacheSize("32768K") == 32ull * 1024 * 1024);
+  CHECK(ch::parseCacheSize("") == 0);
+  CHECK(ch::parseCacheSize("12X") == 0);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("figures no cache marker is invented when /sys lists no cache") {
+  const fs::path dir = fs::path(DT_TEST_TMP) / "cache_sizes_empty";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  CHECK(ch::dataCaches(dir).empty());
+  CHECK(ch::dataCaches(dir / "missing").empty());
+  fs::remove_all(dir);
 }
 
 TEST_CASE("figures every character of every SVG text is in the font the text names") {

@@ -5,7 +5,9 @@
 //  2. time per point of the sequential kernel from 10^3 points to --max-n (default 10^6; up to
 //     10^8 = 100000000), with the peak memory (VmHWM) of the triangulation and of the check.
 // Every triangulation is validated exactly (dt::checkDelaunay). Writes table_parallel.*,
-// table_time_per_point.*, time_per_point.dat, time_per_point_verdict.html and
+// table_time_per_point.*, time_per_point.dat, time_per_point_verdict.html, the cache markers
+// (time_per_point_view.gp, time_per_point_cache_lines.dat, time_per_point_caches.dat: the data
+// caches of /sys/devices/system/cpu/cpu0/cache, chapters/cache_sizes.h) and
 // fig_time_per_point.{png,svg}; a run with --max-n >= 10^7 also writes
 // time_per_point_large.dat, which later default runs plot as well.
 //
@@ -18,6 +20,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <functional>
@@ -27,6 +30,7 @@
 #include <thread>
 #include <vector>
 
+#include "cache_sizes.h"
 #include "check.h"
 #include "common.h"
 #include "fast_delaunay.h"
@@ -407,15 +411,80 @@ int main(int argc, char** argv) {
       v << " The largest rise between neighbouring sizes is a factor "
         << ch::fmt("%.2f", curve[steep].second / curve[steep - 1].second) << ", from n&nbsp;=&nbsp;"
         << curve[steep - 1].first << " to n&nbsp;=&nbsp;" << curve[steep].first << ".";
-    // Where the kernel's memory outgrows each cache, from the bytes per point at the largest n.
+    // Where the kernel's memory outgrows each cache, from the bytes per point at the largest n:
+    // the data and unified caches /sys describes (sysconf's L3 size comes from CPUID and on a
+    // virtual machine can be the host's), marked on the chart where they fall in its n range.
     const double bytesPerPoint = lastPeakMB * 1048576.0 / double(last.first);
-    for (int level : {2, 3}) {
-      const long size = sysconf(level == 2 ? _SC_LEVEL2_CACHE_SIZE : _SC_LEVEL3_CACHE_SIZE);
-      if (size > 0)
-        v << " This machine's L" << level << " cache (" << ch::fmt("%.0f", double(size) / 1048576.0)
-          << "&nbsp;MiB, as the system reports it) holds the kernel's data up to about n&nbsp;=&nbsp;"
-          << ch::fmt("%.0f", double(size) / bytesPerPoint) << ".";
+    const std::string cacheDir = "/sys/devices/system/cpu/cpu0/cache";
+    const std::vector<ch::CacheSize> caches = ch::dataCaches(cacheDir);
+    double nPlotted = double(last.first);  // the largest n the chart shows (an earlier large run too)
+    {
+      std::ifstream in(o.out + "/time_per_point_large.dat");
+      for (std::string line; std::getline(in, line);)
+        if (!line.empty() && line[0] != '#') nPlotted = std::max(nPlotted, std::atof(line.c_str()));
     }
+    // The chart's x range (log scale): from half a decade below 10^3 to 6 % of the span beyond
+    // the largest n it shows; where each marker's label goes is computed in that range.
+    const double nChartLo = std::pow(10.0, 2.5);
+    const double nChartHi = nPlotted * std::pow(nPlotted / nChartLo, 0.06);
+    auto along = [&](double n) { return std::log(n / nChartLo) / std::log(nChartHi / nChartLo); };
+    std::ostringstream cacheLines, cacheLabels;
+    cacheLines << "# one block per cache marker: n at y2 = 0 and at y2 = 1 (bench_parallel)\n";
+    cacheLabels << "# n label y2 x (the kernel's data fills the cache at about n; its label is centred at x, "
+                   "above the line's top, kept inside the chart; bench_parallel)\n";
+    int marked = 0;
+    double rowEnd[2] = {-1, -1};  // where the last label of each row ends, as a fraction of the width
+    std::vector<std::string> said;  // "11790 points (L2, 1 MiB)", one per cache
+    const struct {
+      int level;
+      const char *kib, *n;
+    } cacheKeys[] = {{1, "tpp.l1d_kib", "tpp.l1d_n"}, {2, "tpp.l2_kib", "tpp.l2_n"}, {3, "tpp.l3_kib", "tpp.l3_n"}};
+    for (const auto& ck : cacheKeys) {
+      const auto c = std::find_if(caches.begin(), caches.end(), [&](const ch::CacheSize& k) { return k.level == ck.level; });
+      if (c == caches.end()) {
+        values.set(ck.kib, "(not reported)");
+        values.set(ck.n, "-");
+        continue;
+      }
+      const double n = double(c->bytes) / bytesPerPoint;
+      values.set(ck.kib, std::to_string(c->bytes / 1024));
+      values.num(ck.n, n, "%.0f");
+      said.push_back(ch::fmt("%.0f", n) + " points (" + c->label.substr(0, c->label.find(' ')) + ", " +
+                     c->label.substr(c->label.find(' ') + 1) + ")");
+      std::cout << c->label << ": the kernel's data fills it at about n = " << ch::fmt("%.0f", n) << "\n";
+      if (n < nChartLo || n > nPlotted) continue;
+      // The label's half width as a fraction of the chart's (about 0.026 per character at the
+      // style's font: 22 px of 870 at 1200 px): centred on its line, moved inside the chart at
+      // its ends; a label that would meet the one before goes one row higher.
+      const double half = 0.014 * double(c->label.size()) + 0.01;
+      const double centre = std::clamp(along(n), half, 1 - half);
+      const int row = centre - half > rowEnd[0] ? 0 : centre - half > rowEnd[1] ? 1 : 0;
+      rowEnd[row] = centre + half;
+      const double x = nChartLo * std::pow(nChartHi / nChartLo, centre);
+      cacheLines << ch::fmt("%.1f", n) << " 0\n" << ch::fmt("%.1f", n) << " 1\n\n";
+      cacheLabels << ch::fmt("%.1f", n) << " \"" << c->label << "\" " << (row ? "1.10" : "1.04") << " "
+                  << ch::fmt("%.1f", x) << "\n";
+      ++marked;
+    }
+    if (caches.empty()) {
+      v << " This machine reported no cache sizes (" << cacheDir << " lists none), so the chart marks none.";
+      values.set("tpp.caches", "this machine reported no cache sizes, so the chart marks none");
+    } else {
+      std::string list;
+      for (std::size_t i = 0; i < said.size(); ++i)
+        list += (i == 0 ? "" : i + 1 == said.size() ? " and " : ", ") + said[i];
+      v << " At " << ch::fmt("%.0f", bytesPerPoint) << " bytes per point (the peak memory at n&nbsp;=&nbsp;"
+        << last.first << "), the caches of this machine (as " << cacheDir << " describes them) hold the "
+        << "kernel's data up to about " << list << ".";
+      values.set("tpp.caches", "the caches hold the kernel's data up to about " + list);
+    }
+    values.num("tpp.bytes_per_point", bytesPerPoint, "%.0f");
+    ch::writeOut(o, "time_per_point_cache_lines.dat", cacheLines.str());
+    ch::writeOut(o, "time_per_point_caches.dat", cacheLabels.str());
+    ch::writeOut(o, "time_per_point_view.gp",
+                 "# written by bench_parallel: the chart's x range and how many cache markers it draws\n"
+                 "nlo = " + ch::fmt("%.3f", nChartLo) + "\nnhi = " + ch::fmt("%.1f", nChartHi) +
+                     "\nncaches = " + std::to_string(marked) + "\n");
     v << "</p>\n";
     values.set("tpp.flat_up_to", std::to_string(flatUpTo));
     values.set("tpp.n_last", std::to_string(last.first));

@@ -22,6 +22,14 @@ stats f using 5 nooutput
 cavstep = nstep(STATS_max)
 stats f using 7 nooutput
 timestep = nstep(STATS_max)
+# The legend of (d) sits at its top right, over the right 59 % of its width: random order's
+# data must end left of it. In a full run it does (random order stops at small sizes); when it
+# would not (a --quick run, where every series has the same few sizes), (d)'s x axis reaches
+# further right, so that the data ends at 38 % of the width, as in a full run.
+xlo = nlo / 1.5; xhi = nhi * 1.5
+stats f using ($3 == 0 ? $2 : NaN) nooutput
+rnhi = STATS_max * 1.15
+xhiD = (log(rnhi / xlo) / log(xhi / xlo) <= 0.38) ? xhi : xlo * (rnhi / xlo) ** (1 / 0.38)
 # The stopped series of random order (r = 1) or of Hilbert and BRIO (r = 0); a circle around
 # each one's last point, only where some series stopped (a plot must draw something).
 # (The file reaches the shell as "$DT_DATADIR/...": expanded, never read as code.)
@@ -40,7 +48,7 @@ do for [term in "png svg"] {
   set format x "10^{%T}"
   set grid lc rgb "#d8d8d8" lw 1
   set xlabel "n"
-  set xrange [nlo / 1.5:nhi * 1.5]
+  set xrange [xlo:xhi]
   eval layout(2, 2)
   set tmargin 2.5
   eval panel(1, M."𝑁}_{cavity}: Hilbert (dashed) and BRIO (solid)")
@@ -61,6 +69,7 @@ do for [term in "png svg"] {
   set logscale y
   set yrange [*:*]
   set ytics autofreq
+  set xrange [xlo:xhiD]
   # The legend: one entry per input (colour and marker), in (d), whose large sizes are empty
   # (random order is only run at the small ones).
   set key inside top right Left reverse samplen 1.5 spacing 1.0 width -1
