@@ -157,9 +157,7 @@ class MarkClaim {
 
 /// Several threads: owner[t] is the lock of triangle t: kFree, 2 id (locked by thread id),
 /// 2 id + 1 (locked by thread id and in its cavity), or kFresh (a slot not handed out). Fresh
-/// slots come from a block of kBlock slots that the thread takes from the shared counter at once,
-/// so that the triangles one thread creates are neighbours in memory (and in the lock array),
-/// not interleaved with the other threads' (the cache lines would then travel between cores).
+/// slots come in blocks (SlotBlocks, below).
 //! [parShared]
 constexpr unsigned char kFree = 0, kFresh = 255;
 constexpr int kMaxThreads = 64;  // 2 id + 1 < kFresh
@@ -172,14 +170,39 @@ struct Locks {
 };
 //! [parShared]
 
+/// Fresh slots for the threads: blocks of `block` slots taken from the shared counter at once,
+/// so that the triangles one thread creates are neighbours in memory (and in the lock array),
+/// not interleaved with the other threads' (the cache lines would then travel between cores).
+class SlotBlocks {
+ public:
+  SlotBlocks(Store& S, int block) : S_(S), block_(block) {}
+  /// Two fresh slots of this thread's block (a new block when it is used up).
+  int take2() {
+    if (next_ + 2 > end_) {
+      next_ = S_.count.fetch_add(block_, std::memory_order_relaxed);
+      end_ = next_ + block_;
+      if (std::size_t(end_) > S_.V.size())
+        throw std::logic_error("fastDelaunayParallel: out of triangle slots");
+    }
+    const int base = next_;
+    next_ += 2;
+    return base;
+  }
+
+ private:
+  Store& S_;
+  const int block_;
+  int next_ = 0, end_ = 0;
+};
+
 class LockClaim {
  public:
   static constexpr bool kShared = true;
   static constexpr int kBlock = 512;  // slots per block: 24 KB of V, 36 KB of A
   enum State { kNew, kInCavity, kHeld };
   LockClaim(Store& S, Locks& L, int id, int block = kBlock)
-      : S_(S), L_(L), tagLock_((unsigned char)(2 * id)), tagCav_((unsigned char)(2 * id + 1)),
-        block_(block) {}
+      : L_(L), tagLock_((unsigned char)(2 * id)), tagCav_((unsigned char)(2 * id + 1)),
+        blocks_(S, block) {}
   bool lock(int t) {
     unsigned char e = kFree;
     if (!L_.owner[t].compare_exchange_strong(e, tagLock_, std::memory_order_acquire,
@@ -197,17 +220,10 @@ class LockClaim {
     for (int t : locked_) L_.owner[t].store(kFree, std::memory_order_release);
     locked_.clear();
   }
-  /// Two fresh slots from this thread's block (a new block when it is used up). This thread
-  /// owns them from the moment it takes them (they are kFresh to everyone else).
+  /// Two fresh slots from this thread's block. This thread owns them from the moment it takes
+  /// them (they are kFresh to everyone else).
   int newSlots() {
-    if (next_ + 2 > end_) {
-      next_ = S_.count.fetch_add(block_, std::memory_order_relaxed);
-      end_ = next_ + block_;
-      if (std::size_t(end_) > S_.V.size())
-        throw std::logic_error("fastDelaunayParallel: out of triangle slots");
-    }
-    const int base = next_;
-    next_ += 2;
+    const int base = blocks_.take2();
     for (int s : {base, base + 1}) {
       L_.owner[s].store(tagLock_, std::memory_order_relaxed);
       locked_.push_back(s);
@@ -216,13 +232,49 @@ class LockClaim {
   }
 
  private:
-  Store& S_;
   Locks& L_;
   const unsigned char tagLock_, tagCav_;
-  const int block_;
-  int next_ = 0, end_ = 0;
+  SlotBlocks blocks_;
   std::vector<int> locked_;
 };
+
+/// Several threads without locks: during a concurrent round thread k owns a slab of the plane,
+/// lo <= x < hi (the slabs of the threads do not overlap), and takes only the triangles whose
+/// three vertices lie in its slab (never a ghost). No other thread writes such a triangle: the
+/// other threads' cavities hold only their own slabs' triangles, and the triangles they build
+/// (an edge of their cavity and their own point) lie in their slabs again; the triangles with
+/// vertices in two slabs, and the ghosts, are left to the insertions redone alone after the
+/// round. So a claim is a test of three coordinates, not a compare-and-swap. A triangle read
+/// while another thread rewrites it has vertices of that thread's slab (or INF) in every
+/// mixture, and is refused. Marks are private to the thread (MarkClaim's); fresh slots come
+/// in blocks (SlotBlocks). Alone (after setAlone), it takes every triangle.
+//! [slabClaim]
+class SlabClaim : public MarkClaim {
+ public:
+  static constexpr bool kShared = true;
+  static constexpr int kBlock = 512;
+  explicit SlabClaim(Store& S, int block = kBlock) : MarkClaim(S), S_(S), blocks_(S, block) {}
+  void setSlab(double lo, double hi) { lo_ = lo, hi_ = hi, alone_ = false; }
+  void setAlone() { alone_ = true; }
+  bool lock(int t) {
+    if (alone_) return true;
+    const Tri& v = S_.V[std::size_t(t)];
+    const int a = RelaxedAccess::ld(v[0]), b = RelaxedAccess::ld(v[1]), c = RelaxedAccess::ld(v[2]);
+    return a != S_.INF && b != S_.INF && c != S_.INF && mine(a) && mine(b) && mine(c);
+  }
+  int newSlots() { return blocks_.take2(); }
+
+ private:
+  bool mine(int v) const {
+    const double x = S_.P[2 * std::size_t(v)];
+    return x >= lo_ && x < hi_;
+  }
+  Store& S_;
+  SlotBlocks blocks_;
+  double lo_ = 0, hi_ = 0;
+  bool alone_ = true;
+};
+//! [slabClaim]
 
 // ---------------------------------------------------------------------------------------------
 /// The ghost rule of predicates_inline.h on the kernel's point array.

@@ -16,7 +16,8 @@ namespace {
 // shared Store. Every entry of V and A is read and written with relaxed atomic accesses, so a
 // walk may read a triangle that another thread is rewriting without a data race; what the walk
 // finds is only a hint, checked under a lock.
-using Inserter = fast::Inserter<fast::InlinePredicates, fast::RelaxedAccess, fast::LockClaim>;
+template <class Claim>
+using InserterOf = fast::Inserter<fast::InlinePredicates, fast::RelaxedAccess, Claim>;
 
 // One thread's state, on cache lines of its own: two threads' counters never share a line.
 struct alignas(64) Worker {
@@ -25,37 +26,200 @@ struct alignas(64) Worker {
   std::vector<int> deferred;
 };
 
-// Inserts points [from, to) of the insertion order (skipping i1, i2) with one inserter; a Busy
-// point goes to the deferred list, or is an error when the inserter must be alone. tick(i), if
-// given, is called before point i when i - from is a multiple of `every` (the progress report).
-template <class Tick>
-void insertRange(Inserter& in, Worker& w, int from, int to, int i1, int i2, bool alone,
+// Inserts the points pick(from), ..., pick(to - 1) of the insertion order (skipping i1, i2) with
+// one inserter; a Busy point goes to the deferred list, or is an error when the inserter must be
+// alone. tick(j), if given, is called before the j-th point when j - from is a multiple of
+// `every` (the progress report).
+template <class Inserter, class Pick, class Tick>
+void insertRange(Inserter& in, Worker& w, int from, int to, Pick pick, int i1, int i2, bool alone,
                  std::size_t every, Tick tick) {
   std::size_t next = every;
-  for (int i = from; i < to; ++i) {
-    if (__builtin_expect(std::size_t(i - from) == next, 0)) {
-      tick(i);
+  for (int j = from; j < to; ++j) {
+    if (__builtin_expect(std::size_t(j - from) == next, 0)) {
+      tick(j);
       next += every;
     }
+    const int i = pick(j);
     if (i == i1 || i == i2) continue;
     int d = -1;
-    const Inserter::Outcome o = in.insert(i, d);
+    const typename Inserter::Outcome o = in.insert(i, d);
     if (o == Inserter::Duplicate) {
       w.dups.emplace_back(i, d);
     } else if (o == Inserter::Busy) {
-      if (alone) throw std::logic_error("fastDelaunayParallel: a lone insertion met a lock");
+      if (alone) throw std::logic_error("fastDelaunayParallel: a lone insertion was refused");
       w.deferred.push_back(i);
     }
   }
 }
+
+const auto kIdentity = [](int j) { return j; };
+
+// The claims of the threads, and how a concurrent round is shared out among them.
+struct LockPolicy {
+  using Claim = fast::LockClaim;
+  fast::Locks L;
+  LockPolicy(std::size_t slots) : L(slots, 4) {}
+  std::unique_ptr<Claim> make(fast::Store& S, int k) { return std::unique_ptr<Claim>(new Claim(S, L, k + 1)); }
+  void alone(Claim&) {}
+  // Thread k takes the k-th of `threads` consecutive pieces of the round's Hilbert order.
+  template <class Run>
+  void round(const std::vector<double>&, int from, int to, int threads,
+             std::vector<std::unique_ptr<Claim>>&, Run run) {
+    fast::parallelFor(threads, std::size_t(to - from), [&](int k, std::size_t lo, std::size_t hi) {
+      run(k, from + int(lo), from + int(hi), kIdentity);
+    });
+  }
+  void release() { L.owner.reset(); }
+};
+
+struct SlabPolicy {
+  using Claim = fast::SlabClaim;
+  std::vector<int> who;   // the round's points, thread by thread, each in Hilbert order
+  std::vector<double> xs;
+  SlabPolicy(std::size_t) {}
+  std::unique_ptr<Claim> make(fast::Store& S, int) { return std::unique_ptr<Claim>(new Claim(S)); }
+  void alone(Claim& c) { c.setAlone(); }
+  // Thread k takes the round's points in the k-th slab of x, cut at the round's x-quantiles
+  // (each slab about as many points), in their Hilbert order.
+  template <class Run>
+  void round(const std::vector<double>& P, int from, int to, int threads,
+             std::vector<std::unique_ptr<Claim>>& claims, Run run) {
+    const std::size_t m = std::size_t(to - from);
+    xs.resize(m);
+    for (std::size_t j = 0; j < m; ++j) xs[j] = P[2 * (std::size_t(from) + j)];
+    std::vector<double> cut(std::size_t(threads) + 1);
+    cut[0] = -HUGE_VAL;
+    cut[std::size_t(threads)] = HUGE_VAL;
+    for (int k = 1; k < threads; ++k) {
+      auto q = xs.begin() + std::ptrdiff_t(m * std::size_t(k) / std::size_t(threads));
+      std::nth_element(xs.begin(), q, xs.end());
+      cut[std::size_t(k)] = *q;
+    }
+    std::vector<int> start(std::size_t(threads) + 1, 0);  // thread k: who[start[k], start[k+1])
+    auto slab = [&](int i) {
+      return int(std::upper_bound(cut.begin() + 1, cut.end() - 1, P[2 * std::size_t(i)]) - (cut.begin() + 1));
+    };
+    for (int i = from; i < to; ++i) ++start[std::size_t(slab(i)) + 1];
+    for (int k = 0; k < threads; ++k) start[std::size_t(k) + 1] += start[std::size_t(k)];
+    who.resize(m);
+    std::vector<int> at(start.begin(), start.end() - 1);
+    for (int i = from; i < to; ++i) who[std::size_t(at[std::size_t(slab(i))]++)] = i;
+    for (int k = 0; k < threads; ++k) claims[std::size_t(k)]->setSlab(cut[std::size_t(k)], cut[std::size_t(k) + 1]);
+    fast::parallelFor(threads, std::size_t(threads), [&](int, std::size_t lo, std::size_t hi) {
+      for (std::size_t k = lo; k < hi; ++k)
+        run(int(k), start[k], start[k + 1], [&](int j) { return who[std::size_t(j)]; });
+    });
+  }
+  void release() {}
+};
 
 }  // namespace
 
 int defaultThreadCount() { return std::max(1, int(std::thread::hardware_concurrency())); }
 
 //! [fastDelaunayParallel]
+// The insertions after the sort, the same for both claims: the small first rounds by one thread,
+// each larger round shared out by the policy, the deferred insertions of a round by one thread;
+// then the output.
+template <class Policy>
+void insertRounds(const std::vector<double>& xy, std::vector<double>& P, std::vector<int>& orig,
+                  const std::vector<int>& roundStart, int rounds, int threads,
+                  const FastOptions& opt, int minPiece, ParallelStats& ps, FastResult& res,
+                  std::chrono::steady_clock::time_point t0) {
+  const std::size_t n = xy.size() / 2;
+  std::vector<Worker> W(static_cast<std::size_t>(threads));
+  const int N = int(n);
+  const fast::FirstTriangle f = fast::firstTriangle(P, N);
+  const int i1 = f.i1, i2 = f.i2;
+  // Room for the 2n + 2 triangles and each thread's last, partly used block of slots.
+  const std::size_t slots = 2 * n + 2 + std::size_t(threads) * Policy::Claim::kBlock;
+  fast::Store S(P.data(), N, slots);
+  if (f.ccw)
+    S.init(0, i1, i2);
+  else
+    S.init(0, i2, i1);
+  Policy policy(slots);
+  std::vector<std::unique_ptr<typename Policy::Claim>> claims;
+  std::vector<std::unique_ptr<InserterOf<typename Policy::Claim>>> ins;
+  for (int k = 0; k < threads; ++k) {
+    claims.push_back(policy.make(S, k));
+    ins.emplace_back(new InserterOf<typename Policy::Claim>(S, *claims.back(), fast::InlinePredicates{&W[std::size_t(k)].stats},
+                                                            W[std::size_t(k)].stats));
+  }
+  res.stats.insertions = 3;
+
+  // A round goes to the threads when each gets at least minPiece points; before that (and for
+  // the points the first triangle skipped), one thread inserts.
+  int seqEnd = i2 + 1;
+  int r0 = 0;
+  while (r0 < rounds && (roundStart[r0 + 1] <= seqEnd ||
+                         roundStart[r0 + 1] - roundStart[r0] < std::max(1, minPiece) * threads))
+    ++r0;
+  seqEnd = std::max(seqEnd, roundStart[r0]);
+  // Progress (FastOptions::progress) is reported by the calling thread only, so the callback
+  // needs no locking: during a concurrent round, from its own piece (the pieces advance at about
+  // the same rate), with its own counters scaled by the number of threads.
+  const std::size_t every =
+      opt.progress ? std::max<std::size_t>(1, opt.progressEvery) : std::size_t(-1);
+  auto report = [&](std::size_t done, int scale) {
+    FastStats s = W[0].stats;
+    s.walkSteps *= std::uint64_t(scale);
+    s.cavityFaces *= std::uint64_t(scale);
+    s.insertions = std::min<std::uint64_t>(done, s.insertions * std::uint64_t(scale));
+    opt.progress(std::min(done, n), n, s);
+  };
+  policy.alone(*claims[0]);
+  insertRange(*ins[0], W[0], 1, seqEnd, kIdentity, i1, i2, true, every,
+              [&](int i) { report(std::size_t(i), 1); });
+  const auto tp = std::chrono::steady_clock::now();
+  for (int r = r0; r < rounds; ++r) {
+    const int from = std::max(seqEnd, roundStart[r]), to = roundStart[r + 1];
+    if (from >= to) continue;
+    ++ps.parallelRounds;
+    ps.parallelPoints += std::uint64_t(to - from);
+    // (The walk starts where this thread's previous piece ended.)
+    policy.round(P, from, to, threads, claims, [&](int k, int lo, int hi, auto pick) {
+      insertRange(*ins[std::size_t(k)], W[std::size_t(k)], lo, hi, pick, i1, i2, false,
+                  k == 0 ? every / std::size_t(threads) + 1 : std::size_t(-1), [&](int j) {
+                    report(std::size_t(from) + std::size_t(j - lo) * std::size_t(threads), threads);
+                  });
+    });
+    // The deferred insertions, by one thread, in their order (no other thread runs now).
+    std::vector<int> later;
+    for (Worker& w : W) {
+      later.insert(later.end(), w.deferred.begin(), w.deferred.end());
+      w.deferred.clear();
+    }
+    std::sort(later.begin(), later.end());
+    ps.deferred += later.size();
+    policy.alone(*claims[0]);
+    for (int i : later)
+      insertRange(*ins[0], W[0], i, i + 1, kIdentity, i1, i2, true, std::size_t(-1), [](int) {});
+  }
+  ps.parallelSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - tp).count();
+
+  std::vector<std::pair<int, int>> dups;
+  for (Worker& w : W) {
+    res.stats.insertions += w.stats.insertions;
+    res.stats.walkSteps += w.stats.walkSteps;
+    res.stats.cavityFaces += w.stats.cavityFaces;
+    res.stats.orient += w.stats.orient;
+    res.stats.incircle += w.stats.incircle;
+    dups.insert(dups.end(), w.dups.begin(), w.dups.end());
+  }
+  ins.clear();
+  claims.clear();
+  policy.release();
+  std::vector<int>().swap(S.A);
+  fast::finish(S.V, std::size_t(S.count.load()), N, P, orig, dups, opt.insertionNumbering,
+               threads, res);
+  res.stats.insertSeconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() -
+      res.stats.sortSeconds;
+}
+
 FastResult fastDelaunayParallel(const std::vector<double>& xy, int threads, const FastOptions& opt,
-                                ParallelStats* pstats, int minPiece) {
+                                ParallelStats* pstats, int minPiece, ParallelClaim claim) {
   ParallelStats ps;
   if (threads <= 1) {
     if (pstats) *pstats = ps;
@@ -90,93 +254,10 @@ FastResult fastDelaunayParallel(const std::vector<double>& xy, int threads, cons
   }
   res.stats.sortSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
-  const int N = int(n);
-  const fast::FirstTriangle f = fast::firstTriangle(P, N);
-  const int i1 = f.i1, i2 = f.i2;
-  // Room for the 2n + 2 triangles and each thread's last, partly used block of slots.
-  const std::size_t slots = 2 * n + 2 + std::size_t(threads) * fast::LockClaim::kBlock;
-  fast::Store S(P.data(), N, slots);
-  if (f.ccw)
-    S.init(0, i1, i2);
+  if (claim == ParallelClaim::Locks)
+    insertRounds<LockPolicy>(xy, P, orig, roundStart, rounds, threads, opt, minPiece, ps, res, t0);
   else
-    S.init(0, i2, i1);
-  fast::Locks L(slots, 4);
-  std::vector<Worker> W(static_cast<std::size_t>(threads));
-  std::vector<std::unique_ptr<fast::LockClaim>> claims;
-  std::vector<std::unique_ptr<Inserter>> ins;
-  for (int k = 0; k < threads; ++k) {
-    claims.emplace_back(new fast::LockClaim(S, L, k + 1));
-    ins.emplace_back(new Inserter(S, *claims.back(), fast::InlinePredicates{&W[k].stats}, W[k].stats));
-  }
-  res.stats.insertions = 3;
-
-  // A round goes to the threads when each gets at least minPiece points; before that (and for
-  // the points the first triangle skipped), one thread inserts.
-  int seqEnd = i2 + 1;
-  int r0 = 0;
-  while (r0 < rounds && (roundStart[r0 + 1] <= seqEnd ||
-                         roundStart[r0 + 1] - roundStart[r0] < std::max(1, minPiece) * threads))
-    ++r0;
-  seqEnd = std::max(seqEnd, roundStart[r0]);
-  // Progress (FastOptions::progress) is reported by the calling thread only, so the callback
-  // needs no locking: during a concurrent round, from its own piece (the pieces advance at about
-  // the same rate), with its own counters scaled by the number of threads.
-  const std::size_t every =
-      opt.progress ? std::max<std::size_t>(1, opt.progressEvery) : std::size_t(-1);
-  auto report = [&](std::size_t done, int scale) {
-    FastStats s = W[0].stats;
-    s.walkSteps *= std::uint64_t(scale);
-    s.cavityFaces *= std::uint64_t(scale);
-    s.insertions = std::min<std::uint64_t>(done, s.insertions * std::uint64_t(scale));
-    opt.progress(std::min(done, n), n, s);
-  };
-  insertRange(*ins[0], W[0], 1, seqEnd, i1, i2, true, every,
-              [&](int i) { report(std::size_t(i), 1); });
-  const auto tp = std::chrono::steady_clock::now();
-  for (int r = r0; r < rounds; ++r) {
-    const int from = std::max(seqEnd, roundStart[r]), to = roundStart[r + 1];
-    if (from >= to) continue;
-    ++ps.parallelRounds;
-    ps.parallelPoints += std::uint64_t(to - from);
-    // (The walk starts where this thread's previous piece ended.)
-    fast::parallelFor(threads, std::size_t(to - from), [&](int k, std::size_t lo, std::size_t hi) {
-      insertRange(*ins[k], W[k], from + int(lo), from + int(hi), i1, i2, false,
-                  k == 0 ? every / std::size_t(threads) + 1 : std::size_t(-1), [&](int i) {
-                    report(std::size_t(from) + std::size_t(i - from) * std::size_t(threads),
-                           threads);
-                  });
-    });
-    // The deferred insertions, by one thread, in their order (the lock of every triangle is free).
-    std::vector<int> later;
-    for (Worker& w : W) {
-      later.insert(later.end(), w.deferred.begin(), w.deferred.end());
-      w.deferred.clear();
-    }
-    std::sort(later.begin(), later.end());
-    ps.deferred += later.size();
-    for (int i : later)
-      insertRange(*ins[0], W[0], i, i + 1, i1, i2, true, std::size_t(-1), [](int) {});
-  }
-  ps.parallelSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - tp).count();
-
-  std::vector<std::pair<int, int>> dups;
-  for (Worker& w : W) {
-    res.stats.insertions += w.stats.insertions;
-    res.stats.walkSteps += w.stats.walkSteps;
-    res.stats.cavityFaces += w.stats.cavityFaces;
-    res.stats.orient += w.stats.orient;
-    res.stats.incircle += w.stats.incircle;
-    dups.insert(dups.end(), w.dups.begin(), w.dups.end());
-  }
-  ins.clear();
-  claims.clear();
-  L.owner.reset();
-  std::vector<int>().swap(S.A);
-  fast::finish(S.V, std::size_t(S.count.load()), N, P, orig, dups, opt.insertionNumbering,
-               threads, res);
-  res.stats.insertSeconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() -
-      res.stats.sortSeconds;
+    insertRounds<SlabPolicy>(xy, P, orig, roundStart, rounds, threads, opt, minPiece, ps, res, t0);
   if (pstats) *pstats = ps;
   return res;
 }

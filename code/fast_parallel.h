@@ -1,9 +1,11 @@
 // Going further: the fast kernel on several cores, for inputs where one core's insertion time
 // dominates. The same Bowyer-Watson insertion as fast_delaunay.h (one core, fast_core.h, with
-// other policies), run by several threads on one shared triangulation: each insertion locks
-// every triangle it reads or writes (its cavity and the cavity's outer neighbours) with a
-// try-lock, and an insertion that meets another thread's lock gives up and is retried later,
-// alone. Why this gives DT(S): book/parallel.md.
+// other policies), run by several threads on one shared triangulation. By default each thread
+// owns a slab of the plane for the round and takes only the triangles with all three vertices
+// in it, which no other thread can touch (no lock, no atomic read-modify-write); the other
+// claim locks every triangle an insertion reads or writes with a try-lock. An insertion that
+// cannot take a triangle it needs gives up and is redone after the round, alone. Why this
+// gives DT(S): book/parallel.md.
 #pragma once
 
 #include <cstdint>
@@ -22,14 +24,22 @@ struct ParallelStats {
   double parallelSeconds = 0;         ///< wall time of the concurrent rounds (deferred ones included)
 };
 
+/// How the threads of a concurrent round keep out of each other's triangles (parallel page).
+enum class ParallelClaim {
+  Slabs,  ///< each thread owns a slab of the plane and takes only triangles inside it: no atomics
+  Locks,  ///< a try-lock (compare-and-swap) per triangle read or written
+};
+
 /// The number of threads `--threads` means by default: the machine's hardware threads (at least 1).
 int defaultThreadCount();
 
 /// Going further (parallel page): DT(S) of xy = x0 y0 x1 y1 ... with `threads` threads. threads
 /// <= 1 calls fastDelaunay(xy, opt) itself. Otherwise the small first BRIO rounds (opt.order
-/// must be FastOrder::RadixBrio) are inserted by one thread, and each larger round is cut into
-/// `threads` consecutive pieces of its Hilbert order, inserted concurrently; insertions that
-/// meet another thread's triangles are redone by one thread after the round. The result is the
+/// must be FastOrder::RadixBrio) are inserted by one thread, and each larger round is shared
+/// among `threads` threads (claim: Slabs, each thread the round's points in one slab of x, cut
+/// at the x-quantiles of the round, in Hilbert order; Locks, consecutive pieces of the round's
+/// Hilbert order), inserted concurrently; insertions that need another thread's triangles are
+/// redone by one thread after the round. The result is the
 /// exact DT(S) whenever it is unique (points in general position: then equal to fastDelaunay's),
 /// otherwise a Delaunay triangulation of S (checkDelaunay validates it); duplicates are merged
 /// into the smallest-numbered equal point, as fastDelaunay does; opt.insertionNumbering is
@@ -41,6 +51,6 @@ int defaultThreadCount();
 /// small, to make threads meet on small inputs).
 FastResult fastDelaunayParallel(const std::vector<double>& xy, int threads,
                                 const FastOptions& opt = {}, ParallelStats* pstats = nullptr,
-                                int minPiece = 2048);
+                                int minPiece = 2048, ParallelClaim claim = ParallelClaim::Slabs);
 
 }  // namespace dt

@@ -108,7 +108,8 @@ void validate(const std::vector<double>& xy, const std::vector<dt::Tri>& tri) {
   if (!c.ok) throw std::runtime_error("the triangulation fails the exact check: " + c.error);
 }
 
-// One triangulation of n uniform points with `threads` threads (0: CGAL), validated if `check`.
+// One triangulation of n uniform points with `threads` threads (0: CGAL; -3: 2 threads that
+// claim triangles with locks instead of slabs), validated if `check`.
 // out: wall, CPU, triangles, deferred insertions, concurrent points, peak MB.
 void threadsJob(std::size_t n, int threads, bool check, double* out) {
   const std::vector<double> xy = dt::uniformPoints(n, 2026);
@@ -129,7 +130,9 @@ void threadsJob(std::size_t n, int threads, bool check, double* out) {
     return;
   }
   dt::ParallelStats ps;
-  const dt::FastResult r = dt::fastDelaunayParallel(xy, threads, {}, &ps);
+  const dt::FastResult r =
+      threads == -3 ? dt::fastDelaunayParallel(xy, 2, {}, &ps, 2048, dt::ParallelClaim::Locks)
+                    : dt::fastDelaunayParallel(xy, threads, {}, &ps);
   out[0] = wallNow() - w0;
   out[1] = cpuNow() - c0;
   out[2] = double(r.tri.size());
@@ -240,6 +243,7 @@ int main(int argc, char** argv) {
       // and two threads are measured.
       const bool pair = std::count(runs.begin(), runs.end(), 1) && std::count(runs.begin(), runs.end(), 2);
       if (pair) runs.push_back(-2);
+      if (pair) runs.push_back(-3);  // the same two threads with a lock per triangle
       if (haveCgal) runs.push_back(0);
       std::vector<std::vector<double>> best(runs.size());
       // Alternate the runs (all kernels once, then again): a burst of load hits them all.
@@ -260,11 +264,13 @@ int main(int argc, char** argv) {
           }
         }
       const std::vector<double>* cg = haveCgal ? &best.back() : nullptr;
-      const std::vector<double>*seq = nullptr, *two = nullptr, *pairRun = nullptr;
+      const std::vector<double>*seq = nullptr, *two = nullptr, *pairRun = nullptr,
+                                *lockRun = nullptr;
       for (std::size_t j = 0; j < runs.size(); ++j) {
         if (runs[j] == 1) seq = &best[j];
         if (runs[j] == 2) two = &best[j];
         if (runs[j] == -2) pairRun = &best[j];
+        if (runs[j] == -3) lockRun = &best[j];
       }
       if (seq && two) {
         pv << "<p>Measured in this run at n&nbsp;=&nbsp;" << n << ": with 2 threads the wall time is "
@@ -321,18 +327,27 @@ int main(int argc, char** argv) {
                    !ceil ? "was not measured"
                          : ceiling <= kTwoTarget ? "allows it: what is missing is the kernel's"
                                                  : "does not allow it, whatever the kernel");
+        const bool lk = lockRun && seq;
+        values.set("par.locks_wall_ratio2", lk ? ch::fmt("%.2f", (*lockRun)[0] / (*seq)[0]) : "(not measured)");
+        values.set("par.locks_cpu_extra2",
+                   lk ? ch::fmt("%.0f%%", 100 * ((*lockRun)[1] / (*seq)[1] - 1)) : "(not measured)");
+        values.set("par.slabs_vs_locks",
+                   !(lk && two) ? "was not measured"
+                   : (*two)[1] < (*lockRun)[1] ? "took less CPU time than the locks"
+                                               : "did not take less CPU time than the locks");
         values.set("par.cpu_extra2",
                    ceil ? ch::fmt("%.0f%%", 100 * ((*two)[1] / (*seq)[1] - 1)) : "(not measured)");
       }
       for (std::size_t j = 0; j < runs.size(); ++j) {
         const std::vector<double>& r = best[j];
         const bool cgal = runs[j] == 0;
-        const bool twice = runs[j] == -2;
+        const bool twice = runs[j] == -2, locks = runs[j] == -3;
         t.add({std::to_string(n),
                cgal ? "CGAL 2D"
                     : twice ? "fast (sequential), two runs at once"
+                    : locks ? "fast parallel, locks"
                             : (runs[j] == 1 ? "fast (sequential)" : "fast parallel"),
-               cgal ? "1" : twice ? "2 x 1" : std::to_string(runs[j]), ch::fmt("%.3f", r[0]),
+               cgal ? "1" : twice ? "2 x 1" : locks ? "2" : std::to_string(runs[j]), ch::fmt("%.3f", r[0]),
                ch::fmt("%.3f", r[1]),
                cg ? ch::fmt("%.2f", r[0] / (*cg)[0]) : "-", cg ? ch::fmt("%.2f", r[1] / (*cg)[1]) : "-",
                cgal || twice || runs[j] == 1 ? "-" : ch::fmt("%.3f", 100 * r[3] / std::max(1.0, r[4])),
@@ -343,7 +358,8 @@ int main(int argc, char** argv) {
                 std::to_string(reps) + " (with that run's CPU time, all threads); the machine has " +
                 std::to_string(hw) + " hardware threads; load average before / after: " +
                 loadBefore + " / " + loadAverage() +
-                ". Deferred: concurrent insertions that met another thread's lock and were redone "
+                ". Deferred: concurrent insertions that met another thread's triangles (its lock, or a triangle "
+                "outside the thread's slab) and were redone "
                 "alone. Checked: validated by dt::checkDelaunay. Two runs at once: two processes of "
                 "the sequential kernel started together, each on all n points; wall time of the "
                 "later, CPU time of both.";
