@@ -23,8 +23,9 @@
 # the next run rebuilds only what changed (the copy keeps the repository's file times); the
 # repository is never modified. Each mutant costs one incremental build and one run of the
 # suite (build/dt_tests, stopping at the first failure, without test_progress.cpp, whose 30 s
-# of terminal sessions test only the progress display): about a minute per mutant on two
-# cores, so the whole list is not part of scripts/test.sh. MUTANTS_TEST_ARGS replaces the
+# of terminal sessions test only the progress display; the files that run whole programs come
+# last, so a mutant an ordinary case kills costs seconds), so the whole list is not part of
+# scripts/test.sh. MUTANTS_TEST_ARGS replaces the
 # doctest options, MUTANTS_TARGETS the build targets (default: dt_suite), MUTANTS_CMAKE_ARGS adds
 # configure options (e.g. -DDT_TEST_FILES=test_spine.cpp: a suite of one file). To reuse compiled objects
 # between runs, export CMAKE_CXX_COMPILER_LAUNCHER (e.g. a compiler cache) yourself.
@@ -34,6 +35,7 @@ repo=$(cd "$(dirname "$0")/.." && pwd)
 jobs=${MUTANTS_JOBS:-2}
 timeout_s=${MUTANTS_TIMEOUT:-300}
 test_args=${MUTANTS_TEST_ARGS:---source-file-exclude=*test_progress*}
+slow_files='*test_exercises*,*test_figures*,*test_cli*,*test_bad_input*,*test_chapter_options*'
 targets=${MUTANTS_TARGETS:-dt_suite}
 
 list_arg="$repo/tests/mutants.txt"
@@ -189,10 +191,19 @@ build_tests() {
   cmake --build "$build" -j"$jobs" --target $targets >"$work/build.log" 2>&1
 }
 run_tests() {
-  # One process, stopping at the first failing test case: a killed mutant costs seconds. A
-  # crash or a hang (timeout) fails the run too.
+  # Stopping at the first failing test case: a killed mutant costs seconds. A crash or a hang
+  # (timeout) fails the run too. Without MUTANTS_TEST_ARGS, in two passes: the files whose
+  # cases build and run whole programs (the exercise machinery, the chapter programs, the
+  # triangulator's command lines: minutes) come last, after the rest has passed.
   # shellcheck disable=SC2086  # test_args is a list of options
-  (set -f; cd "$build" && timeout "$timeout_s" ./dt_tests --abort-after=1 --no-intro $test_args) \
+  if [ -n "${MUTANTS_TEST_ARGS+set}" ]; then
+    (set -f; cd "$build" && timeout "$timeout_s" ./dt_tests --abort-after=1 --no-intro $test_args) \
+      >"$work/test.log" 2>&1
+    return
+  fi
+  (set -f; cd "$build" &&
+    timeout "$timeout_s" ./dt_tests --abort-after=1 --no-intro "--source-file-exclude=*test_progress*,$slow_files" &&
+    timeout "$timeout_s" ./dt_tests --abort-after=1 --no-intro "--source-file=$slow_files") \
     >"$work/test.log" 2>&1
 }
 build_tests || { echo "mutants: the unmutated code does not build"; tail -30 "$work/build.log"; exit 2; }
