@@ -264,8 +264,10 @@ TEST_CASE("fast kernel the ladder's out-of-line predicates record the same calls
 
 TEST_CASE("fast kernel dt::triangulate gives the same DT(S) with every kernel and method and order") {
   dttest::XY p = dttest::uniformPoints(2000, 5);
-  p.insert(p.end(), {p[20], p[21], p[6], p[7]});  // two duplicates: points 2000 and 2001
-  const Tris ref = canonical(listings(std::vector<double>(p.begin(), p.end() - 4)));
+  // Three duplicates: points 2000 and 2002 of point 10, 2001 of point 3 (a triple: each is
+  // reported against the first of the three, not against the one before it).
+  p.insert(p.end(), {p[20], p[21], p[6], p[7], p[20], p[21]});
+  const Tris ref = canonical(listings(std::vector<double>(p.begin(), p.end() - 6)));
   for (dt::KernelChoice k : {dt::KernelChoice::Fast, dt::KernelChoice::Listings})
     for (dt::BuildMethod m : {dt::BuildMethod::Hull, dt::BuildMethod::Super})
       for (const char* order : {"brio", "hilbert", "input"}) {
@@ -282,7 +284,7 @@ TEST_CASE("fast kernel dt::triangulate gives the same DT(S) with every kernel an
         for (auto& f : t)
           for (int& v : f) v = r.input[std::size_t(v)];
         CHECK(canonical(t) == ref);
-        CHECK(r.duplicates == std::vector<std::pair<int, int>>{{2000, 10}, {2001, 3}});
+        CHECK(r.duplicates == std::vector<std::pair<int, int>>{{2000, 10}, {2001, 3}, {2002, 10}});
         CHECK(r.insertions == 2000);
       }
   CHECK_THROWS_AS(dt::orderNamed("random"), std::invalid_argument);
