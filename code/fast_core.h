@@ -150,8 +150,10 @@ class MarkClaim {
   }
   void freeMarks() { std::vector<unsigned char>().swap(mark_); }
 
- private:
+ protected:
   Store& S_;
+
+ private:
   std::vector<unsigned char> mark_;
 };
 
@@ -175,6 +177,7 @@ struct Locks {
 /// not interleaved with the other threads' (the cache lines would then travel between cores).
 class SlotBlocks {
  public:
+  static constexpr int kBlock = 512;  // slots per block: 24 KB of V, 36 KB of A
   SlotBlocks(Store& S, int block) : S_(S), block_(block) {}
   /// Two fresh slots of this thread's block (a new block when it is used up).
   int take2() {
@@ -198,7 +201,7 @@ class SlotBlocks {
 class LockClaim {
  public:
   static constexpr bool kShared = true;
-  static constexpr int kBlock = 512;  // slots per block: 24 KB of V, 36 KB of A
+  static constexpr int kBlock = SlotBlocks::kBlock;
   enum State { kNew, kInCavity, kHeld };
   LockClaim(Store& S, Locks& L, int id, int block = kBlock)
       : L_(L), tagLock_((unsigned char)(2 * id)), tagCav_((unsigned char)(2 * id + 1)),
@@ -252,8 +255,8 @@ class LockClaim {
 class SlabClaim : public MarkClaim {
  public:
   static constexpr bool kShared = true;
-  static constexpr int kBlock = 512;
-  explicit SlabClaim(Store& S, int block = kBlock) : MarkClaim(S), S_(S), blocks_(S, block) {}
+  static constexpr int kBlock = SlotBlocks::kBlock;
+  explicit SlabClaim(Store& S, int block = kBlock) : MarkClaim(S), blocks_(S, block) {}
   void setSlab(double lo, double hi) { lo_ = lo, hi_ = hi, alone_ = false; }
   void setAlone() { alone_ = true; }
   bool lock(int t) {
@@ -269,7 +272,6 @@ class SlabClaim : public MarkClaim {
     const double x = S_.P[2 * std::size_t(v)];
     return x >= lo_ && x < hi_;
   }
-  Store& S_;
   SlotBlocks blocks_;
   double lo_ = 0, hi_ = 0;
   bool alone_ = true;

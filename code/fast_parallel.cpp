@@ -12,10 +12,10 @@ namespace dt {
 
 namespace {
 
-// Several threads: the core with relaxed atomic access and try-locks (fast_core.h), on one
-// shared Store. Every entry of V and A is read and written with relaxed atomic accesses, so a
-// walk may read a triangle that another thread is rewriting without a data race; what the walk
-// finds is only a hint, checked under a lock.
+// Several threads: the core with relaxed atomic access and a shared claim (slabs or try-locks,
+// fast_core.h), on one shared Store. Every entry of V and A is read and written with relaxed
+// atomic accesses, so a walk may read a triangle that another thread is rewriting without a
+// data race; what the walk finds is only a hint, checked once the claim holds the triangle.
 template <class Claim>
 using InserterOf = fast::Inserter<fast::InlinePredicates, fast::RelaxedAccess, Claim>;
 
