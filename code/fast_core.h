@@ -447,31 +447,45 @@ class alignas(64) Inserter {  // aligned: two threads' inserters never share a c
   }
 
 //! [fastCavity]
-  // Delaunay cavity (Listing 2.5) from a seed in conflict: the list of cavity triangles is its
-  // own work queue, so there is neither recursion nor a separate stack. A neighbour the claim
-  // cannot take (another thread's) ends the search: false.
+  // Delaunay cavity (Listing 2.5) from a seed in conflict, depth first, each triangle's edges
+  // taken counter-clockwise from the one it was entered by: the boundary edges then come out
+  // in counter-clockwise order around the cavity, each edge's end the next one's start, and
+  // the fill links the new triangles without searching (a search's unpredictable branches cost
+  // more than the predicates). todo_ is a stack of the half-edges still to cross, the next one
+  // on top. A neighbour the claim cannot take (another thread's) ends the search: false.
   bool cavity(int seed, const double* p) {
     cav_.clear();
     bnd_.clear();
     claim_.enterCavity(seed);
     cav_.push_back(seed);
-    for (std::size_t i = 0; i < cav_.size(); ++i) {
-      const int t = cav_[i];
-      for (int k = 0; k < 3; ++k) {
-        const int h = ld(S_.A[3 * std::size_t(t) + k]);
-        const int n = h / 3;
-        const typename Claim::State s = claim_.state(n);
-        if (s == Claim::kInCavity) continue;  // an interior edge of the cavity
-        if (s == Claim::kNew) {               // not seen yet: take it, then test it
-          if (!claim_.lock(n)) return false;
-          if (conflict(n, p)) {
-            claim_.enterCavity(n);
-            cav_.push_back(n);
-            continue;
-          }
+    std::size_t top = 0;  // todo_[0, top) is the stack
+    if (todo_.size() < 3) todo_.resize(64);
+    todo_[top++] = 3 * seed + 2, todo_[top++] = 3 * seed + 1, todo_[top++] = 3 * seed;
+    while (top > 0) {
+      const int he = todo_[--top], t = he / 3, k = he - 3 * t;
+      const int h = ld(S_.A[std::size_t(he)]);
+      const int n = h / 3;
+      const typename Claim::State s = claim_.state(n);
+      // An interior edge met from its second side. The cavity's triangles form a tree across
+      // their shared edges (every vertex of the cavity is on its boundary), so this happens
+      // only in a corrupted mesh; the order is then lost and linkAround searches.
+      if (s == Claim::kInCavity) continue;
+      if (s == Claim::kNew) {  // not seen yet: take it, then test it
+        if (!claim_.lock(n)) return false;
+        if (conflict(n, p)) {
+          claim_.enterCavity(n);
+          cav_.push_back(n);
+          if (__builtin_expect(top + 2 > todo_.size(), 0)) todo_.resize(2 * todo_.size());
+          const int k1 = kNext[h - 3 * n];  // n was entered by its edge h - 3 n
+          todo_[top++] = 3 * n + kNext[k1];
+          todo_[top++] = 3 * n + k1;
+          continue;
         }
-        bnd_.push_back({ld(S_.V[t][k]), ld(S_.V[t][kNext[k]]), h, -1, -1});
       }
+      BoundaryEdge& e = bnd_.emplace_back();
+      e.a = ld(S_.V[t][k]);
+      e.b = ld(S_.V[t][kNext[k]]);
+      e.out = h;
     }
     return true;
   }
@@ -485,8 +499,9 @@ class alignas(64) Inserter {  // aligned: two threads' inserters never share a c
 
   // The Delaunay ball: triangle a b p on each boundary edge a -> b, in the slots of the cavity
   // and two fresh ones. Its edge b -> p meets the edge p -> b of the triangle built on the
-  // boundary edge that leaves b (the boundary is one closed polygon, Property 2.1.1): a search
-  // among the few boundary edges finds it, without a map.
+  // boundary edge that leaves b (the boundary is one closed polygon, Property 2.1.1): the next
+  // edge in the cavity search's order, or else (never in a valid mesh) a search among the
+  // boundary edges; no map either way.
   void fill(int ip) {
     const std::size_t nc = cav_.size();
     const int base = claim_.newSlots();
@@ -517,6 +532,14 @@ class alignas(64) Inserter {  // aligned: two threads' inserters never share a c
 
   void linkAround() {
     const std::size_t m = bnd_.size();
+    // The cavity search lists the boundary in order: edge i + 1 starts where edge i ends.
+    std::size_t i = 0;
+    while (i + 1 < m && bnd_[i + 1].a == bnd_[i].b) ++i;
+    if (i + 1 == m && bnd_[0].a == bnd_[m - 1].b) {
+      for (i = 0; i + 1 < m; ++i) link(bnd_[i].e1, bnd_[i + 1].e2);
+      link(bnd_[m - 1].e1, bnd_[0].e2);
+      return;
+    }
     if (m <= 32) {  // the usual case (about 6 edges): a plain search
       for (const BoundaryEdge& e : bnd_) {
         std::size_t j = 0;
@@ -565,6 +588,7 @@ class alignas(64) Inserter {  // aligned: two threads' inserters never share a c
   FastStats& st_;
   std::vector<int> cav_;
   std::vector<BoundaryEdge> bnd_;
+  std::vector<int> todo_;  // the cavity search's stack
   std::vector<std::pair<int, int>> byStart_;  // large cavities: (start vertex, half-edge p -> a)
 };
 
