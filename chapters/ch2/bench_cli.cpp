@@ -4,6 +4,11 @@
 // (Delaunay_triangulation_2, range insertion). Runs alternate (CLI, CGAL, CLI, CGAL, ...), each
 // a child process: wall time, CPU time (user + system) and peak resident memory (ru_maxrss,
 // from wait4) are its own. Writes table_bench_cli.{md,csv,html}; the ratios are to CGAL.
+// Then the triangulation alone, as each program times it itself in the same runs: delaunay2d's
+// `triangulation_seconds` (--stats: the points in memory to DT(S), the sort included) against
+// the CGAL program's range insertion (dt.insert, its spatial sort included):
+// table_bench_cli_triangulation and values_bench_cli.txt (cli.*, cited by the fast kernel's
+// page, with the target of at most half of CGAL's time and its computed verdict).
 //
 //   bench_cli [--out DIR] [--quick] [--max-n N] [--reps R]
 //     --quick     10^5 points, one repetition
@@ -50,20 +55,36 @@ int cgalReadAndTriangulate(const char* path) {
     pts.emplace_back(x, y);
   }
   CGAL::Delaunay_triangulation_2<K> dt;
+  const auto t0 = std::chrono::steady_clock::now();
   dt.insert(pts.begin(), pts.end());
-  std::printf("%zu faces\n", std::size_t(dt.number_of_faces()));
+  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::printf("%zu faces\ninsert_seconds: %.6f\n", std::size_t(dt.number_of_faces()), s);
   return 0;
 }
 #endif
+
+// The target for the triangulation alone (issue 28): at most this share of CGAL's time.
+constexpr double kTriangulationBound = 0.5;
 
 struct Run {
   bool ok = false;
   double wall = 0, cpu = 0;
   double peakMB = 0;
+  double own = -1;  // the time the program reports for its triangulation (-1: none)
 };
 
-// Runs argv as a child process, its output to /dev/null; measures it.
-Run runChild(const std::vector<std::string>& args) {
+// The number after `key` in the file at path (a line "key value"), or -1.
+double reported(const std::string& path, const std::string& key) {
+  std::ifstream in(path);
+  std::string word;
+  double v = -1;
+  while (in >> word)
+    if (word == key && in >> v) return v;
+  return -1;
+}
+
+// Runs argv as a child process, its output to the file `capture`; measures it.
+Run runChild(const std::vector<std::string>& args, const std::string& capture) {
   std::vector<char*> argv;
   for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
   argv.push_back(nullptr);
@@ -72,7 +93,7 @@ Run runChild(const std::vector<std::string>& args) {
   const pid_t pid = fork();
   if (pid < 0) return {};
   if (pid == 0) {
-    if (!std::freopen("/dev/null", "w", stdout)) _exit(127);
+    if (!std::freopen(capture.c_str(), "w", stdout)) _exit(127);
     execv(argv[0], argv.data());
     _exit(127);
   }
@@ -131,24 +152,30 @@ int main(int argc, char** argv) {
     struct Program {
       std::string name;
       std::vector<std::string> args;
+      std::string ownKey;  // the line of its output that times its triangulation
       std::vector<Run> runs;
     };
     std::vector<Program> progs = {
-        {"delaunay2d (exact check, .ele written)", {cli, input, "-o", out, "--no-progress"}, {}},
-        {"delaunay2d --no-check", {cli, input, "-o", out, "--no-progress", "--no-check"}, {}}};
+        {"delaunay2d (exact check, .ele written)", {cli, input, "-o", out, "--no-progress"}, "", {}},
+        {"delaunay2d --no-check", {cli, input, "-o", out, "--no-progress", "--no-check", "--stats"},
+         "triangulation_seconds:", {}}};
     if (haveCgal)
       progs.push_back({"CGAL: iostreams + Delaunay_triangulation_2",
-                       {selfDir() + "/bench_cli", "--cgal-read", input}, {}});
+                       {selfDir() + "/bench_cli", "--cgal-read", input}, "insert_seconds:", {}});
+    const std::string capture = o.out + "/bench_cli_stdout.txt";
     std::cout << "bench_cli: " << n << " uniform points, " << reps << " alternating runs of "
               << progs.size() << " programs\n";
     for (int r = 0; r < reps; ++r)
       for (Program& p : progs) {
-        const Run x = runChild(p.args);
+        Run x = runChild(p.args, capture);
         if (!x.ok) throw std::runtime_error(p.name + " failed");
+        if (!p.ownKey.empty() && (x.own = reported(capture, p.ownKey)) < 0)
+          throw std::runtime_error(p.name + " did not print " + p.ownKey);
         p.runs.push_back(x);
       }
     std::remove(input.c_str());
     std::remove((out + ".ele").c_str());
+    std::remove(capture.c_str());
     auto med = [](const Program& p, double Run::*field) {
       std::vector<double> v;
       for (const Run& r : p.runs) v.push_back(r.*field);
@@ -170,6 +197,38 @@ int main(int argc, char** argv) {
              ratio(w, &Run::wall), ratio(c, &Run::cpu), ratio(m, &Run::peakMB)});
     }
     t.emit(o, "table_bench_cli");
+
+    // The triangulation alone: the times the two programs report, run by run (the same
+    // alternating runs), and the ratio of each delaunay2d run to the CGAL run after it.
+    ch::Values v(o, "bench_cli");
+    v.set("cli.n", std::to_string(n));
+    v.set("cli.reps", std::to_string(reps));
+    v.num("cli.triangulation_bound", kTriangulationBound, "%.2f");
+    const Program& mine = progs[1];
+    if (ref) {
+      std::vector<double> ratios;
+      for (int r = 0; r < reps; ++r) ratios.push_back(mine.runs[std::size_t(r)].own / ref->runs[std::size_t(r)].own);
+      const double ratio = median(ratios), a = med(mine, &Run::own), b = med(*ref, &Run::own);
+      ch::Table u;
+      u.caption = "The triangulation alone, " + std::to_string(n) +
+                  " uniform points: the seconds each program reports for it (delaunay2d's "
+                  "triangulation_seconds, the sort included; CGAL's range insertion, its spatial "
+                  "sort included), medians of the same " + std::to_string(reps) +
+                  " alternating runs; the ratio is the median of the run-by-run ratios";
+      u.header = {"Program", "Triangulation s", "Ratio to CGAL"};
+      u.add({"delaunay2d --no-check --stats", ch::fmt("%.3f", a), ch::fmt("%.2f", ratio)});
+      u.add({"CGAL: Delaunay_triangulation_2::insert(first, last)", ch::fmt("%.3f", b), "1.00"});
+      u.emit(o, "table_bench_cli_triangulation");
+      v.num("cli.triangulation_seconds", a, "%.3f");
+      v.num("cli.cgal_insert_seconds", b, "%.3f");
+      v.num("cli.triangulation_ratio", ratio, "%.2f");
+      v.verdict("cli.triangulation_target", ratio <= kTriangulationBound, "met", "missed");
+    } else {
+      for (const char* k : {"cli.triangulation_seconds", "cli.cgal_insert_seconds", "cli.triangulation_ratio"})
+        v.set(k, "(not measured: CGAL was not found at build time)");
+      v.set("cli.triangulation_target", "not measured");
+    }
+    v.write();
     return 0;
   });
 }
