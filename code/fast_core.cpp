@@ -3,19 +3,10 @@
 #include <cmath>
 #include <cstdint>
 
-#include <sys/mman.h>
-
 #include "triangulate.h"
 
 namespace dt {
 namespace fast {
-
-void adviseHugePages(const void* p, std::size_t bytes) {
-  constexpr std::uintptr_t kHuge = std::uintptr_t{1} << 21;
-  const std::uintptr_t a = reinterpret_cast<std::uintptr_t>(p);
-  const std::uintptr_t lo = (a + kHuge - 1) & ~(kHuge - 1), hi = (a + bytes) & ~(kHuge - 1);
-  if (hi > lo) ::madvise(reinterpret_cast<void*>(lo), hi - lo, MADV_HUGEPAGE);
-}
 
 void checkInput(const std::vector<double>& xy, const char* who) {
   if (xy.size() % 2 != 0) throw std::invalid_argument(std::string(who) + ": odd number of coordinates");
@@ -34,10 +25,7 @@ std::vector<double> pointsInOrder(const std::vector<double>& xy, const std::vect
   // The points in insertion order, contiguous: the walk and the cavity read neighbours. The
   // last one is the dummy point of the vertex at infinity.
   const std::size_t n = orig.size();
-  std::vector<double> P;
-  P.reserve(2 * n + 2);
-  adviseHugePages(P.data(), (2 * n + 2) * sizeof(double));
-  P.assign(2 * n + 2, 0.0);
+  std::vector<double> P = hugeVector<double>(2 * n + 2);
   parallelFor(threads, n, [&](int, std::size_t lo, std::size_t hi) {
     for (std::size_t i = lo; i < hi; ++i) {
       // The reads are scattered: ask for the point needed a few iterations ahead.

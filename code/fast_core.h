@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "fast_delaunay.h"
+#include "huge_pages.h"
 #include "parallel_for.h"
 #include "predicates.h"
 #include "predicates_inline.h"
@@ -63,12 +64,6 @@ struct CalledPredicates {
     return dt::incircle(a[0], a[1], b[0], b[1], c[0], c[1], d[0], d[1]);
   }
 };
-
-/// Asks the kernel to back [p, p + bytes) with 2 MB pages where it can (transparent huge pages
-/// in "madvise" mode, Debian's default): the arrays of 10^6 points span tens of MB, and with
-/// 4 KB pages their first touch costs one page fault per 4 KB (a quarter of the sequential
-/// kernel's time in a profile at 10^6). A hint only: nothing changes where it is refused.
-void adviseHugePages(const void* p, std::size_t bytes);
 
 // ---------------------------------------------------------------------------------------------
 // Access policies.

@@ -75,6 +75,8 @@ FastResult fastDelaunay(const std::vector<double>& xy, const FastOptions& opt) {
         opt.order == FastOrder::RadixBrio
             ? brioCoinOrder(xy, opt.seed, std::max(1, std::min(opt.rounds, 32)))
             : (opt.order == FastOrder::Brio ? brioOrder(xy, opt.seed) : hilbertOrder(xy));
+    orig.reserve(n);
+    adviseHugePages(orig.data(), n * sizeof(int));
     orig.assign(o.begin(), o.end());
   }
   std::vector<double> P = fast::pointsInOrder(xy, orig, 1);

@@ -7,6 +7,7 @@
 #include <string>
 #include <utility>
 
+#include "huge_pages.h"
 #include "parallel_for.h"
 
 namespace dt {
@@ -303,7 +304,7 @@ void radixSort(std::vector<std::uint64_t>& a, int lo, int hi) {
   for (std::uint64_t v : a)  // the histograms of all the passes in one sweep
     for (int q = 0; q < passes; ++q)
       ++count[(std::size_t(q) << digit) + ((v >> (lo + digit * q)) & mask)];
-  std::vector<std::uint64_t> b(a.size());
+  std::vector<std::uint64_t> b = hugeVector<std::uint64_t>(a.size());
   for (int q = 0; q < passes; ++q) {
     std::uint32_t* c = &count[std::size_t(q) << digit];
     std::uint32_t sum = 0;
@@ -409,9 +410,9 @@ std::vector<std::size_t> sortByGroupKeyIndex(const std::vector<double>& xy, int 
   const int idxBits = bitsFor(n);
   if (coarsen) depth = std::max(1, std::min(depth, (64 - groupBits - idxBits) / 2));
   const int keyBits = 2 * depth;
-  std::vector<std::size_t> order(n);
+  std::vector<std::size_t> order = hugeVector<std::size_t>(n);
   if (groupBits + keyBits + idxBits <= 64) {
-    std::vector<std::uint64_t> w(n);
+    std::vector<std::uint64_t> w = hugeVector<std::uint64_t>(n);
     forEachKey(xy, depth, [&](std::size_t k, std::uint64_t key) {
       const std::uint64_t g = groupBits ? group[k] : 0;
       w[k] = (((g << keyBits) | key) << idxBits) | k;
@@ -618,7 +619,7 @@ std::vector<std::size_t> brioCoinOrder(const std::vector<double>& xy, std::uint6
     return sortByGroupKeyIndexParallel(
         xy, checkedDepth(0, n), [&](std::size_t i) { return brioCoinRound(i, seed, rounds); },
         groupBits, adaptive, threads);
-  std::vector<std::uint32_t> round(n, 0);
+  std::vector<std::uint32_t> round = hugeVector<std::uint32_t>(n, 0);
   for (std::size_t i = 0; i < n && rounds > 1; ++i)
     round[i] = std::uint32_t(brioCoinRound(i, seed, rounds));
   return sortByGroupKeyIndex(xy, checkedDepth(0, n), round, groupBits, adaptive, true);
