@@ -35,6 +35,7 @@
 #include "common.h"
 #include "fast_delaunay.h"
 #include "fast_parallel.h"
+#include "figure_data.h"
 #include "generators.h"
 #include "hilbert.h"
 
@@ -444,6 +445,24 @@ int main(int argc, char** argv) {
     const double nChartLo = std::pow(10.0, 2.5);
     const double nChartHi = nPlotted * std::pow(nPlotted / nChartLo, 0.06);
     auto along = [&](double n) { return std::log(n / nChartLo) / std::log(nChartHi / nChartLo); };
+    // The chart's plotting area in pixels: the script sets its margins at these screen
+    // fractions (time_per_point_view.gp), so the labels are placed in the pixels gnuplot draws,
+    // on both terminals. In em of the style's font (fig_em): left, the y label (centred 1 em
+    // from the edge), the tick labels (up to four digits) and their tics; at the bottom, the
+    // key's row (centred at 0.9 em), the x label (at 2.3 em) and the tick labels 10^k (whose
+    // baseline the svg terminal sets 2.6 em under the axis); at the top, half a tick label.
+    ch::FigureSize fs = ch::figureSize("fig_time_per_point");
+    if (o.width > 0) fs = {double(o.width), double(o.height), fs.em / fs.W * o.width};  // --size: style.gp's em per width
+    const double marginL = 5.6 * fs.em / fs.W, marginR = 1 - 0.8 * fs.em / fs.W;
+    const double marginB = 6.0 * fs.em / fs.H, marginT = 1 - 0.8 * fs.em / fs.H;
+    const double plotW = (marginR - marginL) * fs.W, plotH = (marginT - marginB) * fs.H;
+    // Above the lines (y2 = 1) a band for two rows of labels: gnuplot centres a label's ink
+    // from 0.45 em above its anchor to 0.57 em below (the baseline 0.33 em below the anchor),
+    // so a row's anchor is 0.9 em over the lines' top (0.33 em clear of it) and the next row
+    // 1.2 em higher; y2 runs from 0 at the bottom to y2hi at the top of the plot.
+    const double rowEm[2] = {0.9, 2.1};
+    const double y2hi = 1 / (1 - (rowEm[1] + 0.45 + 0.2) * fs.em / plotH);
+    auto rowY2 = [&](int row) { return 1 + rowEm[row] * fs.em / plotH * y2hi; };
     std::ostringstream cacheLines, cacheLabels;
     cacheLines << "# one block per cache marker: n at y2 = 0 and at y2 = 1 (bench_parallel)\n";
     cacheLabels << "# n label y2 x (the kernel's data fills the cache at about n; its label is centred at x, "
@@ -469,16 +488,16 @@ int main(int argc, char** argv) {
                      c->label.substr(c->label.find(' ') + 1) + ")");
       std::cout << c->label << ": the kernel's data fills it at about n = " << ch::fmt("%.0f", n) << "\n";
       if (n < nChartLo || n > nPlotted) continue;
-      // The label's half width as a fraction of the chart's (about 0.026 per character at the
-      // style's font: 22 px of 870 at 1200 px): centred on its line, moved inside the chart at
-      // its ends; a label that would meet the one before goes one row higher.
-      const double half = 0.014 * double(c->label.size()) + 0.01;
+      // The label's half width as a fraction of the chart's, with 0.3 em to spare: centred on
+      // its line, moved inside the chart at its ends; a label that would meet the one before
+      // goes one row higher.
+      const double half = (0.5 * ch::textWidthEm(c->label) + 0.3) * fs.em / plotW;
       const double centre = std::clamp(along(n), half, 1 - half);
       const int row = centre - half > rowEnd[0] ? 0 : centre - half > rowEnd[1] ? 1 : 0;
       rowEnd[row] = centre + half;
       const double x = nChartLo * std::pow(nChartHi / nChartLo, centre);
       cacheLines << ch::fmt("%.1f", n) << " 0\n" << ch::fmt("%.1f", n) << " 1\n\n";
-      cacheLabels << ch::fmt("%.1f", n) << " \"" << c->label << "\" " << (row ? "1.10" : "1.04") << " "
+      cacheLabels << ch::fmt("%.1f", n) << " \"" << c->label << "\" " << ch::fmt("%.4f", rowY2(row)) << " "
                   << ch::fmt("%.1f", x) << "\n";
       ++marked;
     }
@@ -498,9 +517,12 @@ int main(int argc, char** argv) {
     ch::writeOut(o, "time_per_point_cache_lines.dat", cacheLines.str());
     ch::writeOut(o, "time_per_point_caches.dat", cacheLabels.str());
     ch::writeOut(o, "time_per_point_view.gp",
-                 "# written by bench_parallel: the chart's x range and how many cache markers it draws\n"
+                 "# written by bench_parallel: the chart's x range, how many cache markers it draws, the\n"
+                 "# top of y2 (the lines reach 1, their labels are above) and the plot's margins (screen)\n"
                  "nlo = " + ch::fmt("%.3f", nChartLo) + "\nnhi = " + ch::fmt("%.1f", nChartHi) +
-                     "\nncaches = " + std::to_string(marked) + "\n");
+                     "\nncaches = " + std::to_string(marked) + "\ny2hi = " + ch::fmt("%.4f", y2hi) +
+                     "\nmarginL = " + ch::fmt("%.4f", marginL) + "\nmarginR = " + ch::fmt("%.4f", marginR) +
+                     "\nmarginB = " + ch::fmt("%.4f", marginB) + "\nmarginT = " + ch::fmt("%.4f", marginT) + "\n");
     v << "</p>\n";
     values.set("tpp.flat_up_to", std::to_string(flatUpTo));
     values.set("tpp.n_last", std::to_string(last.first));

@@ -18,8 +18,8 @@ do for [term in "png svg"] {
   set colorbox vertical user origin screen 0.905, screen 0.25 size screen 0.016, screen 0.5
   eval layout(1, 2)
   do for [n in "1000 10000"] {
-    set lmargin at screen (n eq "1000" ? 0.06 : 0.50)
-    set rmargin at screen (n eq "1000" ? 0.42 : 0.86)
+    set lmargin at screen (n eq "1000" ? 0.08 : 0.50)
+    set rmargin at screen (n eq "1000" ? 0.43 : 0.86)
     eval panel(n eq "1000" ? 1 : 2, n." points")
     if (n eq "1000") { unset colorbox } else { set colorbox }
     plot datadir."/fig2_12_".n.".dat" using 1:2:($3 / (n + 0.0)) with lines lw (n eq "1000" ? 1.5 : 1) lc palette notitle

@@ -22,7 +22,7 @@ do for [term in "png svg"] {
   }
   eval layout(1, 2)
   # Two maps of one size, the colour bar right of (b); (b) shares (a)'s y label.
-  L1 = 0.10; R1 = L1 + (fig eq "fig2_7" ? 0.34 : 0.31)
+  L1 = 0.12; R1 = L1 + (fig eq "fig2_7" ? 0.34 : 0.31)
   L2 = R1 + 0.09; R2 = L2 + R1 - L1
   set lmargin at screen L1
   set rmargin at screen R1

@@ -14,8 +14,8 @@ do for [term in "png svg"] {
   eval layout(1, 2)
   eval sign_bar
   unset colorbox
-  set lmargin at screen 0.10
-  set rmargin at screen 0.44
+  set lmargin at screen 0.12  # room for the y label's superscript at the left edge
+  set rmargin at screen 0.46
   set ylabel "j   (y_a = 1/2 + j 2^{-53})" offset 1,0
   set xrange [-0.5:255.5]
   set yrange [-0.5:255.5]
@@ -25,10 +25,10 @@ do for [term in "png svg"] {
   eval panel(1, "robust O(a,b,c)")
   plot datadir."/map_orient_robust_abc.dat" matrix with image notitle
   unset object 1
-  set lmargin at screen 0.53
-  set rmargin at screen 0.87
+  set lmargin at screen 0.55
+  set rmargin at screen 0.89
   unset ylabel
-  set colorbox vertical user origin screen 0.895, screen 0.3 size screen 0.018, screen 0.45
+  set colorbox vertical user origin screen 0.915, screen 0.3 size screen 0.018, screen 0.45
   set xrange [Z0:Z1]
   set yrange [Z0:Z1]
   set xtics 112,8,144 out nomirror

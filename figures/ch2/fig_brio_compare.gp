@@ -37,6 +37,15 @@ nstops(r) = (system(sprintf("awk -- '$1 != \"NaN\" && ($3 == 0) == %d' \"${DT_DA
 nstopsR = nstops(1); nstopsHB = nstops(0)
 stopped(c, r) = ((r ? nstopsR : nstopsHB) > 0) ? sprintf(", g using ((%d ? $3 == 0 : $3 > 0) ? $2 : NaN):%d with points pt 6 ps (3.2*PS) lw 1.5 lc rgb 'black' notitle", r, c) : ""
 series(c, order, dash) = sprintf("for [i = 0:%d] f using ($1 == i && $3 == %d ? $2 : NaN):%d with linespoints lw 2 dt %d pt int(word(marks, i + 1)) ps (1.1*PS) lc rgb word(C_SERIES, i + 1) notitle", ninputs - 1, order, c, dash)
+# The top and bottom of row r's plots, in screen units from the em: 2.6 em under the top of
+# the row's cell (its panel titles), and over its bottom 2.4 em in the top row (the tick labels
+# 10^k) and 4.4 em in the bottom row, which also has the x label n, shared by the columns (under
+# the top row it met the titles of the bottom row). The label n is centred 0.6 em over the bottom of
+# the canvas, a label at a fixed place: as an xlabel each terminal put it elsewhere. Left to
+# gnuplot, the svg terminal, which takes a line for taller than its text, made its panels a
+# fifth shorter than the PNG's, and (d)'s legend spread over the y axis.
+rows(r) = sprintf("set tmargin at screen %.4f; set bmargin at screen %.4f; ", 1 - (r - 1) / 2.0 - 2.6 * EM / FH, 1 - r / 2.0 + (r == 1 ? 2.4 : 4.4) * EM / FH) . \
+  (r == 1 ? "unset label 101" : sprintf("set label 101 'n' at graph 0.5, screen %.4f center", 0.6 * EM / FH))
 do for [term in "png svg"] {
   eval fig_open(term, "fig_brio_compare")
   set output (term eq "png" ? outdir."/fig_brio_compare.png" : outdir."/fig_brio_compare.svg")
@@ -47,10 +56,9 @@ do for [term in "png svg"] {
   set logscale x
   set format x "10^{%T}"
   set grid lc rgb "#d8d8d8" lw 1
-  set xlabel "n"
   set xrange [xlo:xhi]
   eval layout(2, 2)
-  set tmargin 2.5
+  eval rows(1)
   eval panel(1, M."𝑁}_{cavity}: Hilbert (dashed) and BRIO (solid)")
   set yrange [0:*]
   set ytics cavstep
@@ -60,6 +68,7 @@ do for [term in "png svg"] {
   set yrange [*:*]
   set ytics autofreq
   eval "plot " . series(4, 1, 2) . ", " . series(4, 2, 1) . stopped(4, 0)
+  eval rows(2)
   eval panel(3, "time per point (µs)")
   unset logscale y
   set yrange [0:*]
@@ -72,7 +81,7 @@ do for [term in "png svg"] {
   set xrange [xlo:xhiD]
   # The legend: one entry per input (colour and marker), in (d), whose large sizes are empty
   # (random order is only run at the small ones).
-  set key inside top right Left reverse samplen 1.5 spacing 1.0 width -1
+  set key inside top right Left reverse samplen 1.5 spacing 1.0 width -1 maxcols 1
   eval "plot " . series(4, 0, 1) . stopped(4, 1) . \
        ", for [i = 0:ninputs - 1] NaN with linespoints lw 2 pt int(word(marks, i + 1)) ps (1.1*PS) lc rgb word(C_SERIES, i + 1) title word(names, i + 1)"
   unset multiplot

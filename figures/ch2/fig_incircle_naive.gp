@@ -13,8 +13,8 @@ do for [term in "png svg"] {
   eval layout(1, 2)
   eval sign_bar
   unset colorbox
-  set lmargin at screen 0.10
-  set rmargin at screen 0.44
+  set lmargin at screen 0.12  # room for the y label's superscript at the left edge
+  set rmargin at screen 0.46
   set ylabel "j   (y_d = 1/2 + j 2^{-53})" offset 1,0
   set xrange [-0.5:255.5]
   set yrange [-0.5:255.5]
@@ -22,10 +22,10 @@ do for [term in "png svg"] {
   set ytics 0,64,256 out nomirror
   eval panel(1, "naive InC(a,b,c,d)")
   plot datadir."/map_incircle_naive_abcd.dat" matrix with image notitle
-  set lmargin at screen 0.53
-  set rmargin at screen 0.87
+  set lmargin at screen 0.55
+  set rmargin at screen 0.89
   unset ylabel
-  set colorbox vertical user origin screen 0.895, screen 0.3 size screen 0.018, screen 0.45
+  set colorbox vertical user origin screen 0.915, screen 0.3 size screen 0.018, screen 0.45
   eval panel(2, "naive InC(d,c,b,a)")
   plot datadir."/map_incircle_naive_dcba.dat" matrix with image notitle
   unset multiplot

@@ -15,11 +15,11 @@ do for [term in "png svg"] {
   set logscale xy
   set format x "10^{%T}"
   set grid lc rgb "#d8d8d8" lw 1
-  set xlabel "n (uniform in the unit square + one outlier)"
+  set xlabel "n (uniform points + one outlier)"  # the longer label ran past the right edge of the PNG
   set xrange [STATS_min / 1.5:STATS_max * 1.5]
   eval layout(1, 2)
   eval panel(1, "N_{search}: mean walk length")
-  set key inside top left Left reverse samplen 2 spacing 1.1
+  set key inside right center Left reverse samplen 2 spacing 1.1  # between the curves: at the top left it lay on them
   plot f index 0 using 1:3 with linespoints lw 2 pt 7 ps (1.2*PS) lc rgb word(C_SERIES, 2) title "fixed grid", \
        f index 1 using 1:3 with linespoints lw 2 pt 5 ps (1.2*PS) lc rgb word(C_SERIES, 1) title "adaptive", \
        f index 0 using 1:(0.5 * sqrt($1)) with lines dt 2 lc rgb C_CONSTRUCT title "0.5 √n"
