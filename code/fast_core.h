@@ -443,11 +443,14 @@ class alignas(64) Inserter {  // aligned: two threads' inserters never share a c
 
 //! [fastCavity]
   // Delaunay cavity (Listing 2.5) from a seed in conflict, depth first, each triangle's edges
-  // taken counter-clockwise from the one it was entered by: the boundary edges then come out
-  // in counter-clockwise order around the cavity, each edge's end the next one's start, and
-  // the fill links the new triangles without searching (a search's unpredictable branches cost
-  // more than the predicates). todo_ is a stack of the half-edges still to cross, the next one
-  // on top. A neighbour the claim cannot take (another thread's) ends the search: false.
+  // taken counter-clockwise from the one it was entered by. Every vertex of the cavity is on
+  // its boundary (a vertex inside would leave DT(S + p)), so its triangles form a tree across
+  // their shared edges: the search crosses each shared edge once, from the side it reached
+  // first, and lists the boundary edges in counter-clockwise order around the cavity, each
+  // edge's end the next one's start. The fill then links the new triangles without searching
+  // (a search's unpredictable branches cost more than the predicates). todo_ is a stack of the
+  // half-edges still to cross, the next one on top. A neighbour the claim cannot take (another
+  // thread's) ends the search: false.
   bool cavity(int seed, const double* p) {
     cav_.clear();
     bnd_.clear();
@@ -461,10 +464,8 @@ class alignas(64) Inserter {  // aligned: two threads' inserters never share a c
       const int h = ld(S_.A[std::size_t(he)]);
       const int n = h / 3;
       const typename Claim::State s = claim_.state(n);
-      // An interior edge met from its second side. The cavity's triangles form a tree across
-      // their shared edges (every vertex of the cavity is on its boundary), so this happens
-      // only in a corrupted mesh; the order is then lost and linkAround searches.
-      if (s == Claim::kInCavity) continue;
+      if (s == Claim::kInCavity)  // a shared edge met from its second side: not a tree
+        throw std::logic_error("fastDelaunay: the cavity's triangles do not form a tree");
       if (s == Claim::kNew) {  // not seen yet: take it, then test it
         if (!claim_.lock(n)) return false;
         if (conflict(n, p)) {
@@ -495,8 +496,7 @@ class alignas(64) Inserter {  // aligned: two threads' inserters never share a c
   // The Delaunay ball: triangle a b p on each boundary edge a -> b, in the slots of the cavity
   // and two fresh ones. Its edge b -> p meets the edge p -> b of the triangle built on the
   // boundary edge that leaves b (the boundary is one closed polygon, Property 2.1.1): the next
-  // edge in the cavity search's order, or else (never in a valid mesh) a search among the
-  // boundary edges; no map either way.
+  // edge in the cavity search's order, with neither a map nor a search.
   void fill(int ip) {
     const std::size_t nc = cav_.size();
     const int base = claim_.newSlots();
@@ -525,33 +525,15 @@ class alignas(64) Inserter {  // aligned: two threads' inserters never share a c
     last = bnd_.back().e1 / 3;
   }
 
+  // Edge i + 1 of the boundary starts where edge i ends (the cavity search's order): the new
+  // triangle on edge i meets the one on edge i + 1, around the ring.
   void linkAround() {
     const std::size_t m = bnd_.size();
-    // The cavity search lists the boundary in order: edge i + 1 starts where edge i ends.
-    std::size_t i = 0;
-    while (i + 1 < m && bnd_[i + 1].a == bnd_[i].b) ++i;
-    if (i + 1 == m && bnd_[0].a == bnd_[m - 1].b) {
-      for (i = 0; i + 1 < m; ++i) link(bnd_[i].e1, bnd_[i + 1].e2);
-      link(bnd_[m - 1].e1, bnd_[0].e2);
-      return;
-    }
-    if (m <= 32) {  // the usual case (about 6 edges): a plain search
-      for (const BoundaryEdge& e : bnd_) {
-        std::size_t j = 0;
-        while (j < m && bnd_[j].a != e.b) ++j;
-        if (j == m) throw std::logic_error("fastDelaunay: cavity boundary is not closed");
-        link(e.e1, bnd_[j].e2);
-      }
-      return;
-    }
-    byStart_.clear();  // a large cavity (degenerate input): sort the edges by their start
-    for (const BoundaryEdge& e : bnd_) byStart_.emplace_back(e.a, e.e2);
-    std::sort(byStart_.begin(), byStart_.end());
-    for (const BoundaryEdge& e : bnd_) {
-      const auto it = std::lower_bound(byStart_.begin(), byStart_.end(), std::make_pair(e.b, -1));
-      if (it == byStart_.end() || it->first != e.b)
-        throw std::logic_error("fastDelaunay: cavity boundary is not closed");
-      link(e.e1, it->second);
+    for (std::size_t i = 0; i < m; ++i) {
+      const std::size_t j = i + 1 == m ? 0 : i + 1;
+      if (bnd_[j].a != bnd_[i].b)
+        throw std::logic_error("fastDelaunay: the cavity boundary is not a ring in order");
+      link(bnd_[i].e1, bnd_[j].e2);
     }
   }
 //! [fastFill]
@@ -584,7 +566,6 @@ class alignas(64) Inserter {  // aligned: two threads' inserters never share a c
   std::vector<int> cav_;
   std::vector<BoundaryEdge> bnd_;
   std::vector<int> todo_;  // the cavity search's stack
-  std::vector<std::pair<int, int>> byStart_;  // large cavities: (start vertex, half-edge p -> a)
 };
 
 // ---------------------------------------------------------------------------------------------

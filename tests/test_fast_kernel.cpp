@@ -234,7 +234,7 @@ TEST_CASE("fast kernel fastHilbertKeys is hilbert.h's table-driven hilbertKeysFa
 
 TEST_CASE("fast kernel handles a cavity of hundreds of triangles (the centre of a circle inserted last)") {
   // Every triangle of the points on the circle has the centre strictly inside its circle: the
-  // last insertion removes them all, and its boundary has 400 edges (the sorted linking path).
+  // last insertion removes them all, and its boundary has 400 edges (a deep cavity search).
   dttest::XY p = dttest::circlePoints(400);
   p.push_back(0);
   p.push_back(0);
