@@ -142,10 +142,13 @@ TEST_CASE("chapter options every bad option is one line and exit status 2 before
       CHECK_FALSE(fs::exists(out));
     }
   // A program's own options are checked the same way (--reps with a value out of range, a
-  // --threads list the program reads itself).
+  // --threads list the program reads itself, a --cache-dir without a value or naming no
+  // directory).
   for (const std::vector<std::string>& args : {std::vector<std::string>{"--reps", "0"},
                                                std::vector<std::string>{"--reps"},
-                                               std::vector<std::string>{"--threads", "1,x"}}) {
+                                               std::vector<std::string>{"--threads", "1,x"},
+                                               std::vector<std::string>{"--cache-dir"},
+                                               std::vector<std::string>{"--cache-dir", (base / "absent").string()}}) {
     std::vector<std::string> full = {"--out", (base / "reps").string()};
     full.insert(full.end(), args.begin(), args.end());
     const Run r = chapter("bench_parallel", full, base);
@@ -167,6 +170,38 @@ TEST_CASE("chapter options --help lists every option the same way on every progr
                             "\n  --seed N ", "\n  --only FIG ", "\n  --size WxH ", "\n  --help "})
       CHECK(r.out.find(opt) != std::string::npos);
   }
+  // A program's own options are in its usage line and have a line each.
+  const Run b = chapter("bench_parallel", {"--help"}, fs::current_path());
+  INFO(b.out << b.err);
+  CHECK(b.status == 0);
+  CHECK(b.out.find("[--reps N] [--threads LIST] [--cache-dir DIR] [--help]") != std::string::npos);
+  for (const char* opt : {"\n  --reps N ", "\n  --threads LIST ", "\n  --cache-dir DIR "})
+    CHECK(b.out.find(opt) != std::string::npos);
+}
+
+TEST_CASE("chapter options bench_parallel reads the caches of /sys unless --cache-dir names another directory") {
+  const fs::path d = freshDir("cache_dir");
+  const Run r = chapter("bench_parallel", {"--quick", "--no-plot", "--max-n", "1000", "--threads", "1", "--out",
+                                           d.string()},
+                        d);
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  // The verdict names where the sizes came from, whether it listed caches or none.
+  CHECK(dttest::readText((d / "time_per_point_verdict.html").string()).find("/sys/devices/system/cpu/cpu0/cache") !=
+        std::string::npos);
+  // An empty directory in the format: no cache, no marker, and the verdict names it.
+  const fs::path empty = d / "no_caches";
+  fs::create_directories(empty);
+  const Run e = chapter("bench_parallel", {"--quick", "--no-plot", "--max-n", "1000", "--threads", "1",
+                                           "--cache-dir", empty.string(), "--out", d.string()},
+                        d);
+  INFO(e.err);
+  REQUIRE(e.status == 0);
+  const std::string verdict = dttest::readText((d / "time_per_point_verdict.html").string());
+  CHECK(verdict.find(empty.string() + " lists none") != std::string::npos);
+  CHECK(verdict.find("/sys/") == std::string::npos);
+  CHECK(dttest::readText((d / "time_per_point_view.gp").string()).find("\nncaches = 0\n") != std::string::npos);
+  fs::remove_all(d);
 }
 
 TEST_CASE("chapter options --max-n reads 1e3 as 1000") {

@@ -5,8 +5,10 @@
 /// blank band, and each PNG shows what its SVG shows.
 //
 // The suite runs the chapter programs that draw the book's figures once, into a fresh
-// directory (--quick --max-n 2000: the figures are the full ones, the tables small; about
-// 10 s of CPU), so it depends on no earlier run. The checkers are tested on bad input too.
+// directory (--quick --max-n 2000, bench_parallel --max-n 100000: the figures are the full
+// ones, the tables small; about 10 s of CPU), so it depends on no earlier run. bench_parallel
+// reads a planted cache description (--cache-dir), so that its chart draws all three cache
+// markers and their labels go through the same checks. The checkers are tested on bad input too.
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -687,10 +689,40 @@ std::vector<std::string> overlaps(const Svg& svg) {
 
 // ---- one run of the chapter programs -----------------------------------------------------
 
-/// The directory the chapter programs wrote into (run once per test process), and the
-/// programs that failed, with their log.
+/// One cache as Linux describes it under /sys/devices/system/cpu/cpu0/cache/<index>/.
+struct PlantedCache {
+  std::string index, level, type, size;
+};
+
+/// Writes a fresh copy of that description into `dir`: for each cache a directory `index`
+/// holding the files level, type and size.
+void plantCaches(const fs::path& dir, const std::vector<PlantedCache>& caches) {
+  fs::remove_all(dir);
+  for (const PlantedCache& c : caches) {
+    fs::create_directories(dir / c.index);
+    std::ofstream(dir / c.index / "level") << c.level << "\n";
+    std::ofstream(dir / c.index / "type") << c.type << "\n";
+    std::ofstream(dir / c.index / "size") << c.size << "\n";
+  }
+}
+
+/// The caches bench_parallel marks in the figure run (--cache-dir): an instruction cache, which
+/// it leaves out, and three data or unified ones small enough that the n at which the kernel's
+/// data fills each is within the run's sizes. That n is the size over the bytes per point of the
+/// largest n, and a small run's peak memory is mostly the process's own (about 3 MB in a
+/// Release build, 60 MB with the sanitizers): with --max-n 100000 the three fall between about
+/// 800 and 20000 points in both builds, inside the chart's sizes (from about 316 to 10^5).
+const std::vector<PlantedCache> kFigureRunCaches = {{"index0", "1", "Instruction", "32K"},
+                                                    {"index1", "1", "Data", "512K"},
+                                                    {"index2", "2", "Unified", "1024K"},
+                                                    {"index3", "3", "Unified", "2M"}};
+
+/// The directory the chapter programs wrote into (run once per test process), the planted
+/// cache description bench_parallel read (empty with DT_FIGURES_DIR), and the programs that
+/// failed, with their log.
 struct Run {
   fs::path dir;
+  fs::path caches;
   std::vector<std::string> failures;
 };
 
@@ -706,6 +738,8 @@ const Run& figureRun() {
     r.dir = fs::path(DT_TEST_TMP) / "figures";
     fs::remove_all(r.dir);
     fs::create_directories(r.dir);
+    r.caches = fs::path(DT_TEST_TMP) / "figures_caches";
+    plantCaches(r.caches, kFigureRunCaches);
     const fs::path bin = fs::path(DT_CLI).parent_path();
     // The programs that draw the book's figures (bench_kernels and sec2_3_3 draw none).
     const char* programs[] = {"sec2_1_kernel", "sec2_2_bowyer_watson", "sec2_2_2_outside_hull",
@@ -715,15 +749,19 @@ const Run& figureRun() {
     // All at once (they are independent and each writes its own files): on two cores the run
     // takes about half its CPU time. Each program's exit status goes to <prog>.rc. The paths
     // reach bash through the environment, never as code.
+    // bench_parallel measures up to 10^5 points (its --quick size, about a second), so that
+    // the planted caches fall within its chart (kFigureRunCaches); at 2000 it measures one size.
     std::string script;
     for (const std::string prog : programs) {
-      const std::string extra = prog == "sec2_3_4_algorithms" ? " --no-profile" : "";
-      script += "( \"$DT_BIN/" + prog + "\" --quick --max-n 2000" + extra + " --out \"$DT_DIR\" > \"$DT_DIR/" +
+      const std::string extra = prog == "sec2_3_4_algorithms" ? " --max-n 2000 --no-profile"
+                                : prog == "bench_parallel"    ? " --max-n 100000 --cache-dir \"$DT_CACHES\""
+                                                              : " --max-n 2000";
+      script += "( \"$DT_BIN/" + prog + "\" --quick" + extra + " --out \"$DT_DIR\" > \"$DT_DIR/" +
                 prog + ".log\" 2>&1; echo $? > \"$DT_DIR/" + prog + ".rc\" ) & ";
     }
     script += "wait";
     ch::ProcessIo io;
-    io.env = {{"DT_BIN", bin.string()}, {"DT_DIR", r.dir.string()}};
+    io.env = {{"DT_BIN", bin.string()}, {"DT_DIR", r.dir.string()}, {"DT_CACHES", r.caches.string()}};
     ch::runProgram({"bash", "-c", script}, io);
     for (const std::string prog : programs) {
       const fs::path stem = r.dir / prog;
@@ -1163,21 +1201,39 @@ TEST_CASE("figures every series of a geometry figure draws exactly what its data
     for (const std::string& m : seriesMismatches(name, svg, series, dir)) FAIL_CHECK(name << ".svg: " << m);
 }
 
+TEST_CASE("figures the time per point chart of the figure run marks all three planted caches") {
+  // Without its three markers the chart's labels would escape the overlap check, and its
+  // dashed lines and labels the series count (which applies only when markers are drawn).
+  const Run& run = figureRun();
+  if (run.caches.empty()) {
+    MESSAGE("DT_FIGURES_DIR: another run's chart, with its machine's caches; nothing planted to find");
+    return;
+  }
+  REQUIRE(svgs().count("fig_time_per_point") == 1);
+  const std::vector<ch::CacheSize> planted = ch::dataCaches(run.caches);
+  REQUIRE(planted.size() == 3);
+  INFO("bench_parallel's verdict: " << readAll(run.dir / "time_per_point_verdict.html"));
+  CHECK(readAll(run.dir / "time_per_point_view.gp").find("\nncaches = 3\n") != std::string::npos);
+  CHECK(dataElements(readAll(run.dir / "time_per_point_cache_lines.dat"), Draws::Segments) == 3);
+  const Svg& svg = svgs().at("fig_time_per_point");
+  for (const ch::CacheSize& c : planted) {
+    const bool drawn = std::any_of(svg.texts.begin(), svg.texts.end(),
+                                   [&](const Text& t) { return t.inPlot && t.str == c.label; });
+    CHECK_MESSAGE(drawn, "fig_time_per_point.svg has no label " << c.label);
+  }
+  const auto series = knownSeries(run.dir);
+  CHECK(std::count_if(series.begin(), series.end(),
+                      [](const Series& s) { return s.figure == "fig_time_per_point"; }) == 2);
+}
+
 TEST_CASE("figures the cache markers come from the data and unified caches /sys describes") {
   // A planted copy of /sys/devices/system/cpu/cpu0/cache: L1 instruction and data (in this
   // order, so that an instruction cache taken for L1 would show), L2, L3.
   const fs::path dir = fs::path(DT_TEST_TMP) / "cache_sizes";
-  fs::remove_all(dir);
-  auto plant = [&](const std::string& index, const char* level, const char* type, const char* size) {
-    fs::create_directories(dir / index);
-    std::ofstream(dir / index / "level") << level << "\n";
-    std::ofstream(dir / index / "type") << type << "\n";
-    std::ofstream(dir / index / "size") << size << "\n";
-  };
-  plant("index0", "1", "Instruction", "32K");
-  plant("index1", "1", "Data", "48K");
-  plant("index2", "2", "Unified", "1024K");
-  plant("index3", "3", "Unified", "32M");
+  plantCaches(dir, {{"index0", "1", "Instruction", "32K"},
+                    {"index1", "1", "Data", "48K"},
+                    {"index2", "2", "Unified", "1024K"},
+                    {"index3", "3", "Unified", "32M"}});
   const std::vector<ch::CacheSize> c = ch::dataCaches(dir);
   REQUIRE(c.size() == 3);  // the instruction cache is no marker
   CHECK(c[0].level == 1);

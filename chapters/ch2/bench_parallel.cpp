@@ -7,11 +7,12 @@
 // Every triangulation is validated exactly (dt::checkDelaunay). Writes table_parallel.*,
 // table_time_per_point.*, time_per_point.dat, time_per_point_verdict.html, the cache markers
 // (time_per_point_view.gp, time_per_point_cache_lines.dat, time_per_point_caches.dat: the data
-// caches of /sys/devices/system/cpu/cpu0/cache, chapters/cache_sizes.h) and
-// fig_time_per_point.{png,svg}; a run with --max-n >= 10^7 also writes
-// time_per_point_large.dat, which later default runs plot as well.
+// caches of /sys/devices/system/cpu/cpu0/cache, or of the directory --cache-dir names, in the
+// same format; chapters/cache_sizes.h) and fig_time_per_point.{png,svg}; a run with
+// --max-n >= 10^7 also writes time_per_point_large.dat, which later default runs plot as well.
 //
 //   bench_parallel [--out DIR] [--quick] [--max-n N] [--reps R] [--threads T1,T2,...]
+//                  [--cache-dir DIR]
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <time.h>
@@ -22,6 +23,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <iostream>
@@ -74,6 +76,8 @@ constexpr double kCpuTarget1 = 0.65;
 // The target for two threads against one (issue 28): at most this share of one thread's wall
 // time (the page cites @{par.two_target}; the verdict par.two_target_verdict uses it).
 constexpr double kTwoTarget = 0.6;
+// Where Linux describes this machine's caches (chapters/cache_sizes.h); --cache-dir reads another.
+constexpr const char* kSysCacheDir = "/sys/devices/system/cpu/cpu0/cache";
 std::vector<double> inChild(const std::function<void(double*)>& job) {
   int fd[2];
   if (pipe(fd) != 0) return {};
@@ -214,8 +218,17 @@ int main(int argc, char** argv) {
                       "The parallel kernel against threads, and time per point (--max-n 100000000: up to 10^8).",
                       1000, 100000000, {"fig_time_per_point"},
                       {{"--reps", "N", "alternating runs, the best kept (default 3, 1 with --quick)", 1, 1000},
-                       {"--threads", "LIST", "thread counts to measure, e.g. 1,2,4 (each 1 to 64)"}}};
+                       {"--threads", "LIST", "thread counts to measure, e.g. 1,2,4 (each 1 to 64)"},
+                       {"--cache-dir", "DIR",
+                        "read the cache sizes the chart marks from DIR (index*/level, type, size, as Linux "
+                        "writes them) instead of " + std::string(kSysCacheDir)}}};
   return ch::runMain(argc, argv, p, [&](const ch::Options& o) -> int {
+    // Where the cache sizes come from: this machine's, or a directory in the same format (the
+    // figure test plants one whose caches all fall within its small run's sizes).
+    const bool ownCaches = !o.has("--cache-dir");
+    const std::string cacheDir = ownCaches ? std::string(kSysCacheDir) : o.extra.at("--cache-dir");
+    if (!ownCaches && !std::filesystem::is_directory(cacheDir))
+      throw ch::UsageError("--cache-dir: '" + cacheDir + "' is not a directory");
     const int reps = int(o.number("--reps", o.quick ? 1 : 3));
     const int hw = dt::defaultThreadCount();
     std::vector<int> threadList = {1, 2};
@@ -429,10 +442,10 @@ int main(int argc, char** argv) {
         << ch::fmt("%.2f", curve[steep].second / curve[steep - 1].second) << ", from n&nbsp;=&nbsp;"
         << curve[steep - 1].first << " to n&nbsp;=&nbsp;" << curve[steep].first << ".";
     // Where the kernel's memory outgrows each cache, from the bytes per point at the largest n:
-    // the data and unified caches /sys describes (sysconf's L3 size comes from CPUID and on a
-    // virtual machine can be the host's), marked on the chart where they fall in its n range.
+    // the data and unified caches /sys (or --cache-dir) describes (sysconf's L3 size comes from
+    // CPUID and on a virtual machine can be the host's), marked on the chart where they fall in
+    // its n range.
     const double bytesPerPoint = lastPeakMB * 1048576.0 / double(last.first);
-    const std::string cacheDir = "/sys/devices/system/cpu/cpu0/cache";
     const std::vector<ch::CacheSize> caches = ch::dataCaches(cacheDir);
     double nPlotted = double(last.first);  // the largest n the chart shows (an earlier large run too)
     {
@@ -456,19 +469,17 @@ int main(int argc, char** argv) {
     const double marginL = 5.6 * fs.em / fs.W, marginR = 1 - 0.8 * fs.em / fs.W;
     const double marginB = 6.0 * fs.em / fs.H, marginT = 1 - 0.8 * fs.em / fs.H;
     const double plotW = (marginR - marginL) * fs.W, plotH = (marginT - marginB) * fs.H;
-    // Above the lines (y2 = 1) a band for two rows of labels: gnuplot centres a label's ink
-    // from 0.45 em above its anchor to 0.57 em below (the baseline 0.33 em below the anchor),
-    // so a row's anchor is 0.9 em over the lines' top (0.33 em clear of it) and the next row
-    // 1.2 em higher; y2 runs from 0 at the bottom to y2hi at the top of the plot.
-    const double rowEm[2] = {0.9, 2.1};
-    const double y2hi = 1 / (1 - (rowEm[1] + 0.45 + 0.2) * fs.em / plotH);
-    auto rowY2 = [&](int row) { return 1 + rowEm[row] * fs.em / plotH * y2hi; };
-    std::ostringstream cacheLines, cacheLabels;
-    cacheLines << "# one block per cache marker: n at y2 = 0 and at y2 = 1 (bench_parallel)\n";
-    cacheLabels << "# n label y2 x (the kernel's data fills the cache at about n; its label is centred at x, "
-                   "above the line's top, kept inside the chart; bench_parallel)\n";
-    int marked = 0;
-    double rowEnd[2] = {-1, -1};  // where the last label of each row ends, as a fraction of the width
+    // The markers the chart draws: where the line is, the label, where the label is centred and
+    // in which row above the lines it is (0 the lowest).
+    struct Marker {
+      double n;
+      std::string label;
+      double x;
+      int row;
+    };
+    std::vector<Marker> markers;
+    // The labels already in each row: from where to where each spans, as fractions of the width.
+    std::vector<std::vector<std::pair<double, double>>> rows;
     std::vector<std::string> said;  // "11790 points (L2, 1 MiB)", one per cache
     const struct {
       int level;
@@ -489,27 +500,51 @@ int main(int argc, char** argv) {
       std::cout << c->label << ": the kernel's data fills it at about n = " << ch::fmt("%.0f", n) << "\n";
       if (n < nChartLo || n > nPlotted) continue;
       // The label's half width as a fraction of the chart's, with 0.3 em to spare: centred on
-      // its line, moved inside the chart at its ends; a label that would meet the one before
-      // goes one row higher.
+      // its line, moved inside the chart at its ends, in the lowest row where it meets no other
+      // label (a new row when it meets one in every row: three caches close together).
       const double half = (0.5 * ch::textWidthEm(c->label) + 0.3) * fs.em / plotW;
       const double centre = std::clamp(along(n), half, 1 - half);
-      const int row = centre - half > rowEnd[0] ? 0 : centre - half > rowEnd[1] ? 1 : 0;
-      rowEnd[row] = centre + half;
-      const double x = nChartLo * std::pow(nChartHi / nChartLo, centre);
-      cacheLines << ch::fmt("%.1f", n) << " 0\n" << ch::fmt("%.1f", n) << " 1\n\n";
-      cacheLabels << ch::fmt("%.1f", n) << " \"" << c->label << "\" " << ch::fmt("%.4f", rowY2(row)) << " "
-                  << ch::fmt("%.1f", x) << "\n";
-      ++marked;
+      auto fits = [&](const std::vector<std::pair<double, double>>& row) {
+        return std::all_of(row.begin(), row.end(), [&](const std::pair<double, double>& s) {
+          return centre + half < s.first || centre - half > s.second;
+        });
+      };
+      std::size_t row = 0;
+      while (row < rows.size() && !fits(rows[row])) ++row;
+      if (row == rows.size()) rows.emplace_back();
+      rows[row].emplace_back(centre - half, centre + half);
+      markers.push_back({n, c->label, nChartLo * std::pow(nChartHi / nChartLo, centre), int(row)});
     }
+    // Above the lines (y2 = 1) a band for the rows of labels, two at least (so that the chart
+    // keeps its layout when the labels need one): gnuplot centres a label's ink from 0.45 em
+    // above its anchor to 0.57 em below (the baseline 0.33 em below the anchor), so a row's
+    // anchor is 0.9 em over the lines' top (0.33 em clear of it) and each next row 1.2 em
+    // higher; y2 runs from 0 at the bottom to y2hi at the top of the plot.
+    auto rowEm = [](int row) { return 0.9 + 1.2 * row; };
+    const int rowCount = std::max(2, int(rows.size()));
+    const double y2hi = 1 / (1 - (rowEm(rowCount - 1) + 0.45 + 0.2) * fs.em / plotH);
+    std::ostringstream cacheLines, cacheLabels;
+    cacheLines << "# one block per cache marker: n at y2 = 0 and at y2 = 1 (bench_parallel)\n";
+    cacheLabels << "# n label y2 x (the kernel's data fills the cache at about n; its label is centred at x, "
+                   "above the line's top, kept inside the chart; bench_parallel)\n";
+    for (const Marker& m : markers) {
+      cacheLines << ch::fmt("%.1f", m.n) << " 0\n" << ch::fmt("%.1f", m.n) << " 1\n\n";
+      cacheLabels << ch::fmt("%.1f", m.n) << " \"" << m.label << "\" "
+                  << ch::fmt("%.4f", 1 + rowEm(m.row) * fs.em / plotH * y2hi) << " " << ch::fmt("%.1f", m.x) << "\n";
+    }
+    const int marked = int(markers.size());
     if (caches.empty()) {
-      v << " This machine reported no cache sizes (" << cacheDir << " lists none), so the chart marks none.";
-      values.set("tpp.caches", "this machine reported no cache sizes, so the chart marks none");
+      v << (ownCaches ? " This machine reported no cache sizes (" : " No cache sizes were read (")
+        << cacheDir << " lists none), so the chart marks none.";
+      values.set("tpp.caches", ownCaches ? "this machine reported no cache sizes, so the chart marks none"
+                                         : "no cache sizes were read, so the chart marks none");
     } else {
       std::string list;
       for (std::size_t i = 0; i < said.size(); ++i)
         list += (i == 0 ? "" : i + 1 == said.size() ? " and " : ", ") + said[i];
       v << " At " << ch::fmt("%.0f", bytesPerPoint) << " bytes per point (the peak memory at n&nbsp;=&nbsp;"
-        << last.first << "), the caches of this machine (as " << cacheDir << " describes them) hold the "
+        << last.first << "), " << (ownCaches ? "the caches of this machine (as " : "the caches (as ")
+        << cacheDir << " describes them) hold the "
         << "kernel's data up to about " << list << ".";
       values.set("tpp.caches", "the caches hold the kernel's data up to about " + list);
     }
