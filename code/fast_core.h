@@ -448,19 +448,20 @@ class alignas(64) Inserter {  // aligned: two threads' inserters never share a c
   // their shared edges: the search crosses each shared edge once, from the side it reached
   // first, and lists the boundary edges in counter-clockwise order around the cavity, each
   // edge's end the next one's start. The fill then links the new triangles without searching
-  // (a search's unpredictable branches cost more than the predicates). todo_ is a stack of the
-  // half-edges still to cross, the next one on top. A neighbour the claim cannot take (another
+  // (a search's unpredictable branches cost more than the predicates). pending_ is a stack of
+  // the half-edges still to cross, the next one on top. A neighbour the claim cannot take (another
   // thread's) ends the search: false.
   bool cavity(int seed, const double* p) {
     cav_.clear();
     bnd_.clear();
     claim_.enterCavity(seed);
     cav_.push_back(seed);
-    std::size_t top = 0;  // todo_[0, top) is the stack
-    if (todo_.size() < 3) todo_.resize(64);
-    todo_[top++] = 3 * seed + 2, todo_[top++] = 3 * seed + 1, todo_[top++] = 3 * seed;
+    std::size_t top = 3;  // pending_[0, top) is the stack: the seed's edges, edge 0 on top
+    pending_[0] = 3 * seed + 2;
+    pending_[1] = 3 * seed + 1;
+    pending_[2] = 3 * seed;
     while (top > 0) {
-      const int he = todo_[--top], t = he / 3, k = he - 3 * t;
+      const int he = pending_[--top], t = he / 3, k = he - 3 * t;
       const int h = ld(S_.A[std::size_t(he)]);
       const int n = h / 3;
       const typename Claim::State s = claim_.state(n);
@@ -471,10 +472,10 @@ class alignas(64) Inserter {  // aligned: two threads' inserters never share a c
         if (conflict(n, p)) {
           claim_.enterCavity(n);
           cav_.push_back(n);
-          if (__builtin_expect(top + 2 > todo_.size(), 0)) todo_.resize(2 * todo_.size());
+          if (__builtin_expect(top + 2 > pending_.size(), 0)) pending_.resize(2 * pending_.size());
           const int k1 = kNext[h - 3 * n];  // n was entered by its edge h - 3 n
-          todo_[top++] = 3 * n + kNext[k1];
-          todo_[top++] = 3 * n + k1;
+          pending_[top++] = 3 * n + kNext[k1];
+          pending_[top++] = 3 * n + k1;
           continue;
         }
       }
@@ -565,7 +566,7 @@ class alignas(64) Inserter {  // aligned: two threads' inserters never share a c
   FastStats& st_;
   std::vector<int> cav_;
   std::vector<BoundaryEdge> bnd_;
-  std::vector<int> todo_;  // the cavity search's stack
+  std::vector<int> pending_ = std::vector<int>(64);  // the cavity search's stack (grows)
 };
 
 // ---------------------------------------------------------------------------------------------
