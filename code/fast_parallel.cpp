@@ -24,7 +24,12 @@ struct alignas(64) Worker {
   FastStats stats;
   std::vector<std::pair<int, int>> dups;  // (point, vertex it duplicates), insertion numbers
   std::vector<int> deferred;
+  double busySeconds = 0;  // time inside this thread's pieces of the concurrent rounds
 };
+
+double secondsSince(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
 
 // Inserts the points pick(from), ..., pick(to - 1) of the insertion order (skipping i1, i2) with
 // one inserter; a Busy point goes to the deferred list, or is an error when the inserter must be
@@ -169,8 +174,10 @@ void insertRounds(const std::vector<double>& xy, std::vector<double>& P, std::ve
     opt.progress(std::min(done, n), n, s);
   };
   policy.alone(*claims[0]);
+  const auto tl = std::chrono::steady_clock::now();
   insertRange(*ins[0], W[0], 1, seqEnd, kIdentity, i1, i2, true, every,
               [&](int i) { report(std::size_t(i), 1); });
+  ps.loneSeconds += secondsSince(tl);
   const auto tp = std::chrono::steady_clock::now();
   for (int r = r0; r < rounds; ++r) {
     const int from = std::max(seqEnd, roundStart[r]), to = roundStart[r + 1];
@@ -178,12 +185,16 @@ void insertRounds(const std::vector<double>& xy, std::vector<double>& P, std::ve
     ++ps.parallelRounds;
     ps.parallelPoints += std::uint64_t(to - from);
     // (The walk starts where this thread's previous piece ended.)
+    const auto tc = std::chrono::steady_clock::now();
     policy.round(P, from, to, threads, claims, [&](int k, int lo, int hi, auto pick) {
+      const auto tb = std::chrono::steady_clock::now();
       insertRange(*ins[std::size_t(k)], W[std::size_t(k)], lo, hi, pick, i1, i2, false,
-                  k == 0 ? every / std::size_t(threads) + 1 : std::size_t(-1), [&](int j) {
+                  k == 0 && opt.progress ? every / std::size_t(threads) + 1 : std::size_t(-1), [&](int j) {
                     report(std::size_t(from) + std::size_t(j - lo) * std::size_t(threads), threads);
                   });
+      W[std::size_t(k)].busySeconds += secondsSince(tb);
     });
+    ps.concurrentSeconds += secondsSince(tc);
     // The deferred insertions, by one thread, in their order (no other thread runs now).
     std::vector<int> later;
     for (Worker& w : W) {
@@ -193,8 +204,10 @@ void insertRounds(const std::vector<double>& xy, std::vector<double>& P, std::ve
     std::sort(later.begin(), later.end());
     ps.deferred += later.size();
     policy.alone(*claims[0]);
+    const auto td = std::chrono::steady_clock::now();
     for (int i : later)
       insertRange(*ins[0], W[0], i, i + 1, kIdentity, i1, i2, true, std::size_t(-1), [](int) {});
+    ps.loneSeconds += secondsSince(td);
   }
   ps.parallelSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - tp).count();
 
@@ -206,25 +219,27 @@ void insertRounds(const std::vector<double>& xy, std::vector<double>& P, std::ve
     res.stats.orient += w.stats.orient;
     res.stats.incircle += w.stats.incircle;
     dups.insert(dups.end(), w.dups.begin(), w.dups.end());
+    ps.busySeconds += w.busySeconds;
   }
   ins.clear();
   claims.clear();
   policy.release();
   std::vector<int>().swap(S.A);
+  const auto tf = std::chrono::steady_clock::now();
   fast::finish(S.V, std::size_t(S.count.load()), N, P, orig, dups, opt.insertionNumbering,
                threads, res);
+  ps.finishSeconds = secondsSince(tf);
   res.stats.insertSeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() -
       res.stats.sortSeconds;
 }
 
-FastResult fastDelaunayParallel(const std::vector<double>& xy, int threads, const FastOptions& opt,
-                                ParallelStats* pstats, int minPiece, ParallelClaim claim) {
+namespace {
+
+// fastDelaunayParallel with threads >= 1 (1: fastDelaunaySharedCoreAlone).
+FastResult runShared(const std::vector<double>& xy, int threads, const FastOptions& opt,
+                     ParallelStats* pstats, int minPiece, ParallelClaim claim) {
   ParallelStats ps;
-  if (threads <= 1) {
-    if (pstats) *pstats = ps;
-    return fastDelaunay(xy, opt);
-  }
   threads = std::min(threads, fast::kMaxThreads);
   ps.threads = threads;
   if (opt.order != FastOrder::RadixBrio || opt.ladderCallPredicates)
@@ -261,6 +276,20 @@ FastResult fastDelaunayParallel(const std::vector<double>& xy, int threads, cons
   if (pstats) *pstats = ps;
   return res;
 }
+
+}  // namespace
+
+FastResult fastDelaunayParallel(const std::vector<double>& xy, int threads, const FastOptions& opt,
+                                ParallelStats* pstats, int minPiece, ParallelClaim claim) {
+  if (threads > 1) return runShared(xy, threads, opt, pstats, minPiece, claim);
+  if (pstats) *pstats = ParallelStats{};
+  return fastDelaunay(xy, opt);
+}
 //! [fastDelaunayParallel]
+
+FastResult fastDelaunaySharedCoreAlone(const std::vector<double>& xy, const FastOptions& opt,
+                                       ParallelStats* pstats, ParallelClaim claim) {
+  return runShared(xy, 1, opt, pstats, 2048, claim);
+}
 
 }  // namespace dt

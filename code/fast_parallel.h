@@ -22,6 +22,12 @@ struct ParallelStats {
   std::uint64_t deferred = 0;         ///< of those, insertions that met a lock and were redone alone
   int parallelRounds = 0;             ///< BRIO rounds inserted concurrently
   double parallelSeconds = 0;         ///< wall time of the concurrent rounds (deferred ones included)
+  // Where the wall time goes (bench_parallel's budget table); with sortSeconds of the FastStats,
+  // these add up to the run's time, up to the set-up of the arrays.
+  double loneSeconds = 0;        ///< one thread alone: the small first rounds and the deferred insertions
+  double concurrentSeconds = 0;  ///< wall time of the concurrent rounds' pieces (partition included)
+  double busySeconds = 0;        ///< the threads' time inside their pieces, summed over the threads
+  double finishSeconds = 0;      ///< the output (fast::finish)
 };
 
 /// How the threads of a concurrent round keep out of each other's triangles (parallel page).
@@ -52,5 +58,14 @@ int defaultThreadCount();
 FastResult fastDelaunayParallel(const std::vector<double>& xy, int threads,
                                 const FastOptions& opt = {}, ParallelStats* pstats = nullptr,
                                 int minPiece = 2048, ParallelClaim claim = ParallelClaim::Slabs);
+
+/// The parallel kernel's machinery run by one thread, for measurement: the same rounds, relaxed
+/// atomic access, claim (one slab, the whole plane, or the locks) and deferred insertions as
+/// fastDelaunayParallel, with no second thread. Its time against fastDelaunay's is what sharing
+/// costs by itself, apart from what a second thread adds (bench_parallel's budget table).
+/// Same result and exceptions as fastDelaunayParallel.
+FastResult fastDelaunaySharedCoreAlone(const std::vector<double>& xy, const FastOptions& opt = {},
+                                       ParallelStats* pstats = nullptr,
+                                       ParallelClaim claim = ParallelClaim::Slabs);
 
 }  // namespace dt

@@ -182,3 +182,36 @@ TEST_CASE("parallel numbers the output in insertion order and reports progress o
   CHECK(calls > 10);
   CHECK(increasing);
 }
+
+TEST_CASE("parallel the shared core alone gives the sequential triangulation and its time adds up") {
+  // fastDelaunaySharedCoreAlone: the parallel machinery (relaxed access, claims, rounds,
+  // deferred insertions) with one thread, which bench_parallel's budget compares with the
+  // sequential kernel. Same triangles; with the whole plane as its slab, one thread still defers
+  // the cavities that touch the hull (a slab never takes a ghost), but nothing else.
+  const dttest::XY p = dttest::uniformPoints(100000, 31);
+  const Tris seq = canonical(dt::fastDelaunay(p).tri);
+  for (dt::ParallelClaim claim : {dt::ParallelClaim::Slabs, dt::ParallelClaim::Locks}) {
+    CAPTURE(int(claim));
+    dt::ParallelStats ps;
+    const dt::FastResult r = dt::fastDelaunaySharedCoreAlone(p, {}, &ps, claim);
+    CHECK(canonical(r.tri) == seq);
+    CHECK(ps.threads == 1);
+    CHECK(ps.parallelPoints > 90000);
+    if (claim == dt::ParallelClaim::Locks) CHECK(ps.deferred == 0);
+    CHECK(ps.deferred < ps.parallelPoints / 100);
+    // The parts of the budget: each measured, none larger than the whole, and one thread is
+    // busy in its pieces for no longer than the rounds last.
+    CHECK(ps.concurrentSeconds > 0);
+    CHECK(ps.finishSeconds > 0);
+    CHECK(ps.busySeconds <= ps.concurrentSeconds);
+    CHECK(ps.busySeconds > ps.concurrentSeconds / 2);
+    CHECK(ps.loneSeconds + ps.concurrentSeconds + ps.finishSeconds <= r.stats.insertSeconds);
+  }
+  // Two threads: the busy time is summed over both, so it may exceed the rounds' wall time,
+  // but not twice it.
+  dt::ParallelStats ps;
+  const dt::FastResult r = dt::fastDelaunayParallel(p, 2, {}, &ps);
+  CHECK(canonical(r.tri) == seq);
+  CHECK(ps.busySeconds <= 2 * ps.concurrentSeconds);
+  CHECK(ps.loneSeconds + ps.concurrentSeconds + ps.finishSeconds <= r.stats.insertSeconds);
+}
