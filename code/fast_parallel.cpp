@@ -246,7 +246,6 @@ FastResult runShared(const std::vector<double>& xy, int threads, const FastOptio
     throw std::invalid_argument(
         "fastDelaunayParallel: more than one thread needs the default order and predicates");
   fast::checkInput(xy, "fastDelaunayParallel");
-  const std::size_t n = xy.size() / 2;
   FastResult res;
   const auto t0 = std::chrono::steady_clock::now();
   const int rounds = std::max(1, std::min(opt.rounds, 32));
@@ -256,17 +255,16 @@ FastResult runShared(const std::vector<double>& xy, int threads, const FastOptio
     orig.assign(o.begin(), o.end());
   }
   std::vector<double> P = fast::pointsInOrder(xy, orig, threads);
-  // Where each round starts in the order (the rounds are consecutive, first round first).
-  std::vector<std::vector<int>> roundSize(std::size_t(threads), std::vector<int>(rounds, 0));
-  fast::parallelFor(threads, n, [&](int k, std::size_t lo, std::size_t hi) {
-    for (std::size_t i = lo; i < hi; ++i)
-      ++roundSize[std::size_t(k)][std::size_t(brioCoinRound(i, opt.seed, rounds))];
-  });
+  // Where each round starts in the order: the order is sorted by round first, so the rounds
+  // are consecutive, first round first, and each start is found by bisection.
   std::vector<int> roundStart(std::size_t(rounds) + 1, 0);
-  for (int r = 0; r < rounds; ++r) {
-    roundStart[r + 1] = roundStart[r];
-    for (const std::vector<int>& c : roundSize) roundStart[r + 1] += c[std::size_t(r)];
-  }
+  for (int r = 0; r < rounds; ++r)
+    roundStart[r + 1] = int(std::partition_point(orig.begin() + roundStart[r], orig.end(),
+                                                 [&](int i) {
+                                                   return brioCoinRound(std::size_t(i), opt.seed,
+                                                                        rounds) <= r;
+                                                 }) -
+                            orig.begin());
   res.stats.sortSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
   if (claim == ParallelClaim::Locks)

@@ -449,36 +449,41 @@ std::vector<std::size_t> sortByGroupKeyIndex(const std::vector<double>& xy, int 
   return order;
 }
 
-// Merges the sorted runs a and b of distinct words into out, the output cut into `threads`
-// pieces merged at the same time.
-void mergeParallel(const std::vector<std::uint64_t>& a, const std::vector<std::uint64_t>& b,
-                   std::vector<std::uint64_t>& out, int threads) {
-  const std::size_t na = a.size(), nb = b.size();
-  out.resize(na + nb);
-  // The merge path: out[0, p) holds the i smallest words of a and the p - i smallest of b, i
-  // the least value with a[i] > b[p - i - 1] (the words are distinct), found by bisection.
-  auto fromA = [&](std::size_t p) {
-    std::size_t lo = p > nb ? p - nb : 0, hi = std::min(p, na);
-    while (lo < hi) {
-      const std::size_t i = lo + (hi - lo) / 2;
-      if (a[i] < b[p - i - 1]) lo = i + 1; else hi = i;
-    }
-    return lo;
-  };
-  parallelFor(threads, na + nb, [&](int, std::size_t lo, std::size_t hi) {
-    const std::size_t i = fromA(lo), e = fromA(hi);
-    std::merge(a.begin() + std::ptrdiff_t(i), a.begin() + std::ptrdiff_t(e),
-               b.begin() + std::ptrdiff_t(lo - i), b.begin() + std::ptrdiff_t(hi - e),
-               out.begin() + std::ptrdiff_t(lo));
-  });
+// radixSort with `threads` threads: the same passes, each over the whole array cut into
+// consecutive chunks, one thread a chunk. Per pass, every thread counts the digits of its chunk;
+// then element of digit d from chunk t goes after all the smaller digits and after digit d of
+// the chunks before t, in chunk order: the pass is stable, as the sequential one, so the result
+// is the same array.
+void radixSortParallel(std::vector<std::uint64_t>& a, int lo, int hi, int threads) {
+  if (hi <= lo || a.size() < 2) return;
+  const int passes = (hi - lo + 12) / 13;
+  const int digit = (hi - lo + passes - 1) / passes;
+  const std::size_t radix = std::size_t{1} << digit, mask = radix - 1;
+  const std::size_t T = std::size_t(threads);
+  std::vector<std::uint32_t> count(T * radix);  // count[t radix + d]: digit d in chunk t
+  std::vector<std::uint64_t> b = hugeVector<std::uint64_t>(a.size());
+  for (int q = 0; q < passes; ++q) {
+    const int sh = lo + digit * q;
+    parallelFor(threads, a.size(), [&](int t, std::size_t from, std::size_t to) {
+      std::uint32_t* c = &count[std::size_t(t) * radix];
+      std::fill(c, c + radix, 0u);
+      for (std::size_t k = from; k < to; ++k) ++c[(a[k] >> sh) & mask];
+    });
+    std::uint32_t sum = 0;  // the chunks' starts, digit by digit, chunk by chunk
+    for (std::size_t d = 0; d < radix; ++d)
+      for (std::size_t t = 0; t < T; ++t) sum += std::exchange(count[t * radix + d], sum);
+    parallelFor(threads, a.size(), [&](int t, std::size_t from, std::size_t to) {
+      std::uint32_t* c = &count[std::size_t(t) * radix];
+      for (std::size_t k = from; k < to; ++k) b[c[(a[k] >> sh) & mask]++] = a[k];
+    });
+    a.swap(b);
+  }
 }
 
 // The parallel twin of sortByGroupKeyIndex's packed path (with `coarsen`), for `threads` > 1.
 // Every step is cut into consecutive pieces, one thread a piece, and none changes the result:
-// the words (group, key, index) are computed piece by piece; each piece (in index order, like
-// the whole) is radix-sorted on its own, which sorts it by whole word since the index breaks
-// every tie; the sorted pieces are merged (mergeParallel), which gives the one order of the
-// distinct words, the sequential sort's; and the refinement is cut only between runs of equal
+// the words (group, key, index) are computed piece by piece, the radix sort is the sequential
+// one's passes (radixSortParallel), and the refinement is cut only between runs of equal
 // (group, key), each run refined as before. So the order is the sequential one, bit for bit
 // (the fast kernel's tests compare them), whatever the number of threads.
 template <class GroupOf>
@@ -490,30 +495,18 @@ std::vector<std::size_t> sortByGroupKeyIndexParallel(const std::vector<double>& 
   depth = std::max(1, std::min(depth, (64 - groupBits - idxBits) / 2));  // as with `coarsen`
   const int keyBits = 2 * depth;
   const BoxCells cells(hilbertBox(xy), depth);
-  std::vector<std::vector<std::uint64_t>> pieces(static_cast<std::size_t>(threads));
-  parallelFor(threads, n, [&](int t, std::size_t lo, std::size_t hi) {
-    std::vector<std::uint64_t>& w = pieces[std::size_t(t)];
-    w.resize(hi - lo);
+  std::vector<std::uint64_t> w = hugeVector<std::uint64_t>(n);
+  parallelFor(threads, n, [&](int, std::size_t lo, std::size_t hi) {
     for (std::size_t k = lo; k < hi; ++k) {
       int s = 0;
       const std::uint64_t g = groupBits ? std::uint64_t(groupOf(k)) : 0;
-      w[k - lo] = (((g << keyBits) | cells.key(xy, k, s)) << idxBits) | k;
+      w[k] = (((g << keyBits) | cells.key(xy, k, s)) << idxBits) | k;
     }
-    radixSort(w, idxBits, idxBits + keyBits + groupBits);
   });
-  while (pieces.size() > 1) {  // merge neighbours, two by two, until one run is left
-    std::vector<std::vector<std::uint64_t>> merged((pieces.size() + 1) / 2);
-    for (std::size_t p = 0; p + 1 < pieces.size(); p += 2) {
-      mergeParallel(pieces[p], pieces[p + 1], merged[p / 2], threads);
-      std::vector<std::uint64_t>().swap(pieces[p]);
-      std::vector<std::uint64_t>().swap(pieces[p + 1]);
-    }
-    if (pieces.size() % 2) merged.back().swap(pieces.back());
-    pieces.swap(merged);
-  }
-  const std::vector<std::uint64_t>& w = pieces[0];
+  // The words are in index order and the sort is stable: the index bits need no pass.
+  radixSortParallel(w, idxBits, idxBits + keyBits + groupBits, threads);
   const std::uint64_t idxMask = (std::uint64_t{1} << idxBits) - 1;
-  std::vector<std::size_t> order(n);
+  std::vector<std::size_t> order = hugeVector<std::size_t>(n);
   parallelFor(threads, n, [&](int, std::size_t lo, std::size_t hi) {
     for (std::size_t k = lo; k < hi; ++k) order[k] = std::size_t(w[k] & idxMask);
   });
