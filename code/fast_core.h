@@ -85,25 +85,31 @@ struct RelaxedAccess {
 // infinity, always at position 2 of a ghost; P holds a dummy point for it (a stale walk of the
 // parallel kernel may read it). Two arrays rather than one record: at the end A is freed and V,
 // compacted in place, becomes the output. Everything is allocated once: nothing reallocates
-// while an insertion (or a thread) holds a pointer into it.
+// while an insertion (or a thread) holds a pointer into it. An entry of A is written before it
+// is read, except by a walk of the parallel kernel that follows a link another thread is
+// writing: so one thread leaves A as the allocator gives it, several threads zero it first (in
+// pieces, one thread a piece), so that a stale read is a half-edge, never garbage.
 //! [fastArrays]
 struct Store {
   const double* P = nullptr;
   int INF = 0;
   std::vector<Tri> V;   // V[t]: the vertices of triangle t, counter-clockwise
-  std::vector<int> A;   // A[3 t + k] = 3 t' + k' (flat: linking needs no division)
+  std::unique_ptr<int[]> A;  // A[3 t + k] = 3 t' + k' (flat: linking needs no division)
   std::atomic<int> count{0};  // slots handed out; a slot below it that is not a triangle holds
                               // {INF, INF, INF} (compaction drops it with the ghosts)
 //! [fastArrays]
 
-  /// Room for `slots` triangles; unused slots read as {INF, INF, INF}.
-  Store(const double* points, int n, std::size_t slots) : P(points), INF(n) {
+  /// Room for `slots` triangles; unused slots read as {INF, INF, INF}. threads > 1: A is zeroed.
+  Store(const double* points, int n, std::size_t slots, int threads)
+      : P(points), INF(n), A(new int[3 * slots]) {
     V.reserve(slots);
-    A.reserve(3 * slots);
     adviseHugePages(V.data(), slots * sizeof(Tri));
-    adviseHugePages(A.data(), 3 * slots * sizeof(int));
+    adviseHugePages(A.get(), 3 * slots * sizeof(int));
     V.assign(slots, Tri{n, n, n});
-    A.assign(3 * slots, 0);
+    if (threads > 1)
+      parallelFor(threads, 3 * slots, [&](int, std::size_t lo, std::size_t hi) {
+        std::fill(A.get() + lo, A.get() + hi, 0);
+      });
   }
 
   /// The first triangle a b c (counter-clockwise) and its three ghosts, in slots 0..3.
@@ -116,7 +122,7 @@ struct Store {
                            3 * 0 + 0, 3 * 3 + 2, 3 * 2 + 1,   // ghost b a
                            3 * 0 + 1, 3 * 1 + 2, 3 * 3 + 1,   // ghost c b
                            3 * 0 + 2, 3 * 2 + 2, 3 * 1 + 1};  // ghost a c
-    std::copy(links, links + 12, A.begin());
+    std::copy(links, links + 12, A.get());
     count.store(4, std::memory_order_relaxed);
   }
 };

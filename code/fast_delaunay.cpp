@@ -22,7 +22,7 @@ void run(std::vector<double>& P, std::vector<int>& orig, FastResult& res, Pred p
          const FastOptions& opt) {
   const int n = int(orig.size());
   const fast::FirstTriangle f = fast::firstTriangle(P, n);
-  fast::Store S(P.data(), n, 2 * std::size_t(n) + 2);  // 2(n+1) - 4 faces on the sphere
+  fast::Store S(P.data(), n, 2 * std::size_t(n) + 2, 1);  // 2(n+1) - 4 faces on the sphere
   if (f.ccw)
     S.init(0, f.i1, f.i2);
   else
@@ -44,7 +44,7 @@ void run(std::vector<double>& P, std::vector<int>& orig, FastResult& res, Pred p
   }
   // Only the vertices of the triangles are kept: they become the output.
   claim.freeMarks();
-  std::vector<int>().swap(S.A);
+  S.A.reset();
   fast::finish(S.V, std::size_t(S.count.load()), n, P, orig, dups, opt.insertionNumbering, 1,
                res);
 }

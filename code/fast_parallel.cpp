@@ -138,7 +138,7 @@ void insertRounds(const std::vector<double>& xy, std::vector<double>& P, std::ve
   const int i1 = f.i1, i2 = f.i2;
   // Room for the 2n + 2 triangles and each thread's last, partly used block of slots.
   const std::size_t slots = 2 * n + 2 + std::size_t(threads) * Policy::Claim::kBlock;
-  fast::Store S(P.data(), N, slots);
+  fast::Store S(P.data(), N, slots, threads);
   if (f.ccw)
     S.init(0, i1, i2);
   else
@@ -224,7 +224,7 @@ void insertRounds(const std::vector<double>& xy, std::vector<double>& P, std::ve
   ins.clear();
   claims.clear();
   policy.release();
-  std::vector<int>().swap(S.A);
+  S.A.reset();
   const auto tf = std::chrono::steady_clock::now();
   fast::finish(S.V, std::size_t(S.count.load()), N, P, orig, dups, opt.insertionNumbering,
                threads, res);
