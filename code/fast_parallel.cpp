@@ -31,7 +31,8 @@ double secondsSince(std::chrono::steady_clock::time_point t) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 }
 
-// Inserts the points pick(from), ..., pick(to - 1) of the insertion order (skipping i1, i2) with
+// Inserts the points pick(from), ..., pick(to - 1) of the insertion order (skipping i1, i2, and
+// the positions where pick gives -1: another thread's points) with
 // one inserter; a Busy point goes to the deferred list, or is an error when the inserter must be
 // alone. tick(j), if given, is called before the j-th point when j - from is a multiple of
 // `every` (the progress report).
@@ -45,7 +46,7 @@ void insertRange(Inserter& in, Worker& w, int from, int to, Pick pick, int i1, i
       next += every;
     }
     const int i = pick(j);
-    if (i == i1 || i == i2) continue;
+    if (i < 0 || i == i1 || i == i2) continue;
     int d = -1;
     const typename Inserter::Outcome o = in.insert(i, d);
     if (o == Inserter::Duplicate) {
@@ -59,7 +60,9 @@ void insertRange(Inserter& in, Worker& w, int from, int to, Pick pick, int i1, i
 
 const auto kIdentity = [](int j) { return j; };
 
-// The claims of the threads, and how a concurrent round is shared out among them.
+// The claims of the threads, and how a concurrent round is shared out among them: round()
+// calls run(k, lo, hi, pick, step) for each thread k, where one position of [lo, hi) stands for
+// `step` points of the round (for the progress report).
 struct LockPolicy {
   using Claim = fast::LockClaim;
   fast::Locks L;
@@ -71,7 +74,7 @@ struct LockPolicy {
   void round(const std::vector<double>&, int from, int to, int threads,
              std::vector<std::unique_ptr<Claim>>&, Run run) {
     fast::parallelFor(threads, std::size_t(to - from), [&](int k, std::size_t lo, std::size_t hi) {
-      run(k, from + int(lo), from + int(hi), kIdentity);
+      run(k, from + int(lo), from + int(hi), kIdentity, threads);
     });
   }
   void release() { L.owner.reset(); }
@@ -79,40 +82,38 @@ struct LockPolicy {
 
 struct SlabPolicy {
   using Claim = fast::SlabClaim;
-  std::vector<int> who;   // the round's points, thread by thread, each in Hilbert order
   std::vector<double> xs;
   SlabPolicy(std::size_t) {}
   std::unique_ptr<Claim> make(fast::Store& S, int) { return std::unique_ptr<Claim>(new Claim(S)); }
   void alone(Claim& c) { c.setAlone(); }
-  // Thread k takes the round's points in the k-th slab of x, cut at the round's x-quantiles
-  // (each slab about as many points), in their Hilbert order.
+  // Thread k takes the round's points in the k-th slab of x, in their Hilbert order: it goes
+  // through the whole round and skips the others' points (a comparison each, against an
+  // insertion's hundreds of nanoseconds: no partition step runs on one thread). The slabs are
+  // cut at x-quantiles of an evenly spaced sample of the round (at most about 4096 points), so
+  // each gets about as many points.
   template <class Run>
   void round(const std::vector<double>& P, int from, int to, int threads,
              std::vector<std::unique_ptr<Claim>>& claims, Run run) {
-    const std::size_t m = std::size_t(to - from);
-    xs.resize(m);
-    for (std::size_t j = 0; j < m; ++j) xs[j] = P[2 * (std::size_t(from) + j)];
+    const std::size_t m = std::size_t(to - from), step = std::max<std::size_t>(1, m / 4096);
+    xs.clear();
+    for (std::size_t j = 0; j < m; j += step) xs.push_back(P[2 * (std::size_t(from) + j)]);
     std::vector<double> cut(std::size_t(threads) + 1);
     cut[0] = -HUGE_VAL;
     cut[std::size_t(threads)] = HUGE_VAL;
     for (int k = 1; k < threads; ++k) {
-      auto q = xs.begin() + std::ptrdiff_t(m * std::size_t(k) / std::size_t(threads));
+      auto q = xs.begin() + std::ptrdiff_t(xs.size() * std::size_t(k) / std::size_t(threads));
       std::nth_element(xs.begin(), q, xs.end());
       cut[std::size_t(k)] = *q;
     }
-    std::vector<int> start(std::size_t(threads) + 1, 0);  // thread k: who[start[k], start[k+1])
-    auto slab = [&](int i) {
-      return int(std::upper_bound(cut.begin() + 1, cut.end() - 1, P[2 * std::size_t(i)]) - (cut.begin() + 1));
-    };
-    for (int i = from; i < to; ++i) ++start[std::size_t(slab(i)) + 1];
-    for (int k = 0; k < threads; ++k) start[std::size_t(k) + 1] += start[std::size_t(k)];
-    who.resize(m);
-    std::vector<int> at(start.begin(), start.end() - 1);
-    for (int i = from; i < to; ++i) who[std::size_t(at[std::size_t(slab(i))]++)] = i;
     for (int k = 0; k < threads; ++k) claims[std::size_t(k)]->setSlab(cut[std::size_t(k)], cut[std::size_t(k) + 1]);
     fast::parallelFor(threads, std::size_t(threads), [&](int, std::size_t lo, std::size_t hi) {
-      for (std::size_t k = lo; k < hi; ++k)
-        run(int(k), start[k], start[k + 1], [&](int j) { return who[std::size_t(j)]; });
+      for (std::size_t k = lo; k < hi; ++k) {
+        const double a = cut[k], b = cut[k + 1];
+        run(int(k), from, to, [&P, a, b](int j) {
+          const double x = P[2 * std::size_t(j)];
+          return x >= a && x < b ? j : -1;
+        }, 1);
+      }
     });
   }
   void release() {}
@@ -186,11 +187,11 @@ void insertRounds(const std::vector<double>& xy, std::vector<double>& P, std::ve
     ps.parallelPoints += std::uint64_t(to - from);
     // (The walk starts where this thread's previous piece ended.)
     const auto tc = std::chrono::steady_clock::now();
-    policy.round(P, from, to, threads, claims, [&](int k, int lo, int hi, auto pick) {
+    policy.round(P, from, to, threads, claims, [&](int k, int lo, int hi, auto pick, int step) {
       const auto tb = std::chrono::steady_clock::now();
       insertRange(*ins[std::size_t(k)], W[std::size_t(k)], lo, hi, pick, i1, i2, false,
-                  k == 0 && opt.progress ? every / std::size_t(threads) + 1 : std::size_t(-1), [&](int j) {
-                    report(std::size_t(from) + std::size_t(j - lo) * std::size_t(threads), threads);
+                  k == 0 && opt.progress ? every / std::size_t(step) + 1 : std::size_t(-1), [&](int j) {
+                    report(std::size_t(from) + std::size_t(j - lo) * std::size_t(step), threads);
                   });
       W[std::size_t(k)].busySeconds += secondsSince(tb);
     });
