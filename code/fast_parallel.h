@@ -43,7 +43,7 @@ int defaultThreadCount();
 /// <= 1 calls fastDelaunay(xy, opt) itself. Otherwise the small first BRIO rounds (opt.order
 /// must be FastOrder::RadixBrio) are inserted by one thread, and each larger round is shared
 /// among `threads` threads (claim: Slabs, each thread the round's points in one slab of x, cut
-/// at the x-quantiles of the round, in Hilbert order; Locks, consecutive pieces of the round's
+/// at the x-quantiles of a sample of the round, in Hilbert order; Locks, consecutive pieces of the round's
 /// Hilbert order), inserted concurrently; insertions that need another thread's triangles are
 /// redone by one thread after the round. The result is the
 /// exact DT(S) whenever it is unique (points in general position: then equal to fastDelaunay's),
