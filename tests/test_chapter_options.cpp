@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <sstream>
 #include <string>
@@ -201,6 +202,93 @@ TEST_CASE("chapter options bench_parallel reads the caches of /sys unless --cach
   CHECK(verdict.find(empty.string() + " lists none") != std::string::npos);
   CHECK(verdict.find("/sys/") == std::string::npos);
   CHECK(dttest::readText((d / "time_per_point_view.gp").string()).find("\nncaches = 0\n") != std::string::npos);
+  fs::remove_all(d);
+}
+
+namespace {
+
+// The rows of a table's .csv (the header first), cells split at commas.
+std::vector<std::vector<std::string>> csvRows(const fs::path& p) {
+  std::vector<std::vector<std::string>> rows;
+  std::istringstream in(dttest::readText(p.string()));
+  for (std::string line; std::getline(in, line);) {
+    rows.emplace_back();
+    std::istringstream cells(line);
+    for (std::string c; std::getline(cells, c, ',');) rows.back().push_back(c);
+  }
+  return rows;
+}
+
+// The value of `key` in a values_<program>.txt ("key value" lines); "" if absent.
+std::string valueOf(const fs::path& p, const std::string& key) {
+  std::istringstream in(dttest::readText(p.string()));
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind(key + " ", 0) == 0) return line.substr(key.size() + 1);
+  return "";
+}
+
+}  // namespace
+
+TEST_CASE("chapter options bench_parallel writes the time budget of its five runs and leaves out two threads when --threads does") {
+  const fs::path d = freshDir("budget");
+  // 20000 points: the last rounds are large enough to be shared between two threads.
+  const Run r = chapter("bench_parallel", {"--quick", "--no-plot", "--max-n", "20000", "--threads", "1,2", "--out",
+                                           d.string()},
+                        d);
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  const auto rows = csvRows(d / "table_parallel_budget.csv");
+  REQUIRE(rows.size() == 6);
+  const std::vector<std::string>& head = rows[0];
+  auto col = [&](const std::string& name) {
+    return std::size_t(std::find(head.begin(), head.end(), name) - head.begin());
+  };
+  const std::size_t wall = col("wall (ms)"), concurrent = col("concurrent rounds (ms)"), busy = col("busy (ms)"),
+                    perPoint = col("busy per point / sequential's");
+  REQUIRE(perPoint < head.size());
+  const char* labels[] = {"sequential kernel", "shared core alone (slabs)", "shared core alone (locks)",
+                          "two threads (slabs)", "two threads (locks)"};
+  for (std::size_t i = 0; i < 5; ++i) {
+    CAPTURE(labels[i]);
+    REQUIRE(rows[i + 1].size() == head.size());
+    CHECK(rows[i + 1][0] == labels[i]);
+    CHECK(std::atof(rows[i + 1][wall].c_str()) > 0);
+    // Every run but the sequential one has concurrent rounds, busy time and a cost per point.
+    CHECK((rows[i + 1][concurrent] == "-") == (i == 0));
+    if (i > 0) {
+      CHECK(std::atof(rows[i + 1][busy].c_str()) > 0);
+      CHECK(std::atof(rows[i + 1][perPoint].c_str()) > 0);
+    }
+  }
+  const fs::path values = d / "values_bench_parallel.txt";
+  CHECK(valueOf(values, "par.budget_n") == "20000");
+  for (const char* key : {"par.budget_share_cost", "par.budget_share_cost_locks", "par.budget_second_thread",
+                          "par.budget_second_thread_locks", "par.budget_serial", "par.budget_best2",
+                          "par.budget_best2_locks", "par.budget_k4", "par.budget_k8", "par.hw_threads"}) {
+    CAPTURE(key);
+    const std::string v = valueOf(values, key);
+    CHECK(!v.empty());
+    CHECK(v.find("not measured") == std::string::npos);
+  }
+  // The model divides the shared core's busy time by the threads, most of the sequential wall
+  // time: more threads, a clearly smaller share (more than the values' two decimals).
+  CHECK(std::atof(valueOf(values, "par.budget_k8").c_str()) < std::atof(valueOf(values, "par.budget_k4").c_str()));
+  CHECK(std::atof(valueOf(values, "par.budget_k4").c_str()) < std::atof(valueOf(values, "par.budget_best2").c_str()));
+  const std::string verdict = valueOf(values, "par.budget_best2_verdict");
+  CHECK((verdict.rfind("even a perfect split", 0) == 0 || verdict.rfind("a perfect split would meet it", 0) == 0));
+
+  // --threads 1: no run with two threads, and the values that need one say so.
+  const Run one = chapter("bench_parallel", {"--quick", "--no-plot", "--max-n", "1000", "--threads", "1", "--out",
+                                             d.string()},
+                          d);
+  INFO(one.err);
+  REQUIRE(one.status == 0);
+  const auto rows1 = csvRows(d / "table_parallel_budget.csv");
+  REQUIRE(rows1.size() == 4);
+  CHECK(rows1[3][0] == "shared core alone (locks)");
+  CHECK(valueOf(values, "par.budget_best2") == "(not measured)");
+  CHECK(valueOf(values, "par.budget_share_cost").find("not measured") == std::string::npos);
+  CHECK(valueOf(values, "par.budget_best2_verdict").find("not measured") != std::string::npos);
   fs::remove_all(d);
 }
 

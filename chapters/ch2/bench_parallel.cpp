@@ -1,7 +1,10 @@
 // bench_parallel (going further: the parallel page). Two measurements of the fast kernel on
 // uniform random points, each run in a child process of its own:
 //  1. time against threads (code/fast_parallel.h) at 10^6 points (and 10^7 with --max-n), wall
-//     and CPU time, beside CGAL's Delaunay_triangulation_2 when it is installed;
+//     and CPU time, beside CGAL's Delaunay_triangulation_2 when it is installed; at the first n,
+//     the time budget of two threads (table_parallel_budget: sort, one thread alone, concurrent
+//     rounds, output, set-up) beside the sequential kernel and the parallel machinery run by
+//     one thread (dt::fastDelaunaySharedCoreAlone);
 //  2. time per point of the sequential kernel from 10^3 points to --max-n (default 10^6; up to
 //     10^8 = 100000000), with the peak memory (VmHWM) of the triangulation and of the check.
 // Every triangulation is validated exactly (dt::checkDelaunay). Writes table_parallel.*,
@@ -27,9 +30,11 @@
 #include <fstream>
 #include <functional>
 #include <iostream>
+#include <iterator>
 #include <sstream>
 #include <string>
 #include <thread>
+#include <tuple>
 #include <vector>
 
 #include "cache_sizes.h"
@@ -162,6 +167,46 @@ void pairJob(std::size_t n, double* out) {
   out[1] = a[1] + b[1];
   out[2] = a[2];
   out[5] = std::max(a[5], b[5]);
+}
+
+// The runs of the time budget (where the wall time goes, at the first n): the sequential
+// kernel, the parallel machinery on one thread (fastDelaunaySharedCoreAlone) with each claim,
+// and two threads with each claim.
+enum class Budget { Sequential, AloneSlabs, AloneLocks, TwoSlabs, TwoLocks };
+constexpr Budget kBudgetRuns[] = {Budget::Sequential, Budget::AloneSlabs, Budget::AloneLocks,
+                                  Budget::TwoSlabs, Budget::TwoLocks};
+// Slots of budgetJob's out.
+enum BudgetSlot { bWall, bCpu, bSort, bInsert, bLone, bConcurrent, bBusy, bFinish, bDeferred,
+                  bParallelPoints, bTriangles, bWalkSteps, bInsertions };
+
+// One triangulation of the n uniform points of threadsJob, timed in its parts: out[BudgetSlot]
+// (the sequential kernel has no lone, concurrent, busy or finish time: left at -1).
+void budgetJob(std::size_t n, Budget run, bool check, double* out) {
+  const std::vector<double> xy = dt::uniformPoints(n, 2026);
+  const dt::ParallelClaim claim = run == Budget::AloneLocks || run == Budget::TwoLocks
+                                      ? dt::ParallelClaim::Locks
+                                      : dt::ParallelClaim::Slabs;
+  dt::ParallelStats ps;
+  const double w0 = wallNow(), c0 = cpuNow();
+  const dt::FastResult r = run == Budget::Sequential ? dt::fastDelaunay(xy)
+                           : run == Budget::AloneSlabs || run == Budget::AloneLocks
+                               ? dt::fastDelaunaySharedCoreAlone(xy, {}, &ps, claim)
+                               : dt::fastDelaunayParallel(xy, 2, {}, &ps, 2048, claim);
+  out[bWall] = wallNow() - w0;
+  out[bCpu] = cpuNow() - c0;
+  out[bSort] = r.stats.sortSeconds;
+  out[bInsert] = r.stats.insertSeconds;
+  const bool shared = run != Budget::Sequential;
+  out[bLone] = shared ? ps.loneSeconds : -1;
+  out[bConcurrent] = shared ? ps.concurrentSeconds : -1;
+  out[bBusy] = shared ? ps.busySeconds : -1;
+  out[bFinish] = shared ? ps.finishSeconds : -1;
+  out[bDeferred] = double(ps.deferred);
+  out[bParallelPoints] = double(ps.parallelPoints);
+  out[bTriangles] = double(r.tri.size());
+  out[bWalkSteps] = double(r.stats.walkSteps);
+  out[bInsertions] = double(r.stats.insertions);
+  if (check) validate(xy, r.tri);
 }
 
 // The sequential kernel on n points, the fastest of `reps` runs. out: wall, CPU, the CPU time of
@@ -379,6 +424,119 @@ int main(int argc, char** argv) {
                 "later, CPU time of both.";
     t.emit(o, "table_parallel");
     ch::writeOut(o, "parallel_verdict.html", pv.str());
+
+    // ---- 1b. the time budget at the first n --------------------------------------------------
+    // Where the wall time goes: the sequential kernel, the parallel machinery on one thread
+    // (what sharing costs with no second thread) and two threads, with each claim. Each run in
+    // its own process, alternated, the best wall time of `reps` with that run's parts. The
+    // two-thread runs only when --threads lists 2.
+    {
+      const std::size_t n = sizes.front();
+      const bool withTwo = std::count(threadList.begin(), threadList.end(), 2) > 0;
+      constexpr std::size_t kRuns = std::size(kBudgetRuns);
+      std::vector<std::vector<double>> b(kRuns);
+      for (int k = 0; k < reps; ++k)
+        for (std::size_t j = 0; j < kRuns; ++j) {
+          const Budget run = kBudgetRuns[j];
+          if (!withTwo && (run == Budget::TwoSlabs || run == Budget::TwoLocks)) continue;
+          const std::vector<double> r = inChild([&](double* out) { budgetJob(n, run, k == 0, out); });
+          if (r.empty()) throw std::runtime_error("a run of the time budget failed (n = " + std::to_string(n) + ")");
+          if (b[j].empty() || r[bWall] < b[j][bWall]) b[j] = r;
+        }
+      const std::vector<double>&seq = b[0], &aloneS = b[1], &aloneL = b[2], &twoS = b[3], &twoL = b[4];
+      const double seqInsertPerPoint = seq[bInsert] / double(n);
+      ch::Table bt;
+      bt.header = {"run", "wall (ms)", "sort (ms)", "after the sort (ms)", "lone (ms)", "concurrent rounds (ms)",
+                   "busy (ms)", "output (ms)", "the rest (ms)", "busy per point / sequential's",
+                   "walk steps per point", "deferred (%)"};
+      bt.htmlParts = {{0, 1, 2, 3, 4, 5, 6}, {7, 8, 9, 10, 11}};
+      // (No comma in a label or header: the .csv does not quote its cells.)
+      const char* labels[] = {"sequential kernel", "shared core alone (slabs)", "shared core alone (locks)",
+                              "two threads (slabs)", "two threads (locks)"};
+      auto ms = [](double v) { return v < 0 ? std::string("-") : ch::fmt("%.1f", 1000 * v); };
+      for (std::size_t j = 0; j < kRuns; ++j) {
+        if (b[j].empty()) continue;
+        const std::vector<double>& r = b[j];
+        const bool shared = j > 0, concurrent = r[bParallelPoints] > 0;
+        // The rest: what none of the kernel's clocks covers (the shared arrays' set-up, the
+        // claims, the call itself).
+        const double rest = shared ? r[bWall] - r[bSort] - r[bLone] - r[bConcurrent] - r[bFinish]
+                                   : r[bWall] - r[bSort] - r[bInsert];
+        bt.add({labels[j], ms(r[bWall]), ms(r[bSort]), ms(r[bInsert]), ms(r[bLone]), ms(r[bConcurrent]),
+                ms(r[bBusy]), ms(r[bFinish]), ch::fmt("%.1f", 1000 * rest),
+                !shared ? "1.00"
+                : concurrent ? ch::fmt("%.2f", r[bBusy] / r[bParallelPoints] / seqInsertPerPoint)
+                             : "-",
+                ch::fmt("%.2f", r[bWalkSteps] / std::max(1.0, r[bInsertions])),
+                concurrent ? ch::fmt("%.3f", 100 * r[bDeferred] / r[bParallelPoints]) : "-"});
+      }
+      bt.caption = "Where the wall time goes at n = " + std::to_string(n) +
+                   " (the uniform points of the table above): each run in its own process, runs "
+                   "alternated, the best wall time of " + std::to_string(reps) +
+                   " with that run's parts. Shared core alone: the parallel kernel's machinery "
+                   "(relaxed atomic access, claims, rounds, deferred insertions) run by one thread "
+                   "(dt::fastDelaunaySharedCoreAlone). After the sort: all the kernel does once "
+                   "the order is known. Lone: one thread alone, the small first rounds and the "
+                   "deferred insertions. Concurrent rounds: their wall time, the partition "
+                   "included. Busy: the time the threads spent inside their pieces, summed over "
+                   "the threads. Output: the final compaction. The rest: the wall time minus sort, "
+                   "lone, concurrent rounds and output (the set-up of the shared arrays). Busy per "
+                   "point: busy time per point of the concurrent rounds, over the sequential "
+                   "kernel's time after the sort per point. The machine has " +
+                   std::to_string(hw) + " hardware threads; load average at the end: " + loadAverage() + ".";
+      bt.emit(o, "table_parallel_budget");
+
+      // The budget's values. A perfect split: the concurrent rounds take the shared core's
+      // one-thread busy time divided by the threads, everything else as measured with two
+      // threads. With 4 or 8 threads this is a model, not a measurement.
+      const std::string none = "(not measured)";
+      auto pct = [](double x) { return ch::fmt("%.0f%%", 100 * x); };
+      // (What the second thread adds and the perfect split need concurrent rounds, with one
+      // thread and with two: none below a few thousand points.)
+      const bool ranS = !twoS.empty(), ranL = !twoL.empty();
+      const bool haveS = ranS && twoS[bParallelPoints] > 0 && aloneS[bBusy] > 0;
+      const bool haveL = ranL && twoL[bParallelPoints] > 0 && aloneL[bBusy] > 0;
+      auto split = [&](const std::vector<double>& two, const std::vector<double>& alone, double k) {
+        return (two[bWall] - two[bConcurrent] + alone[bBusy] / k) / seq[bWall];
+      };
+      values.set("par.budget_n", std::to_string(n));
+      values.set("par.hw_threads", std::to_string(hw));
+      values.set("par.budget_share_cost", pct(aloneS[bInsert] / seq[bInsert] - 1));
+      values.set("par.budget_share_cost_locks", pct(aloneL[bInsert] / seq[bInsert] - 1));
+      // What the second thread adds to the busy time (signed: a second core brings its own
+      // caches too, so it can be less).
+      auto signedPct = [](double x) { return ch::fmt("%+.0f%%", 100 * x); };
+      values.set("par.budget_second_thread", haveS ? signedPct(twoS[bBusy] / aloneS[bBusy] - 1) : none);
+      values.set("par.budget_second_thread_locks", haveL ? signedPct(twoL[bBusy] / aloneL[bBusy] - 1) : none);
+      values.set("par.budget_wall2", ranS ? ch::fmt("%.2f", twoS[bWall] / seq[bWall]) : none);
+      values.set("par.budget_wall2_locks", ranL ? ch::fmt("%.2f", twoL[bWall] / seq[bWall]) : none);
+      // The largest part outside the rounds: the sort, which two threads share too.
+      values.set("par.budget_sort2", ranS ? ch::fmt("%.2f", twoS[bSort] / seq[bSort]) : none);
+      values.set("par.budget_serial", ranS ? pct(1 - twoS[bConcurrent] / twoS[bWall]) : none);
+      values.set("par.budget_serial_locks", ranL ? pct(1 - twoL[bConcurrent] / twoL[bWall]) : none);
+      for (const auto& [k, key, keyLocks] : {std::tuple{2.0, "par.budget_best2", "par.budget_best2_locks"},
+                                             std::tuple{4.0, "par.budget_k4", "par.budget_k4_locks"},
+                                             std::tuple{8.0, "par.budget_k8", "par.budget_k8_locks"}}) {
+        values.set(key, haveS ? ch::fmt("%.2f", split(twoS, aloneS, k)) : none);
+        values.set(keyLocks, haveL ? ch::fmt("%.2f", split(twoL, aloneL, k)) : none);
+      }
+      // The verdicts against the target, with the claim that does better.
+      auto meets = [&](double k) {
+        return (haveS && split(twoS, aloneS, k) <= kTwoTarget) || (haveL && split(twoL, aloneL, k) <= kTwoTarget);
+      };
+      const char* either = haveS && haveL ? ", with either claim" : "";
+      const std::string why = !ranS && !ranL ? "two threads were not measured"
+                                             : "two threads had no concurrent round at this n";
+      values.set("par.budget_best2_verdict",
+                 !haveS && !haveL ? "the budget cannot tell: " + why
+                 : meets(2) ? "a perfect split would meet it: what is missing is what the second thread adds"
+                            : std::string("even a perfect split of the shared core would miss it") + either);
+      values.set("par.budget_k_verdict",
+                 !haveS && !haveL ? "cannot be judged: " + why
+                 : meets(4)       ? std::string("would meet it with 4 cores")
+                 : meets(8)       ? std::string("would meet it with 8 cores, not with 4")
+                                  : std::string("would miss it even with 8 cores"));
+    }
 
     // ---- 2. time per point -------------------------------------------------------------
     std::vector<std::size_t> pp;
