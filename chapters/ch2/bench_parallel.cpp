@@ -403,7 +403,7 @@ int main(int argc, char** argv) {
         const bool twice = runs[j] == -2, locks = runs[j] == -3;
         t.add({std::to_string(n),
                cgal ? "CGAL 2D"
-                    : twice ? "fast (sequential), two runs at once"
+                    : twice ? "fast (sequential): two runs at once"
                     : locks ? "fast parallel, locks"
                             : (runs[j] == 1 ? "fast (sequential)" : "fast parallel"),
                cgal ? "1" : twice ? "2 x 1" : locks ? "2" : std::to_string(runs[j]), ch::fmt("%.3f", r[0]),
