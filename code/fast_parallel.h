@@ -25,7 +25,7 @@ struct ParallelStats {
   // Where the wall time goes (bench_parallel's budget table); with sortSeconds of the FastStats,
   // these add up to the run's time, up to the set-up of the arrays.
   double loneSeconds = 0;        ///< one thread alone: the small first rounds and the deferred insertions
-  double concurrentSeconds = 0;  ///< wall time of the concurrent rounds' pieces (partition included)
+  double concurrentSeconds = 0;  ///< wall time of the concurrent rounds' pieces (the slabs' cuts included)
   double busySeconds = 0;        ///< the threads' time inside their pieces, summed over the threads
   double finishSeconds = 0;      ///< the output (fast::finish)
 };

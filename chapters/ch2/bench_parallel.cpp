@@ -477,7 +477,7 @@ int main(int argc, char** argv) {
                    "(relaxed atomic access, claims, rounds, deferred insertions) run by one thread "
                    "(dt::fastDelaunaySharedCoreAlone). After the sort: all the kernel does once "
                    "the order is known. Lone: one thread alone, the small first rounds and the "
-                   "deferred insertions. Concurrent rounds: their wall time, the partition "
+                   "deferred insertions. Concurrent rounds: their wall time, the slabs' cuts "
                    "included. Busy: the time the threads spent inside their pieces, summed over "
                    "the threads. Output: the final compaction. The rest: the wall time minus sort, "
                    "lone, concurrent rounds and output (the set-up of the shared arrays). Busy per "
