@@ -48,6 +48,13 @@ HilbertBox hilbertBox(const std::vector<double>& xy);
 /// 4^8 = 65536 in density) keep clustered data separated too (see the depth table of 2.3.5).
 int hilbertAutoDepth(std::size_t n);
 
+/// The curve depth of brioCoinOrder (the fast kernels' sort): ceil(log4 n) + 2 levels, at most
+/// 31, about 16 cells a point on uniform data. Coarser than hilbertAutoDepth on purpose: the
+/// adaptive refinement orders the few crowded cells, and every level fewer makes the keys
+/// cheaper to compute and to sort (at 10^6 points, 24 key bits instead of 36: three radix
+/// passes of 9 bits instead of three of 13, two table look-ups fewer per key).
+int brioCoinDepth(std::size_t n);
+
 /// Hilbert keys of the points xy = x0 y0 x1 y1 ... on H_depth (depth 1..31, 0 = auto): each
 /// point is mapped to its cell of the 2^depth grid over hilbertBox(xy) (a monotone map, so
 /// points on cell boundaries are assigned consistently), then to hilbertIndex. A key fits in
@@ -91,12 +98,12 @@ std::vector<std::size_t> brioOrder(const std::vector<double>& xy, std::uint64_t 
 /// BRIO with rounds drawn by biased coins (the fast kernel's default order): point i goes to the
 /// last of `rounds` rounds with probability 3/4, to the one before with probability 3/16, and
 /// so on (the ratio of CGAL's spatial sort; a hash of i and the seed plays the coin, so the
-/// order is reproducible); each round in Hilbert order, adaptive as hilbertOrder unless
-/// adaptive = false (then equal keys by index). When (round, key, index) do not fit in 64 bits
-/// (about 10^7 points) the curve is taken a few levels coarser (the refinement makes up for it).
-/// With threads > 1 the same order, bit for bit, is computed by that many threads: keys,
-/// radix sorts and refinement piece by piece, the sorted pieces merged (the parallel kernel's
-/// sort; one thread's sort was a fifth of its time).
+/// order is reproducible); each round in Hilbert order on the curve of brioCoinDepth(n) levels,
+/// adaptive as hilbertOrder unless adaptive = false (then equal keys by index). When (round,
+/// key, index) do not fit in 64 bits (beyond about 10^8 points) the curve is taken a few levels
+/// coarser (the refinement makes up for it). With threads > 1 the same order, bit for bit, is
+/// computed by that many threads: keys, the radix sort's passes and the refinement piece by
+/// piece (the parallel kernel's sort).
 std::vector<std::size_t> brioCoinOrder(const std::vector<double>& xy, std::uint64_t seed,
                                        int rounds = 8, bool adaptive = true, int threads = 1);
 

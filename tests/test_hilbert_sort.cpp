@@ -108,11 +108,13 @@ TEST_CASE("Hilbert sort for BRIO by biased coins (the fast kernel's order) puts 
   std::vector<std::size_t> id(n);
   std::iota(id.begin(), id.end(), std::size_t{0});
   REQUIRE(s == id);
-  // Rounds are runs of increasing (key, index); a new round starts where that order drops.
-  const std::vector<std::uint64_t> keys = dt::hilbertKeys(p, 0);
+  // Rounds are runs of non-decreasing keys on the curve of brioCoinDepth levels (a crowded
+  // cell's points are refined, so equal keys need not come in index order); a new round starts
+  // where the key drops.
+  const std::vector<std::uint64_t> keys = dt::hilbertKeys(p, dt::brioCoinDepth(n));
   std::vector<std::size_t> starts = {0};
   for (std::size_t k = 1; k < n; ++k)
-    if (std::make_pair(keys[o[k]], o[k]) < std::make_pair(keys[o[k - 1]], o[k - 1])) starts.push_back(k);
+    if (keys[o[k]] < keys[o[k - 1]]) starts.push_back(k);
   // 8 rounds, each one run; two consecutive runs merge when a round's last key happens to be
   // below the next round's first, which the first rounds (a few points each) may do.
   CHECK(starts.size() <= 8);
@@ -121,7 +123,9 @@ TEST_CASE("Hilbert sort for BRIO by biased coins (the fast kernel's order) puts 
   CHECK(std::fabs(double(n - starts.back()) / double(n) - 0.75) < 0.01);
   CHECK(dt::brioCoinOrder(p, 3) == o);
   CHECK(dt::brioCoinOrder(p, 4) != o);
-  CHECK(dt::brioCoinOrder(p, 3, 1) == dt::hilbertOrder(p));  // one round: the Hilbert sort
+  // One round: the Hilbert sort on the same curve.
+  CHECK(dt::brioCoinOrder(p, 3, 1) == dt::hilbertOrder(p, dt::brioCoinDepth(n)));
+  CHECK(dt::brioCoinDepth(n) == 8 + 2);  // 4^8 = 65536 >= 40000
 }
 
 namespace {
