@@ -105,7 +105,7 @@ int main(int argc, char** argv) {
                    "cavities", false, f});
   f.order = dt::FastOrder::RadixBrio;
   steps.push_back({"coin BRIO", "BRIO rounds by a biased coin (dt::brioCoinOrder: 3/4 of the "
-                   "points in the last round)", false, f});
+                   "points in the last round; a coarser curve, dt::brioCoinDepth)", false, f});
 
   std::cout << "opt_ladder: " << n << " uniform random points, best of " << reps << "\n";
   ch::Progress progress("opt_ladder", steps.size() * std::size_t(reps));
