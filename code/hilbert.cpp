@@ -406,14 +406,11 @@ void refineSorted(const std::vector<double>& xy, const BoxCells& cells, std::siz
 
 // Sorts the points by (group, key, index), group[k] < 2^groupBits (none if groupBits = 0),
 // with one radix sort of (group, key, index) packed in 64 bits when they fit, else std::sort.
-// With `coarsen`, levels of the curve are dropped until they fit: the key of a coarser curve,
-// the same order up to more ties (broken by index, or by the refinement when `adaptive`).
 std::vector<std::size_t> sortByGroupKeyIndex(const std::vector<double>& xy, int depth,
                                              const std::vector<std::uint32_t>& group,
-                                             int groupBits, bool adaptive, bool coarsen = false) {
+                                             int groupBits, bool adaptive) {
   const std::size_t n = xy.size() / 2;
   const int idxBits = bitsFor(n);
-  if (coarsen) depth = std::max(1, std::min(depth, (64 - groupBits - idxBits) / 2));
   const int keyBits = 2 * depth;
   std::vector<std::size_t> order = hugeVector<std::size_t>(n);
   if (groupBits + keyBits + idxBits <= 64) {
@@ -485,8 +482,11 @@ void radixSortParallel(std::vector<std::uint64_t>& a, int lo, int hi, int thread
   }
 }
 
-// The twin of sortByGroupKeyIndex's packed path (with `coarsen`) that computes the groups
-// itself (groupOf(k), no array of them) and, with `threads` > 1, runs in parallel. Every step is cut into consecutive pieces, one thread a piece, and none changes the result:
+// The twin of sortByGroupKeyIndex's packed path that computes the groups itself (groupOf(k),
+// no array of them), drops levels of the curve until (group, key, index) fit in 64 bits (the
+// key of a coarser curve: the same order up to more ties, broken by the refinement when
+// `adaptive`, else by index), and with `threads` > 1 runs in parallel. Every step is cut into
+// consecutive pieces, one thread a piece, and none changes the result:
 // the words (group, key, index) are computed piece by piece, the radix sort is the sequential
 // one's passes (radixSortParallel), and the refinement is cut only between runs of equal
 // (group, key), each run refined as before. So the order is the sequential one, bit for bit
@@ -497,7 +497,7 @@ std::vector<std::size_t> sortByGroupKeyIndexThreads(const std::vector<double>& x
                                                      bool adaptive, int threads) {
   const std::size_t n = xy.size() / 2;
   const int idxBits = bitsFor(n);
-  depth = std::max(1, std::min(depth, (64 - groupBits - idxBits) / 2));  // as with `coarsen`
+  depth = std::max(1, std::min(depth, (64 - groupBits - idxBits) / 2));
   const int keyBits = 2 * depth;
   const BoxCells cells(hilbertBox(xy), depth);
   // (The order first, then the words: in the other order glibc's heap left 6 MB more resident
@@ -618,14 +618,13 @@ std::vector<std::size_t> brioCoinOrder(const std::vector<double>& xy, std::uint6
   if (rounds < 1 || rounds > 32) throw std::invalid_argument("brioCoinOrder: rounds out of 1..32");
   const std::size_t n = xy.size() / 2;
   const int groupBits = rounds > 1 ? bitsFor(rounds) : 0;
-  if (groupBits + 2 + bitsFor(n) <= 64)  // fits with one curve level at least
-    return sortByGroupKeyIndexThreads(
-        xy, brioCoinDepth(n), [&](std::size_t i) { return brioCoinRound(i, seed, rounds); },
-        groupBits, adaptive, std::max(1, threads));
-  std::vector<std::uint32_t> round = hugeVector<std::uint32_t>(n, 0);
-  for (std::size_t i = 0; i < n && rounds > 1; ++i)
-    round[i] = std::uint32_t(brioCoinRound(i, seed, rounds));
-  return sortByGroupKeyIndex(xy, brioCoinDepth(n), round, groupBits, adaptive, true);
+  // One curve level at least must fit beside the round and the index: up to 2^57 points, far
+  // more than an address space holds.
+  if (groupBits + 2 + bitsFor(n) > 64)
+    throw std::length_error("brioCoinOrder: more than 2^57 points");
+  return sortByGroupKeyIndexThreads(
+      xy, brioCoinDepth(n), [&](std::size_t i) { return brioCoinRound(i, seed, rounds); },
+      groupBits, adaptive, std::max(1, threads));
 }
 
 }  // namespace dt
