@@ -14,6 +14,12 @@ namespace dt {
 /// only: nothing changes where it is refused.
 void adviseHugePages(const void* p, std::size_t bytes);
 
+/// Asks the kernel to map the whole 4 KB pages inside [p, p + bytes) now, in one call
+/// (MADV_POPULATE_WRITE, Linux 5.14), rather than by one page fault per page at first touch:
+/// the same zeroed pages, without a trap into the kernel for each. A hint only: false where the
+/// kernel refuses it (an older one), and nothing changes.
+bool populatePages(const void* p, std::size_t bytes);
+
 /// n copies of v in a vector whose storage was given the hint above before its first touch.
 template <class T>
 std::vector<T> hugeVector(std::size_t n, const T& v = T()) {
