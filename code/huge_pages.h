@@ -1,5 +1,6 @@
-// Large arrays backed by 2 MB pages where the system allows it (an internal helper of the fast
-// kernels and of the Hilbert sort).
+// How the large arrays of the fast kernels and of the Hilbert sort get their memory (an internal
+// helper): the sort's short-lived arrays in 2 MB pages where the system allows it, the kernel's
+// triangle arrays in small pages mapped in one call (fast_core.h's Store says why).
 #pragma once
 
 #include <cstddef>
