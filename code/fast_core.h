@@ -104,15 +104,16 @@ struct Store {
   /// of the sort's arrays (hugeVector): the walks would gain a little from 2 MB pages, but a VM
   /// that hands its freed 2 MB blocks back to the host (free page reporting, as on the machine
   /// that measures this book) gives a fresh process those blocks cold, and mapping them again
-  /// cost up to 2.4 ms per MB there, a third of the kernel's time at 10^6 points. Measured in
-  /// fresh processes at 10^6 points, alternated: 2 MB pages 0.25 to 0.36 s, these 0.26 to 0.28 s.
+  /// cost up to 2.4 ms per MB there, over a quarter of the kernel's time at 10^6 points. Measured
+  /// in fresh processes at 10^6 points, alternated: 2 MB pages 0.25 to 0.36 s, these 0.26 to 0.28 s.
   Store(const double* points, int n, std::size_t slots, int threads)
       : P(points), INF(n), A(new int[3 * slots]) {
     V.reserve(slots);
     populatePages(V.data(), slots * sizeof(Tri));
-    if (threads == 1) populatePages(A.get(), 3 * slots * sizeof(int));  // else: zeroed in pieces
     V.assign(slots, Tri{n, n, n});
-    if (threads > 1)
+    if (threads == 1)
+      populatePages(A.get(), 3 * slots * sizeof(int));
+    else  // zeroed by the threads in pieces: a stale read must see a half-edge (above)
       parallelFor(threads, 3 * slots, [&](int, std::size_t lo, std::size_t hi) {
         std::fill(A.get() + lo, A.get() + hi, 0);
       });

@@ -9,10 +9,9 @@
 namespace dt {
 
 /// Asks the kernel to back [p, p + bytes) with 2 MB pages where it can (transparent huge pages
-/// in "madvise" mode, Debian's default): the arrays of 10^6 points span tens of MB, and with
-/// 4 KB pages their first touch costs one page fault per 4 KB (a quarter of the sequential
-/// kernel's time in a profile at 10^6, and a third of a sort's in a fresh process). A hint
-/// only: nothing changes where it is refused.
+/// in "madvise" mode, Debian's default): the sort's arrays of 10^6 points span tens of MB, and
+/// with 4 KB pages their first touch costs one page fault per 4 KB (a third of a sort's time in
+/// a fresh process). A hint only: nothing changes where it is refused.
 void adviseHugePages(const void* p, std::size_t bytes);
 
 /// Asks the kernel to map the whole 4 KB pages inside [p, p + bytes) now, in one call
