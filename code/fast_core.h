@@ -583,6 +583,48 @@ class alignas(64) Inserter {  // aligned: two threads' inserters never share a c
 };
 
 // ---------------------------------------------------------------------------------------------
+// Two builds of the insertion loops. The library is compiled for every x86-64 processor; on one
+// with AVX2, BMI2 and the rest of x86-64-v3 the loops run in a second build of the same code,
+// compiled for that level (3 to 4 % faster at 10^6 points in fresh processes, alternated with
+// the baseline; opt_ladder's last step measures it in every run). runV3 is that build: flatten
+// inlines into it everything f calls, so the whole loop (walk, cavity, fill, predicates) is
+// compiled for x86-64-v3 there, while the out-of-line functions it cannot inline (the exact
+// stages of the predicates, the allocator) stay the baseline ones: no function of the baseline
+// build is ever replaced by one for x86-64-v3. The rounding is the same in both: fused
+// multiply-add is not used (-ffp-contract=off, CMakeLists.txt), so the filters' error bounds
+// hold in both. GCC on x86-64 only; elsewhere (clang, WebAssembly, ARM) there is one build.
+//! [twoBuilds]
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+#define DT_FAST_X86_64_V3 1
+template <class F>
+__attribute__((target("arch=x86-64-v3"), flatten, noinline)) void runV3(F& f) {
+  f();
+}
+#endif
+
+/// Whether the insertions run in the x86-64-v3 build: the processor has it and opt allows it.
+inline bool useV3(const FastOptions& opt) {
+#ifdef DT_FAST_X86_64_V3
+  return !opt.baselineBuild && __builtin_cpu_supports("x86-64-v3");
+#else
+  (void)opt;
+  return false;
+#endif
+}
+
+/// f() in the x86-64-v3 build if v3 (see useV3), else in the baseline build.
+template <class F>
+void inBuild(bool v3, F&& f) {
+#ifdef DT_FAST_X86_64_V3
+  if (v3) return runV3(f);
+#else
+  (void)v3;
+#endif
+  f();
+}
+//! [twoBuilds]
+
+// ---------------------------------------------------------------------------------------------
 // What both kernels do around the insertions.
 
 /// The input checks: an even number of finite coordinates, at most 2^28 points, at least 3.

@@ -33,15 +33,18 @@ void run(std::vector<double>& P, std::vector<int>& orig, FastResult& res, Pred p
   std::vector<std::pair<int, int>> dups;  // (point, vertex it duplicates), insertion numbers
   const std::size_t every = std::max<std::size_t>(1, opt.progressEvery);
   std::size_t nextReport = opt.progress ? every : std::size_t(-1);
-  for (int i = 1; i < n; ++i) {
-    if (__builtin_expect(std::size_t(i) == nextReport, 0)) {
-      opt.progress(std::size_t(i), std::size_t(n), res.stats);
-      nextReport += every;
+  res.stats.x86_64_v3 = fast::useV3(opt);
+  fast::inBuild(res.stats.x86_64_v3, [&] {
+    for (int i = 1; i < n; ++i) {
+      if (__builtin_expect(std::size_t(i) == nextReport, 0)) {
+        opt.progress(std::size_t(i), std::size_t(n), res.stats);
+        nextReport += every;
+      }
+      if (i == f.i1 || i == f.i2) continue;
+      int d = -1;
+      if (K.insert(i, d) == decltype(K)::Duplicate) dups.emplace_back(i, d);
     }
-    if (i == f.i1 || i == f.i2) continue;
-    int d = -1;
-    if (K.insert(i, d) == decltype(K)::Duplicate) dups.emplace_back(i, d);
-  }
+  });
   // Only the vertices of the triangles are kept: they become the output.
   claim.freeMarks();
   S.A.reset();

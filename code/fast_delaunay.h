@@ -48,6 +48,9 @@ struct FastOptions {
   /// return the points in that order (FastResult::points, inserted): a check or a writer then
   /// reads memory in the kernel's spatially coherent order (the command line does).
   bool insertionNumbering = false;
+  /// Insert in the build of the kernel for every x86-64 processor, even where its x86-64-v3
+  /// build can run (FastStats::x86_64_v3): tests and benchmarks compare the two.
+  bool baselineBuild = false;
 };
 
 /// Counters and timings of one run.
@@ -59,6 +62,7 @@ struct FastStats {
   pred::StageCounts incircle;     ///< incircle tests, by the stage that decided them
   double sortSeconds = 0;         ///< computing the insertion order
   double insertSeconds = 0;       ///< the insertions (and the output)
+  bool x86_64_v3 = false;         ///< the insertions ran in the x86-64-v3 build (fast_core.h)
 };
 
 /// The result: counter-clockwise triangles as index triples into the input points.

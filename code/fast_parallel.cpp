@@ -35,27 +35,29 @@ double secondsSince(std::chrono::steady_clock::time_point t) {
 // the positions where pick gives -1: another thread's points) with
 // one inserter; a Busy point goes to the deferred list, or is an error when the inserter must be
 // alone. tick(j), if given, is called before the j-th point when j - from is a multiple of
-// `every` (the progress report).
+// `every` (the progress report). v3: in the x86-64-v3 build (fast::useV3).
 template <class Inserter, class Pick, class Tick>
-void insertRange(Inserter& in, Worker& w, int from, int to, Pick pick, int i1, int i2, bool alone,
-                 std::size_t every, Tick tick) {
-  std::size_t next = every;
-  for (int j = from; j < to; ++j) {
-    if (__builtin_expect(std::size_t(j - from) == next, 0)) {
-      tick(j);
-      next += every;
+void insertRange(bool v3, Inserter& in, Worker& w, int from, int to, Pick pick, int i1, int i2,
+                 bool alone, std::size_t every, Tick tick) {
+  fast::inBuild(v3, [&] {
+    std::size_t next = every;
+    for (int j = from; j < to; ++j) {
+      if (__builtin_expect(std::size_t(j - from) == next, 0)) {
+        tick(j);
+        next += every;
+      }
+      const int i = pick(j);
+      if (i < 0 || i == i1 || i == i2) continue;
+      int d = -1;
+      const typename Inserter::Outcome o = in.insert(i, d);
+      if (o == Inserter::Duplicate) {
+        w.dups.emplace_back(i, d);
+      } else if (o == Inserter::Busy) {
+        if (alone) throw std::logic_error("fastDelaunayParallel: a lone insertion was refused");
+        w.deferred.push_back(i);
+      }
     }
-    const int i = pick(j);
-    if (i < 0 || i == i1 || i == i2) continue;
-    int d = -1;
-    const typename Inserter::Outcome o = in.insert(i, d);
-    if (o == Inserter::Duplicate) {
-      w.dups.emplace_back(i, d);
-    } else if (o == Inserter::Busy) {
-      if (alone) throw std::logic_error("fastDelaunayParallel: a lone insertion was refused");
-      w.deferred.push_back(i);
-    }
-  }
+  });
 }
 
 const auto kIdentity = [](int j) { return j; };
@@ -174,9 +176,10 @@ void insertRounds(const std::vector<double>& xy, std::vector<double>& P, std::ve
     s.insertions = std::min<std::uint64_t>(done, s.insertions * std::uint64_t(scale));
     opt.progress(std::min(done, n), n, s);
   };
+  const bool v3 = res.stats.x86_64_v3 = fast::useV3(opt);
   policy.alone(*claims[0]);
   const auto tl = std::chrono::steady_clock::now();
-  insertRange(*ins[0], W[0], 1, seqEnd, kIdentity, i1, i2, true, every,
+  insertRange(v3, *ins[0], W[0], 1, seqEnd, kIdentity, i1, i2, true, every,
               [&](int i) { report(std::size_t(i), 1); });
   ps.loneSeconds += secondsSince(tl);
   const auto tp = std::chrono::steady_clock::now();
@@ -189,7 +192,7 @@ void insertRounds(const std::vector<double>& xy, std::vector<double>& P, std::ve
     const auto tc = std::chrono::steady_clock::now();
     policy.round(P, from, to, threads, claims, [&](int k, int lo, int hi, auto pick, int step) {
       const auto tb = std::chrono::steady_clock::now();
-      insertRange(*ins[std::size_t(k)], W[std::size_t(k)], lo, hi, pick, i1, i2, false,
+      insertRange(v3, *ins[std::size_t(k)], W[std::size_t(k)], lo, hi, pick, i1, i2, false,
                   k == 0 && opt.progress ? every / std::size_t(step) + 1 : std::size_t(-1), [&](int j) {
                     report(std::size_t(from) + std::size_t(j - lo) * std::size_t(step), threads);
                   });
@@ -207,7 +210,7 @@ void insertRounds(const std::vector<double>& xy, std::vector<double>& P, std::ve
     policy.alone(*claims[0]);
     const auto td = std::chrono::steady_clock::now();
     for (int i : later)
-      insertRange(*ins[0], W[0], i, i + 1, kIdentity, i1, i2, true, std::size_t(-1), [](int) {});
+      insertRange(v3, *ins[0], W[0], i, i + 1, kIdentity, i1, i2, true, std::size_t(-1), [](int) {});
     ps.loneSeconds += secondsSince(td);
   }
   ps.parallelSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - tp).count();

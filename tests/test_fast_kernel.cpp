@@ -11,8 +11,10 @@
 #include <sys/mman.h>
 #include <sys/utsname.h>
 
+#include "check.h"
 #include "delaunay.h"
 #include "fast_delaunay.h"
+#include "fast_parallel.h"
 #include "hilbert.h"
 #include "huge_pages.h"
 #include "predicates.h"
@@ -338,4 +340,46 @@ TEST_CASE("fast kernel populatePages maps exactly the whole pages of a range") {
     CHECK((in[k] & 1) == ((done && k >= 1 && k + 1 < kPages) ? 1 : 0));
   }
   ::munmap(m, kPages * kPage);
+}
+
+TEST_CASE("fast kernel the x86-64-v3 build and the baseline build make the same tests and give the same DT(S)") {
+  // The insertion loops run in a second build for x86-64-v3 processors (fast_core.h, runV3).
+  // Same code, same rounding (no fused multiply-add): the same predicate calls stage by stage
+  // and the same triangles in the same order, on points that reach the exact stages, with
+  // duplicates; in the sequential kernel and in the parallel kernel's core.
+  dttest::XY p = dttest::gridPoints(30, 30, 0.1);
+  const dttest::XY u = dttest::uniformPoints(2000, 41);
+  p.insert(p.end(), u.begin(), u.end());
+  p.insert(p.end(), {p[0], p[1], p[100], p[101]});
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+  const bool v3 = __builtin_cpu_supports("x86-64-v3");
+#else
+  const bool v3 = false;
+#endif
+  dt::FastOptions base;
+  base.baselineBuild = true;
+  using Run = dt::FastResult (*)(const dttest::XY&, const dt::FastOptions&);
+  const Run runs[2] = {
+      [](const dttest::XY& q, const dt::FastOptions& o) { return dt::fastDelaunay(q, o); },
+      [](const dttest::XY& q, const dt::FastOptions& o) {
+        return dt::fastDelaunaySharedCoreAlone(q, o);
+      }};
+  for (const Run run : runs) {
+    const dt::FastResult a = run(p, {}), b = run(p, base);
+    CHECK(a.stats.x86_64_v3 == v3);
+    CHECK_FALSE(b.stats.x86_64_v3);
+    CHECK(dt::checkDelaunay(p, a.tri).ok);
+    CHECK(a.tri == b.tri);
+    CHECK(a.duplicates == b.duplicates);
+    CHECK(a.duplicates.size() == 2);
+    CHECK(a.stats.incircle.beyondFilter() > 0);
+    for (int s = 0; s < dt::pred::kStageCount; ++s) {
+      CAPTURE(dt::pred::kStageNames[s]);
+      CHECK(a.stats.orient[s] == b.stats.orient[s]);
+      CHECK(a.stats.incircle[s] == b.stats.incircle[s]);
+    }
+  }
+  // Two threads: the option reaches the threads' loops too.
+  CHECK(dt::fastDelaunayParallel(p, 2, {}, nullptr, 64).stats.x86_64_v3 == v3);
+  CHECK_FALSE(dt::fastDelaunayParallel(p, 2, base, nullptr, 64).stats.x86_64_v3);
 }

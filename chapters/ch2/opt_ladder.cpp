@@ -85,6 +85,7 @@ int main(int argc, char** argv) {
 
   std::vector<Step> steps;
   dt::FastOptions f;
+  f.baselineBuild = true;  // every step in the build for every x86-64 processor but the last
   f.order = dt::FastOrder::Hilbert;
   f.ladderCallPredicates = f.ladderCentroidWalk = f.ladderMapAdjacency = true;
   steps.push_back({"listings", "corrected listings: pointers, std::map, centroid walk; Hilbert "
@@ -106,6 +107,15 @@ int main(int argc, char** argv) {
   f.order = dt::FastOrder::RadixBrio;
   steps.push_back({"coin BRIO", "BRIO rounds by a biased coin (dt::brioCoinOrder: 3/4 of the "
                    "points in the last round; a coarser curve, dt::brioCoinDepth)", false, f});
+  // The last step changes no line of the kernel: it lets the insertions run in their second
+  // build, for x86-64-v3 processors (code/fast_core.h), where this processor has it.
+  f.baselineBuild = false;
+  const bool v3 = dt::fastDelaunay({0, 0, 1, 0, 0, 1}, f).stats.x86_64_v3;
+  steps.push_back({"x86-64-v3", v3 ? "the same insertion loops compiled for x86-64-v3 processors "
+                                     "(AVX2, BMI2; no fused multiply-add), chosen at run time"
+                                   : "the build for x86-64-v3 processors, which this processor is "
+                                     "not: the same build again",
+                   false, f});
 
   std::cout << "opt_ladder: " << n << " uniform random points, best of " << reps << "\n";
   ch::Progress progress("opt_ladder", steps.size() * std::size_t(reps));
@@ -148,8 +158,9 @@ int main(int argc, char** argv) {
   }
   t.emit(o, "table_ladder");
   ch::writeOut(o, "ladder.dat", dat);
-  // What the fast-kernel page says of three steps, from this run: the walk step (3), the
-  // inlined predicates (4) and the cavities before (4) and after (5) the BRIO order.
+  // What the fast-kernel page says of four steps, from this run: the walk step (3), the
+  // inlined predicates (4), the cavities before (4) and after (5) the BRIO order, and the
+  // x86-64-v3 build (7).
   ch::Values v(o, "opt_ladder");
   const double walkGain = best[2].seconds / best[3].seconds;
   const double inlineGain = best[3].seconds / best[4].seconds;
@@ -159,6 +170,10 @@ int main(int argc, char** argv) {
   v.verdict("ladder.inline_verdict", inlineGain < 1.1, "worth little", "worth having");
   v.num("ladder.hilbert_cavity", best[4].cavity, "%.2f");
   v.num("ladder.brio_cavity", best[5].cavity, "%.2f");
+  const double v3Gain = best[6].seconds / best[7].seconds;
+  v.num("ladder.v3_speedup", v3Gain, "%.2f");
+  v.set("ladder.v3_verdict", !v3 ? "not available on this processor"
+                                 : (v3Gain > 1.01 ? "a gain" : (v3Gain < 0.99 ? "a loss" : "about even")));
   v.write();
   ch::runGnuplot(o, "fig_ladder_time.gp");
   return 0;
