@@ -6,19 +6,25 @@
 
 namespace dt {
 
-void adviseHugePages(const void* p, std::size_t bytes) {
-  constexpr std::uintptr_t kHuge = std::uintptr_t{1} << 21;
+namespace {
+
+// madvise(advice) on the whole pages of `page` bytes (a power of two) inside [p, p + bytes):
+// false if there is none or the kernel refuses.
+bool adviseWholePages(const void* p, std::size_t bytes, std::uintptr_t page, int advice) {
   const std::uintptr_t a = reinterpret_cast<std::uintptr_t>(p);
-  const std::uintptr_t lo = (a + kHuge - 1) & ~(kHuge - 1), hi = (a + bytes) & ~(kHuge - 1);
-  if (hi > lo) ::madvise(reinterpret_cast<void*>(lo), hi - lo, MADV_HUGEPAGE);
+  const std::uintptr_t lo = (a + page - 1) & ~(page - 1), hi = (a + bytes) & ~(page - 1);
+  return hi > lo && ::madvise(reinterpret_cast<void*>(lo), hi - lo, advice) == 0;
+}
+
+}  // namespace
+
+void adviseHugePages(const void* p, std::size_t bytes) {
+  adviseWholePages(p, bytes, std::uintptr_t{1} << 21, MADV_HUGEPAGE);
 }
 
 bool populatePages(const void* p, std::size_t bytes) {
 #ifdef MADV_POPULATE_WRITE
-  constexpr std::uintptr_t kPage = 4096;
-  const std::uintptr_t a = reinterpret_cast<std::uintptr_t>(p);
-  const std::uintptr_t lo = (a + kPage - 1) & ~(kPage - 1), hi = (a + bytes) & ~(kPage - 1);
-  return hi > lo && ::madvise(reinterpret_cast<void*>(lo), hi - lo, MADV_POPULATE_WRITE) == 0;
+  return adviseWholePages(p, bytes, 4096, MADV_POPULATE_WRITE);
 #else
   (void)p, (void)bytes;
   return false;

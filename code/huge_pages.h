@@ -20,7 +20,8 @@ void adviseHugePages(const void* p, std::size_t bytes);
 /// kernel refuses it (an older one), and nothing changes.
 bool populatePages(const void* p, std::size_t bytes);
 
-/// n copies of v in a vector whose storage was given the hint above before its first touch.
+/// n copies of v in a vector whose storage was given the 2 MB hint (adviseHugePages) before
+/// its first touch.
 template <class T>
 std::vector<T> hugeVector(std::size_t n, const T& v = T()) {
   std::vector<T> a;
