@@ -17,6 +17,7 @@
 #include <exception>
 #include <map>
 #include <memory>
+#include <new>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -24,6 +25,7 @@
 #include <vector>
 
 #include "fast_delaunay.h"
+#include "hilbert.h"
 #include "huge_pages.h"
 #include "parallel_for.h"
 #include "predicates.h"
@@ -87,36 +89,61 @@ struct RelaxedAccess {
 // compacted in place, becomes the output. Everything is allocated once: nothing reallocates
 // while an insertion (or a thread) holds a pointer into it. An entry of A is written before it
 // is read, except by a walk of the parallel kernel that follows a link another thread is
-// writing: so one thread leaves A as the allocator gives it, several threads zero it first (in
-// pieces, one thread a piece), so that a stale read is a half-edge, never garbage.
+// writing: so one thread leaves A as it finds it, several threads zero it first (in pieces, one
+// thread a piece), so that a stale read is a half-edge, never garbage. A's memory is allocated
+// before the sort, which borrows it (adjacencyMemory, below).
+
+/// Raw memory, no objects in it yet, freed by operator delete.
+struct FreeRaw {
+  void operator()(void* p) const { ::operator delete(p); }
+};
+using RawMemory = std::unique_ptr<void, FreeRaw>;
+
+/// The memory of the adjacency array A of `slots` triangles, allocated and mapped (in small
+/// pages, in one call: Store says why) before the sort of the n points, which borrows it
+/// (brioCoinOrderInto): a fresh process then maps 24 bytes per point fewer new pages than with
+/// the sort's own arrays, pages that the operating system must clear first.
+inline RawMemory adjacencyMemory(std::size_t slots, std::size_t n) {
+  const std::size_t bytes = std::max(3 * slots * sizeof(int), brioCoinScratchBytes(n));
+  RawMemory m(::operator new(bytes));
+  populatePages(m.get(), bytes);
+  return m;
+}
+
 //! [fastArrays]
 struct Store {
   const double* P = nullptr;
   int INF = 0;
   std::vector<Tri> V;   // V[t]: the vertices of triangle t, counter-clockwise
-  std::unique_ptr<int[]> A;  // A[3 t + k] = 3 t' + k' (flat: linking needs no division)
+  RawMemory memA;       // the memory of A (adjacencyMemory)
+  int* A = nullptr;     // A[3 t + k] = 3 t' + k' (flat: linking needs no division)
   std::atomic<int> count{0};  // slots handed out; a slot below it that is not a triangle holds
                               // {INF, INF, INF} (compaction drops it with the ghosts)
 //! [fastArrays]
 
-  /// Room for `slots` triangles; unused slots read as {INF, INF, INF}. threads > 1: A is zeroed.
-  /// The two arrays are mapped at once in small pages (populatePages), without the 2 MB pages
-  /// of the sort's arrays (hugeVector): the walks would gain a little from 2 MB pages, but a VM
-  /// that hands its freed 2 MB blocks back to the host (free page reporting, as on the machine
-  /// that measures this book) gives a fresh process those blocks cold, and mapping them again
-  /// cost up to 2.4 ms per MB there, over a quarter of the kernel's time at 10^6 points. Measured
-  /// in fresh processes at 10^6 points, alternated: 2 MB pages 0.25 to 0.36 s, these 0.26 to 0.28 s.
-  Store(const double* points, int n, std::size_t slots, int threads)
-      : P(points), INF(n), A(new int[3 * slots]) {
+  /// Room for `slots` triangles, A in `memory` (adjacencyMemory(slots, ...)); unused slots read
+  /// as {INF, INF, INF}. threads > 1: A is zeroed.
+  /// V is mapped at once in small pages (populatePages), as A, without the 2 MB pages of the
+  /// other arrays (hugeVector): the walks would gain a little from 2 MB pages, but a VM that
+  /// hands its freed 2 MB blocks back to the host (free page reporting, as on the machine that
+  /// measures this book) gives a fresh process those blocks cold, and mapping them again cost up
+  /// to 2.4 ms per MB there, over a quarter of the kernel's time at 10^6 points. Measured in
+  /// fresh processes at 10^6 points, alternated: 2 MB pages 0.25 to 0.36 s, these 0.26 to 0.28 s.
+  Store(const double* points, int n, std::size_t slots, int threads, RawMemory memory)
+      : P(points), INF(n), memA(std::move(memory)), A(::new (memA.get()) int[3 * slots]) {
     V.reserve(slots);
     populatePages(V.data(), slots * sizeof(Tri));
     V.assign(slots, Tri{n, n, n});
-    if (threads == 1)
-      populatePages(A.get(), 3 * slots * sizeof(int));
-    else  // zeroed by the threads in pieces: a stale read must see a half-edge (above)
+    if (threads > 1)  // zeroed by the threads in pieces: a stale read must see a half-edge (above)
       parallelFor(threads, 3 * slots, [&](int, std::size_t lo, std::size_t hi) {
-        std::fill(A.get() + lo, A.get() + hi, 0);
+        std::fill(A + lo, A + hi, 0);
       });
+  }
+
+  /// Frees A (the end of a run: only V is kept).
+  void freeAdjacency() {
+    A = nullptr;
+    memA.reset();
   }
 
   /// The first triangle a b c (counter-clockwise) and its three ghosts, in slots 0..3.
@@ -129,7 +156,7 @@ struct Store {
                            3 * 0 + 0, 3 * 3 + 2, 3 * 2 + 1,   // ghost b a
                            3 * 0 + 1, 3 * 1 + 2, 3 * 3 + 1,   // ghost c b
                            3 * 0 + 2, 3 * 2 + 2, 3 * 1 + 1};  // ghost a c
-    std::copy(links, links + 12, A.get());
+    std::copy(links, links + 12, A);
     count.store(4, std::memory_order_relaxed);
   }
 };
@@ -185,7 +212,7 @@ struct Locks {
 /// not interleaved with the other threads' (the cache lines would then travel between cores).
 class SlotBlocks {
  public:
-  static constexpr int kBlock = 512;  // slots per block: 24 KB of V, 36 KB of A
+  static constexpr int kBlock = 512;  // slots per block: 6 KB of V, 6 KB of A
   SlotBlocks(Store& S, int block) : S_(S), block_(block) {}
   /// Two fresh slots of this thread's block (a new block when it is used up).
   int take2() {
@@ -205,6 +232,13 @@ class SlotBlocks {
   const int block_;
   int next_ = 0, end_ = 0;
 };
+
+/// The triangle slots of a run on n points: the 2(n + 1) - 4 faces of DT(S) and its ghosts on
+/// the sphere, and two more; plus `blocks` blocks for the shared claims, whose threads each leave
+/// a last block of fresh slots partly used.
+inline std::size_t slotsFor(std::size_t n, int blocks = 0) {
+  return 2 * n + 2 + std::size_t(blocks) * SlotBlocks::kBlock;
+}
 
 class LockClaim {
  public:

@@ -19,10 +19,10 @@ using fast::PlainAccess;
 // One thread: the core with plain memory access and marks (fast_core.h).
 template <class Pred, bool kMap, bool kCentroid>
 void run(std::vector<double>& P, std::vector<int>& orig, FastResult& res, Pred pred,
-         const FastOptions& opt) {
+         const FastOptions& opt, fast::RawMemory memA) {
   const int n = int(orig.size());
   const fast::FirstTriangle f = fast::firstTriangle(P, n);
-  fast::Store S(P.data(), n, 2 * std::size_t(n) + 2, 1);  // 2(n+1) - 4 faces on the sphere
+  fast::Store S(P.data(), n, fast::slotsFor(std::size_t(n)), 1, std::move(memA));
   if (f.ccw)
     S.init(0, f.i1, f.i2);
   else
@@ -47,7 +47,7 @@ void run(std::vector<double>& P, std::vector<int>& orig, FastResult& res, Pred p
   });
   // Only the vertices of the triangles are kept: they become the output.
   claim.freeMarks();
-  S.A.reset();
+  S.freeAdjacency();
   fast::finish(S.V, std::size_t(S.count.load()), n, P, orig, dups, opt.insertionNumbering, 1,
                res);
 }
@@ -69,19 +69,23 @@ FastResult fastDelaunay(const std::vector<double>& xy, const FastOptions& opt) {
   const std::size_t n = xy.size() / 2;
   FastResult res;
   const auto t0 = std::chrono::steady_clock::now();
+  fast::RawMemory memA;  // the adjacency array's memory, which the default order's sort borrows
   std::vector<int> orig;  // orig[i]: input number of the i-th point inserted
+  orig.reserve(n);
+  adviseHugePages(orig.data(), n * sizeof(int));
   if (opt.order == FastOrder::Input) {
-    orig.resize(n);
-    for (std::size_t i = 0; i < n; ++i) orig[i] = int(i);
-  } else {  // hilbert.h: one Hilbert sort for the whole library
+    for (std::size_t i = 0; i < n; ++i) orig.push_back(int(i));
+  } else if (opt.order == FastOrder::RadixBrio) {  // hilbert.h: one sort for the whole library
+    memA = fast::adjacencyMemory(fast::slotsFor(n), n);
+    const std::size_t* o =
+        brioCoinOrderInto(xy, opt.seed, std::max(1, std::min(opt.rounds, 32)), memA.get());
+    orig.assign(o, o + n);
+  } else {
     const std::vector<std::size_t> o =
-        opt.order == FastOrder::RadixBrio
-            ? brioCoinOrder(xy, opt.seed, std::max(1, std::min(opt.rounds, 32)))
-            : (opt.order == FastOrder::Brio ? brioOrder(xy, opt.seed) : hilbertOrder(xy));
-    orig.reserve(n);
-    adviseHugePages(orig.data(), n * sizeof(int));
+        opt.order == FastOrder::Brio ? brioOrder(xy, opt.seed) : hilbertOrder(xy);
     orig.assign(o.begin(), o.end());
   }
+  if (!memA) memA = fast::adjacencyMemory(fast::slotsFor(n), n);
   std::vector<double> P = fast::pointsInOrder(xy, orig, 1);
   const auto t1 = std::chrono::steady_clock::now();
   res.stats.sortSeconds = std::chrono::duration<double>(t1 - t0).count();
@@ -89,15 +93,16 @@ FastResult fastDelaunay(const std::vector<double>& xy, const FastOptions& opt) {
     const PredicateCounters before = predicateCounters();
     const fast::CalledPredicates pred;
     if (opt.ladderMapAdjacency)
-      run<fast::CalledPredicates, true, true>(P, orig, res, pred, opt);
+      run<fast::CalledPredicates, true, true>(P, orig, res, pred, opt, std::move(memA));
     else if (opt.ladderCentroidWalk)
-      run<fast::CalledPredicates, false, true>(P, orig, res, pred, opt);
+      run<fast::CalledPredicates, false, true>(P, orig, res, pred, opt, std::move(memA));
     else
-      run<fast::CalledPredicates, false, false>(P, orig, res, pred, opt);
+      run<fast::CalledPredicates, false, false>(P, orig, res, pred, opt, std::move(memA));
     res.stats.orient = predicateCounters().orient - before.orient;
     res.stats.incircle = predicateCounters().incircle - before.incircle;
   } else {
-    run<fast::InlinePredicates, false, false>(P, orig, res, fast::InlinePredicates{&res.stats}, opt);
+    run<fast::InlinePredicates, false, false>(P, orig, res, fast::InlinePredicates{&res.stats}, opt,
+                                              std::move(memA));
   }
   res.stats.insertSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
   return res;

@@ -133,15 +133,14 @@ template <class Policy>
 void insertRounds(const std::vector<double>& xy, std::vector<double>& P, std::vector<int>& orig,
                   const std::vector<int>& roundStart, int rounds, int threads,
                   const FastOptions& opt, int minPiece, ParallelStats& ps, FastResult& res,
-                  std::chrono::steady_clock::time_point t0) {
+                  std::chrono::steady_clock::time_point t0, fast::RawMemory memA) {
   const std::size_t n = xy.size() / 2;
   std::vector<Worker> W(static_cast<std::size_t>(threads));
   const int N = int(n);
   const fast::FirstTriangle f = fast::firstTriangle(P, N);
   const int i1 = f.i1, i2 = f.i2;
-  // Room for the 2n + 2 triangles and each thread's last, partly used block of slots.
-  const std::size_t slots = 2 * n + 2 + std::size_t(threads) * Policy::Claim::kBlock;
-  fast::Store S(P.data(), N, slots, threads);
+  const std::size_t slots = fast::slotsFor(n, threads);
+  fast::Store S(P.data(), N, slots, threads, std::move(memA));
   if (f.ccw)
     S.init(0, i1, i2);
   else
@@ -228,7 +227,7 @@ void insertRounds(const std::vector<double>& xy, std::vector<double>& P, std::ve
   ins.clear();
   claims.clear();
   policy.release();
-  S.A.reset();
+  S.freeAdjacency();
   const auto tf = std::chrono::steady_clock::now();
   fast::finish(S.V, std::size_t(S.count.load()), N, P, orig, dups, opt.insertionNumbering,
                threads, res);
@@ -253,10 +252,13 @@ FastResult runShared(const std::vector<double>& xy, int threads, const FastOptio
   FastResult res;
   const auto t0 = std::chrono::steady_clock::now();
   const int rounds = std::max(1, std::min(opt.rounds, 32));
+  const std::size_t n = xy.size() / 2;
+  // The adjacency array's memory first: the sort borrows it.
+  fast::RawMemory memA = fast::adjacencyMemory(fast::slotsFor(n, threads), n);
   std::vector<int> orig;
   {
-    const std::vector<std::size_t> o = brioCoinOrder(xy, opt.seed, rounds, true, threads);
-    orig.assign(o.begin(), o.end());
+    const std::size_t* o = brioCoinOrderInto(xy, opt.seed, rounds, memA.get(), true, threads);
+    orig.assign(o, o + n);
   }
   std::vector<double> P = fast::pointsInOrder(xy, orig, threads);
   // Where each round starts in the order: the order is sorted by round first, so the rounds
@@ -272,9 +274,11 @@ FastResult runShared(const std::vector<double>& xy, int threads, const FastOptio
   res.stats.sortSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
   if (claim == ParallelClaim::Locks)
-    insertRounds<LockPolicy>(xy, P, orig, roundStart, rounds, threads, opt, minPiece, ps, res, t0);
+    insertRounds<LockPolicy>(xy, P, orig, roundStart, rounds, threads, opt, minPiece, ps, res, t0,
+                             std::move(memA));
   else
-    insertRounds<SlabPolicy>(xy, P, orig, roundStart, rounds, threads, opt, minPiece, ps, res, t0);
+    insertRounds<SlabPolicy>(xy, P, orig, roundStart, rounds, threads, opt, minPiece, ps, res, t0,
+                             std::move(memA));
   if (pstats) *pstats = ps;
   return res;
 }

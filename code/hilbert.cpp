@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <new>
 #include <numeric>
 #include <stdexcept>
 #include <string>
@@ -298,26 +299,34 @@ int bitsFor(std::size_t n) {  // smallest b with n <= 2^b
   return b;
 }
 
-// Stable least-significant-digit radix sort of the words a on their bits [lo, hi). Each pass
-// keeps the order of equal digits, so words equal on [lo, hi) keep their input order.
-void radixSort(std::vector<std::uint64_t>& a, int lo, int hi) {
-  if (hi <= lo || a.size() < 2) return;
+// Stable least-significant-digit radix sort of the n words a on their bits [lo, hi), with b
+// (n words) as the other buffer of the passes. Each pass keeps the order of equal digits, so
+// words equal on [lo, hi) keep their input order. Returns the buffer, a or b, that holds the
+// sorted words.
+std::uint64_t* radixSort(std::uint64_t* a, std::uint64_t* b, std::size_t n, int lo, int hi) {
+  if (hi <= lo || n < 2) return a;
   const int passes = (hi - lo + 12) / 13;  // digits of at most 13 bits: 8192 counters fit L2
   const int digit = (hi - lo + passes - 1) / passes;
   const std::uint64_t mask = (std::uint64_t{1} << digit) - 1;
   std::vector<std::uint32_t> count(std::size_t(passes) << digit, 0);
-  for (std::uint64_t v : a)  // the histograms of all the passes in one sweep
+  for (std::size_t k = 0; k < n; ++k)  // the histograms of all the passes in one sweep
     for (int q = 0; q < passes; ++q)
-      ++count[(std::size_t(q) << digit) + ((v >> (lo + digit * q)) & mask)];
-  std::vector<std::uint64_t> b = hugeVector<std::uint64_t>(a.size());
+      ++count[(std::size_t(q) << digit) + ((a[k] >> (lo + digit * q)) & mask)];
   for (int q = 0; q < passes; ++q) {
     std::uint32_t* c = &count[std::size_t(q) << digit];
     std::uint32_t sum = 0;
     for (std::size_t d = 0; d <= mask; ++d) sum += std::exchange(c[d], sum);
     const int sh = lo + digit * q;
-    for (std::uint64_t v : a) b[c[(v >> sh) & mask]++] = v;
-    a.swap(b);
+    for (std::size_t k = 0; k < n; ++k) b[c[(a[k] >> sh) & mask]++] = a[k];
+    std::swap(a, b);
   }
+  return a;
+}
+
+// radixSort of a whole vector, with a buffer of its own.
+void radixSort(std::vector<std::uint64_t>& a, int lo, int hi) {
+  std::vector<std::uint64_t> b = hugeVector<std::uint64_t>(a.size());
+  if (radixSort(a.data(), b.data(), a.size(), lo, hi) != a.data()) a.swap(b);
 }
 
 //! [adaptiveHilbert]
@@ -456,17 +465,17 @@ std::vector<std::size_t> sortByGroupKeyIndex(const std::vector<double>& xy, int 
 // then element of digit d from chunk t goes after all the smaller digits and after digit d of
 // the chunks before t, in chunk order: the pass is stable, as the sequential one, so the result
 // is the same array.
-void radixSortParallel(std::vector<std::uint64_t>& a, int lo, int hi, int threads) {
-  if (hi <= lo || a.size() < 2) return;
+std::uint64_t* radixSortParallel(std::uint64_t* a, std::uint64_t* b, std::size_t n, int lo,
+                                 int hi, int threads) {
+  if (hi <= lo || n < 2) return a;
   const int passes = (hi - lo + 12) / 13;
   const int digit = (hi - lo + passes - 1) / passes;
   const std::size_t radix = std::size_t{1} << digit, mask = radix - 1;
   const std::size_t T = std::size_t(threads);
   std::vector<std::uint32_t> count(T * radix);  // count[t radix + d]: digit d in chunk t
-  std::vector<std::uint64_t> b = hugeVector<std::uint64_t>(a.size());
   for (int q = 0; q < passes; ++q) {
     const int sh = lo + digit * q;
-    parallelFor(threads, a.size(), [&](int t, std::size_t from, std::size_t to) {
+    parallelFor(threads, n, [&](int t, std::size_t from, std::size_t to) {
       std::uint32_t* c = &count[std::size_t(t) * radix];
       std::fill(c, c + radix, 0u);
       for (std::size_t k = from; k < to; ++k) ++c[(a[k] >> sh) & mask];
@@ -474,12 +483,13 @@ void radixSortParallel(std::vector<std::uint64_t>& a, int lo, int hi, int thread
     std::uint32_t sum = 0;  // the chunks' starts, digit by digit, chunk by chunk
     for (std::size_t d = 0; d < radix; ++d)
       for (std::size_t t = 0; t < T; ++t) sum += std::exchange(count[t * radix + d], sum);
-    parallelFor(threads, a.size(), [&](int t, std::size_t from, std::size_t to) {
+    parallelFor(threads, n, [&](int t, std::size_t from, std::size_t to) {
       std::uint32_t* c = &count[std::size_t(t) * radix];
       for (std::size_t k = from; k < to; ++k) b[c[(a[k] >> sh) & mask]++] = a[k];
     });
-    a.swap(b);
+    std::swap(a, b);
   }
+  return a;
 }
 
 // The twin of sortByGroupKeyIndex's packed path that computes the groups itself (groupOf(k),
@@ -491,19 +501,17 @@ void radixSortParallel(std::vector<std::uint64_t>& a, int lo, int hi, int thread
 // one's passes (radixSortParallel), and the refinement is cut only between runs of equal
 // (group, key), each run refined as before. So the order is the sequential one, bit for bit
 // (the fast kernel's tests compare them), whatever the number of threads.
+// The n positions go to order, the words to w, and b is the radix sort's other buffer (n of
+// each): the caller's memory (brioCoinOrder's own, or the fast kernel's, brioCoinOrderInto).
 template <class GroupOf>
-std::vector<std::size_t> sortByGroupKeyIndexThreads(const std::vector<double>& xy, int depth,
-                                                     GroupOf groupOf, int groupBits,
-                                                     bool adaptive, int threads) {
+void sortByGroupKeyIndexThreads(const std::vector<double>& xy, int depth, GroupOf groupOf,
+                                int groupBits, bool adaptive, int threads, std::size_t* order,
+                                std::uint64_t* w, std::uint64_t* b) {
   const std::size_t n = xy.size() / 2;
   const int idxBits = bitsFor(n);
   depth = std::max(1, std::min(depth, (64 - groupBits - idxBits) / 2));
   const int keyBits = 2 * depth;
   const BoxCells cells(hilbertBox(xy), depth);
-  // (The order first, then the words: in the other order glibc's heap left 6 MB more resident
-  // at the command line's peak, at 10^6 points.)
-  std::vector<std::size_t> order = hugeVector<std::size_t>(n);
-  std::vector<std::uint64_t> w = hugeVector<std::uint64_t>(n);
   parallelFor(threads, n, [&](int, std::size_t lo, std::size_t hi) {
     for (std::size_t k = lo; k < hi; ++k) {
       int s = 0;
@@ -512,16 +520,15 @@ std::vector<std::size_t> sortByGroupKeyIndexThreads(const std::vector<double>& x
     }
   });
   // The words are in index order and the sort is stable: the index bits need no pass.
-  if (threads > 1)
-    radixSortParallel(w, idxBits, idxBits + keyBits + groupBits, threads);
-  else  // the same passes, their histograms counted in one sweep
-    radixSort(w, idxBits, idxBits + keyBits + groupBits);
+  w = threads > 1 ? radixSortParallel(w, b, n, idxBits, idxBits + keyBits + groupBits, threads)
+                  : radixSort(w, b, n, idxBits, idxBits + keyBits + groupBits);  // (the same
+                    // passes, their histograms counted in one sweep)
   const std::uint64_t idxMask = (std::uint64_t{1} << idxBits) - 1;
   parallelFor(threads, n, [&](int, std::size_t lo, std::size_t hi) {
     for (std::size_t k = lo; k < hi; ++k) order[k] = std::size_t(w[k] & idxMask);
   });
-  if (!adaptive) return order;
-  auto same = [&](std::size_t a, std::size_t b) { return (w[a] >> idxBits) == (w[b] >> idxBits); };
+  if (!adaptive) return;
+  auto same = [&](std::size_t a, std::size_t c) { return (w[a] >> idxBits) == (w[c] >> idxBits); };
   std::vector<std::size_t> cut(std::size_t(threads) + 1, n);  // piece t: [cut[t], cut[t + 1])
   for (int t = 0; t < threads; ++t) {
     std::size_t c = std::max(t ? cut[std::size_t(t) - 1] : 0, n * std::size_t(t) / std::size_t(threads));
@@ -530,10 +537,9 @@ std::vector<std::size_t> sortByGroupKeyIndexThreads(const std::vector<double>& x
   }
   parallelFor(threads, std::size_t(threads), [&](int t, std::size_t, std::size_t) {
     const std::size_t from = cut[std::size_t(t)], len = cut[std::size_t(t) + 1] - from;
-    refineSorted(xy, cells, order.data() + from, len,
-                 [&](std::size_t a, std::size_t b) { return same(from + a, from + b); });
+    refineSorted(xy, cells, order + from, len,
+                 [&](std::size_t a, std::size_t c) { return same(from + a, from + c); });
   });
-  return order;
 }
 
 // splitmix64: a small, fully specified generator, so BRIO orders are the same everywhere.
@@ -612,8 +618,11 @@ int brioCoinRound(std::size_t i, std::uint64_t seed, int rounds) {
   return rounds - 1 - z;
 }
 
-std::vector<std::size_t> brioCoinOrder(const std::vector<double>& xy, std::uint64_t seed,
-                                       int rounds, bool adaptive, int threads) {
+namespace {
+
+// brioCoinOrder's checks, then its sort into the caller's memory.
+void brioCoinSort(const std::vector<double>& xy, std::uint64_t seed, int rounds, bool adaptive,
+                  int threads, std::size_t* order, std::uint64_t* w, std::uint64_t* b) {
   if (xy.size() % 2 != 0) throw std::invalid_argument("hilbertBox: odd number of coordinates");
   if (rounds < 1 || rounds > 32) throw std::invalid_argument("brioCoinOrder: rounds out of 1..32");
   const std::size_t n = xy.size() / 2;
@@ -622,9 +631,39 @@ std::vector<std::size_t> brioCoinOrder(const std::vector<double>& xy, std::uint6
   // more than an address space holds.
   if (groupBits + 2 + bitsFor(n) > 64)
     throw std::length_error("brioCoinOrder: more than 2^57 points");
-  return sortByGroupKeyIndexThreads(
+  sortByGroupKeyIndexThreads(
       xy, brioCoinDepth(n), [&](std::size_t i) { return brioCoinRound(i, seed, rounds); },
-      groupBits, adaptive, std::max(1, threads));
+      groupBits, adaptive, std::max(1, threads), order, w, b);
+}
+
+}  // namespace
+
+std::vector<std::size_t> brioCoinOrder(const std::vector<double>& xy, std::uint64_t seed,
+                                       int rounds, bool adaptive, int threads) {
+  const std::size_t n = xy.size() / 2;
+  // (The order first, then the words: in the other order glibc's heap left 6 MB more resident
+  // at the command line's peak, at 10^6 points.)
+  std::vector<std::size_t> order = hugeVector<std::size_t>(n);
+  std::vector<std::uint64_t> w = hugeVector<std::uint64_t>(n), b = hugeVector<std::uint64_t>(n);
+  brioCoinSort(xy, seed, rounds, adaptive, threads, order.data(), w.data(), b.data());
+  return order;
+}
+
+std::size_t brioCoinScratchBytes(std::size_t n) {
+  return n * (sizeof(std::size_t) + 2 * sizeof(std::uint64_t)) + sizeof(std::uint64_t);
+}
+
+const std::size_t* brioCoinOrderInto(const std::vector<double>& xy, std::uint64_t seed,
+                                     int rounds, void* scratch, bool adaptive, int threads) {
+  const std::size_t n = xy.size() / 2;
+  // Three arrays of trivial types begin their lifetimes in the lent memory (no initialisation):
+  // the order at its start, then the words, aligned.
+  std::size_t* order = ::new (scratch) std::size_t[n];
+  const std::uintptr_t end = reinterpret_cast<std::uintptr_t>(order + n);
+  const std::uintptr_t wAt = (end + alignof(std::uint64_t) - 1) & ~std::uintptr_t(alignof(std::uint64_t) - 1);
+  std::uint64_t* w = ::new (reinterpret_cast<void*>(wAt)) std::uint64_t[2 * n];
+  brioCoinSort(xy, seed, rounds, adaptive, threads, order, w, w + n);
+  return order;
 }
 
 }  // namespace dt

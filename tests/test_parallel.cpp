@@ -96,7 +96,8 @@ TEST_CASE("parallel the sort with several threads gives the sequential order") {
   // The parallel kernel's sort must be the sequential one, point for point: random, clustered
   // (long refined runs, which the pieces must not cut), outliers, and every degenerate family
   // (equal keys, equal points, flat boxes). Odd thread counts give uneven pieces and three
-  // runs to merge.
+  // runs to merge. The same in memory the kernels lend (brioCoinOrderInto): the order there,
+  // and nothing written past the bytes brioCoinScratchBytes promises.
   std::vector<std::pair<std::string, dttest::XY>> inputs = {
       {"uniform", dttest::uniformPoints(100000, 3)},
       {"clusters", dt::gaussianClusters(60000, 5, 3)},
@@ -115,6 +116,16 @@ TEST_CASE("parallel the sort with several threads gives the sequential order") {
         for (int threads : {2, 3, 4}) {
           CAPTURE(threads);
           CHECK(dt::brioCoinOrder(in.second, 1, rounds, adaptive, threads) == seq);
+        }
+        for (int threads : {1, 2}) {
+          CAPTURE(threads);
+          const std::size_t n = seq.size(), bytes = dt::brioCoinScratchBytes(n), guard = 64;
+          std::vector<std::uint64_t> lent((bytes + guard) / 8 + 1, 0x5a5a5a5a5a5a5a5aULL);
+          const std::size_t* o =
+              dt::brioCoinOrderInto(in.second, 1, rounds, lent.data(), adaptive, threads);
+          CHECK(std::vector<std::size_t>(o, o + n) == seq);
+          const unsigned char* end = reinterpret_cast<const unsigned char*>(lent.data()) + bytes;
+          CHECK(std::count(end, end + guard, 0x5a) == long(guard));
         }
       }
 }
