@@ -85,6 +85,14 @@ if [ $mode = selftest ]; then
     { echo "mutants self-test: a comment-only change was not reported SURVIVED"; ok=0; }
   grep -q '^INVALID   selftest-stale' "$log" || { echo "mutants self-test: the stale mutant was not INVALID"; ok=0; }
   [ "$status" = 1 ] || { echo "mutants self-test: exit status $status, not 1"; ok=0; }
+  # 4. Test options that select no test case are refused (exit 2), not run into SURVIVED.
+  status=0
+  MUTANTS_CMAKE_ARGS=${MUTANTS_CMAKE_ARGS:--DDT_TEST_FILES=test_2_3_6_flips.cpp} \
+    MUTANTS_TARGETS=${MUTANTS_TARGETS:-dt_tests} MUTANTS_TEST_ARGS='-tc=no?such?test?case' \
+    bash "$0" --list "$planted" selftest-real >"$log" 2>&1 || status=$?
+  if [ "$status" != 2 ] || ! grep -q 'select no test case' "$log"; then
+    cat "$log"; echo "mutants self-test: a selection of no test case was not refused (exit $status)"; ok=0
+  fi
   [ $ok = 1 ] && echo "mutants self-test: passed"
   [ $ok = 1 ]
   exit
@@ -208,6 +216,12 @@ run_tests() {
 }
 build_tests || { echo "mutants: the unmutated code does not build"; tail -30 "$work/build.log"; exit 2; }
 run_tests || { echo "mutants: the unmutated suite fails; fix it first"; tail -30 "$work/test.log"; exit 2; }
+# A selection that runs no test case passes whatever the code does: every mutant would be
+# reported SURVIVED (doctest splits -tc on commas only, so '-tc=a b' selects "a", and "b" is
+# ignored). Refused, as is a suite that fails.
+grep -Eq 'test cases: *[1-9]' "$work/test.log" ||
+  { echo "mutants: the test options (${test_args:-none}) select no test case; every mutant would survive"
+    exit 2; }
 
 killed=0 survived=0 invalid=0
 declare -a survivors=() invalids=()
