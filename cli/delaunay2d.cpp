@@ -37,7 +37,8 @@ const char* kUsage =
     "                 standard input (a .node file if its first line has 4 fields)\n"
     "  -o OUT         write OUT.ele (OUT may also end in .ele); '-o -' writes the .ele to\n"
     "                 standard output\n"
-    "  --stats        print points, triangles, triangulation_seconds, mean walk steps,\n"
+    "  --stats        print points, triangles, triangulation_seconds (and of it the\n"
+    "                 system's time, triangulation_system_seconds), mean walk steps,\n"
     "                 mean cavity size and peak memory, one per line, on stdout (on stderr\n"
     "                 when an output goes to stdout)\n"
     "  --svg FILE     also write an SVG drawing of the mesh ('-': standard output)\n"
@@ -452,6 +453,8 @@ int main(int argc, char** argv) {
       std::FILE* so = opt.statsOnStderr ? stderr : stdout;
       std::fprintf(so, "points: %zu\ntriangles: %zu\ntriangulation_seconds: %.6f\n", n, tri.size(),
                    r.seconds);
+      if (r.systemSeconds >= 0)
+        std::fprintf(so, "triangulation_system_seconds: %.6f\n", r.systemSeconds);
       const double ins = r.insertions ? double(r.insertions) : 1.0;
       std::fprintf(so, "duplicates: %zu\nmean_walk_steps: %.4f\nmean_cavity_size: %.4f\n", nDup,
                    double(r.walkSteps) / ins, double(r.cavityFaces) / ins);

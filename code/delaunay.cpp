@@ -12,12 +12,34 @@
 #include "hilbert.h"
 #include "triangulate.h"
 
+#if defined(__unix__) && !defined(__EMSCRIPTEN__)
+#include <sys/resource.h>
+#define DT_HAVE_GETRUSAGE 1
+#endif
+
 namespace dt {
 
 namespace {
 
 double since(std::chrono::steady_clock::time_point t) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+// The CPU time the operating system has spent for this process so far (ru_stime), in seconds;
+// -1 where it is not known (WebAssembly).
+double systemSeconds() {
+#ifdef DT_HAVE_GETRUSAGE
+  struct rusage ru;
+  if (getrusage(RUSAGE_SELF, &ru) == 0)
+    return double(ru.ru_stime.tv_sec) + 1e-6 * double(ru.ru_stime.tv_usec);
+#endif
+  return -1;
+}
+
+// The system's CPU time since systemSeconds() gave s0 (-1 where it is not known).
+double systemSince(double s0) {
+  const double s1 = systemSeconds();
+  return s0 < 0 || s1 < 0 ? -1 : s1 - s0;
 }
 
 // The fast kernel: it orders the points itself, finds the duplicates as it meets them (no sort
@@ -36,9 +58,11 @@ void fastKernel(std::vector<double>& xy, const TriangulateOptions& opt, Triangul
   fo.progressEvery = 1024;
   if (opt.phase) opt.phase("triangulating " + std::to_string(n) + " points (fast kernel)", n);
   const auto t0 = std::chrono::steady_clock::now();
+  const double sys0 = systemSeconds();
   FastResult fr =
       fastDelaunayParallel(xy, fo.order == FastOrder::RadixBrio ? opt.threads : 1, fo);
   r.seconds = since(t0);
+  r.systemSeconds = systemSince(sys0);
   std::vector<double>().swap(xy);  // fr.points holds them, in insertion order
   r.tri = std::move(fr.tri);
   r.xy = std::move(fr.points);
@@ -105,6 +129,7 @@ void listingsKernel(const std::vector<double>& xy, const TriangulateOptions& opt
   for (std::size_t i = 0; i < n; ++i)
     if (keep[i]) S.push_back(T.addVertex(xy[2 * i], xy[2 * i + 1], long(i)));
   const auto t0 = std::chrono::steady_clock::now();
+  const double sys0 = systemSeconds();
   if (opt.order != InsertionOrder::Input && S.size() > 1) {
     // 2.3.5: with the walk started in the previous cavity, a Hilbert (or BRIO) order keeps the
     // walks short; in file order they can grow like sqrt(n). Timed with the insertions. BRIO is
@@ -162,6 +187,7 @@ void listingsKernel(const std::vector<double>& xy, const TriangulateOptions& opt
     insertInChunks(T, S, k, st, opt);
   }
   r.seconds = since(t0);
+  r.systemSeconds = systemSince(sys0);
   r.insertions = st.insertions;
   r.walkSteps = st.searchSteps;
   r.cavityFaces = st.cavityFaces;

@@ -70,6 +70,9 @@ struct TriangulateResult {
   std::uint64_t cavityFaces = 0;  ///< triangles of the cavities, summed
   std::uint64_t recoveryFlips = 0;  ///< Super: the flips that recovered DT(S)
   double seconds = 0;  ///< points in memory to DT(S), the order's sort included (no check)
+  /// Of `seconds`, the CPU time of the operating system for this process (in a fresh process
+  /// mostly the mapping of new memory: page faults, pages cleared); -1 where it is not known.
+  double systemSeconds = -1;
   bool checked = false;  ///< checkDelaunay passed (options.check)
 };
 

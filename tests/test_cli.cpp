@@ -50,6 +50,14 @@ void runAndValidate(const std::string& name, const XY& p, int first = 1) {
   CHECK(r.out.find("points: " + std::to_string(p.size() / 2)) != std::string::npos);
   CHECK(r.out.find("triangles: " + std::to_string(tri.size())) != std::string::npos);
   CHECK(r.out.find("triangulation_seconds: ") != std::string::npos);
+  // Of that time, the system's part: a share of it (getrusage may count a whole clock tick to
+  // the system, hence the slack).
+  const std::size_t at = r.out.find("triangulation_system_seconds: ");
+  REQUIRE(at != std::string::npos);
+  const double sys = std::stod(r.out.substr(at + 30));
+  const double all = std::stod(r.out.substr(r.out.find("triangulation_seconds: ") + 23));
+  CHECK(sys >= 0);
+  CHECK(sys <= all + 0.05);
 }
 
 }  // namespace
