@@ -19,14 +19,6 @@
 
 namespace dt {
 
-namespace {
-
-double since(std::chrono::steady_clock::time_point t) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-}
-
-// The CPU time the operating system has spent for this process so far (ru_stime), in seconds;
-// -1 where it is not known (WebAssembly).
 double systemSeconds() {
 #ifdef DT_HAVE_GETRUSAGE
   struct rusage ru;
@@ -34,6 +26,12 @@ double systemSeconds() {
     return double(ru.ru_stime.tv_sec) + 1e-6 * double(ru.ru_stime.tv_usec);
 #endif
   return -1;
+}
+
+namespace {
+
+double since(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 }
 
 // The system's CPU time since systemSeconds() gave s0 (-1 where it is not known).

@@ -90,6 +90,11 @@ struct UnsupportedInput : std::runtime_error {
 /// std::logic_error if the check fails (a bug).
 TriangulateResult triangulate(std::vector<double> xy, const TriangulateOptions& options = {});
 
+/// The CPU time the operating system has spent for this process so far (ru_stime of getrusage),
+/// in seconds; -1 where it is not known (WebAssembly). TriangulateResult::systemSeconds is a
+/// difference of two readings.
+double systemSeconds();
+
 /// The option words of the command line: "hull"/"super", "brio"/"hilbert"/"input",
 /// "fast"/"listings". Throws std::invalid_argument on any other word.
 BuildMethod methodNamed(const std::string& word);

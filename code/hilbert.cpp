@@ -325,6 +325,7 @@ std::uint64_t* radixSort(std::uint64_t* a, std::uint64_t* b, std::size_t n, int 
 
 // radixSort of a whole vector, with a buffer of its own.
 void radixSort(std::vector<std::uint64_t>& a, int lo, int hi) {
+  if (hi <= lo || a.size() < 2) return;
   std::vector<std::uint64_t> b = hugeVector<std::uint64_t>(a.size());
   if (radixSort(a.data(), b.data(), a.size(), lo, hi) != a.data()) a.swap(b);
 }

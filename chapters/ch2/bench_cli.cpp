@@ -28,6 +28,7 @@
 #include <vector>
 
 #include "common.h"
+#include "delaunay.h"
 #include "generators.h"
 
 #ifdef DT_HAVE_CGAL
@@ -36,13 +37,6 @@
 #endif
 
 namespace {
-
-// The CPU time the operating system has spent for this process so far (ru_stime), in seconds.
-double systemSeconds() {
-  struct rusage ru;
-  getrusage(RUSAGE_SELF, &ru);
-  return double(ru.ru_stime.tv_sec) + 1e-6 * double(ru.ru_stime.tv_usec);
-}
 
 #ifdef DT_HAVE_CGAL
 // The CGAL reference, run as `bench_cli --cgal-read FILE`: the .node file read with iostreams
@@ -62,12 +56,12 @@ int cgalReadAndTriangulate(const char* path) {
     pts.emplace_back(x, y);
   }
   CGAL::Delaunay_triangulation_2<K> dt;
-  const double sys0 = systemSeconds();
+  const double sys0 = dt::systemSeconds();
   const auto t0 = std::chrono::steady_clock::now();
   dt.insert(pts.begin(), pts.end());
   const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::printf("%zu faces\ninsert_seconds: %.6f\ninsert_system_seconds: %.6f\n",
-              std::size_t(dt.number_of_faces()), s, systemSeconds() - sys0);
+              std::size_t(dt.number_of_faces()), s, dt::systemSeconds() - sys0);
   return 0;
 }
 #endif
