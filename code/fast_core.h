@@ -102,11 +102,12 @@ using RawMemory = std::unique_ptr<void, FreeRaw>;
 /// The memory of the adjacency array A of `slots` triangles, allocated and mapped (in small
 /// pages, in one call: Store says why) before the sort of the n points, which borrows it
 /// (brioCoinOrderInto): a fresh process then maps 24 bytes per point fewer new pages than with
-/// the sort's own arrays, pages that the operating system must clear first.
-inline RawMemory adjacencyMemory(std::size_t slots, std::size_t n) {
+/// the sort's own arrays, pages that the operating system must clear first. With `threads`
+/// threads, the threads map a piece each.
+inline RawMemory adjacencyMemory(std::size_t slots, std::size_t n, int threads = 1) {
   const std::size_t bytes = std::max(3 * slots * sizeof(int), brioCoinScratchBytes(n));
   RawMemory m(::operator new(bytes));
-  populatePages(m.get(), bytes);
+  populatePages(m.get(), bytes, threads);
   return m;
 }
 
@@ -122,7 +123,7 @@ struct Store {
 //! [fastArrays]
 
   /// Room for `slots` triangles, A in `memory` (adjacencyMemory(slots, ...)); unused slots read
-  /// as {INF, INF, INF}. threads > 1: A is zeroed.
+  /// as {INF, INF, INF}. threads > 1: A is zeroed, and the threads map V's pages a piece each.
   /// V is mapped at once in small pages (populatePages), as A, without the 2 MB pages of the
   /// other arrays (hugeVector): the walks would gain a little from 2 MB pages, but a VM that
   /// hands its freed 2 MB blocks back to the host (free page reporting, as on the machine that
@@ -132,7 +133,7 @@ struct Store {
   Store(const double* points, int n, std::size_t slots, int threads, RawMemory memory)
       : P(points), INF(n), memA(std::move(memory)), A(::new (memA.get()) int[3 * slots]) {
     V.reserve(slots);
-    populatePages(V.data(), slots * sizeof(Tri));
+    populatePages(V.data(), slots * sizeof(Tri), threads);
     V.assign(slots, Tri{n, n, n});
     if (threads > 1)  // zeroed by the threads in pieces: a stale read must see a half-edge (above)
       parallelFor(threads, 3 * slots, [&](int, std::size_t lo, std::size_t hi) {
@@ -162,16 +163,22 @@ struct Store {
 };
 
 // ---------------------------------------------------------------------------------------------
-// Claim policies. Both answer, for a neighbour n met by the cavity search, whether it is in the
-// cavity already (kInCavity), already tested and left out by this insertion (kHeld), or new.
+// Claim policies. Each answers, for a neighbour n met by the cavity search, whether it is in the
+// cavity already (kInCavity), already tested and left out by this insertion (kHeld), or new; and
+// takes a triangle for the insertion, or refuses it (another thread's). kLockFirst: the claim
+// must hold a triangle before the insertion reads it (lock(t), a try-lock); otherwise the
+// claim decides from the triangle's vertices, read first (takes(v)). Once taken, a triangle is
+// written by this thread only, until the insertion ends: the inserter reads it (its vertices,
+// its links) with plain loads (Inserter::own).
 
 /// One thread: a mark per triangle. Claims cannot fail; marks are cleared after the fill.
 class MarkClaim {
  public:
   static constexpr bool kShared = false;
+  static constexpr bool kLockFirst = false;
   enum State { kNew, kInCavity, kHeld };
   explicit MarkClaim(Store& S) : S_(S), mark_(S.V.size(), 0) {}
-  bool lock(int) { return true; }
+  bool takes(const int (&)[3]) const { return true; }
   State state(int n) const { return mark_[std::size_t(n)] ? kInCavity : kNew; }
   void enterCavity(int n) { mark_[std::size_t(n)] = 1; }
   void releaseAll(const std::vector<int>& cav) {
@@ -243,6 +250,7 @@ inline std::size_t slotsFor(std::size_t n, int blocks = 0) {
 class LockClaim {
  public:
   static constexpr bool kShared = true;
+  static constexpr bool kLockFirst = true;
   static constexpr int kBlock = SlotBlocks::kBlock;
   enum State { kNew, kInCavity, kHeld };
   LockClaim(Store& S, Locks& L, int id, int block = kBlock)
@@ -297,15 +305,17 @@ class LockClaim {
 class SlabClaim : public MarkClaim {
  public:
   static constexpr bool kShared = true;
+  static constexpr bool kLockFirst = false;
   static constexpr int kBlock = SlotBlocks::kBlock;
   explicit SlabClaim(Store& S, int block = kBlock) : MarkClaim(S), blocks_(S, block) {}
   void setSlab(double lo, double hi) { lo_ = lo, hi_ = hi, alone_ = false; }
   void setAlone() { alone_ = true; }
-  bool lock(int t) {
-    if (alone_) return true;
-    const Tri& v = S_.V[std::size_t(t)];
-    const int a = RelaxedAccess::ld(v[0]), b = RelaxedAccess::ld(v[1]), c = RelaxedAccess::ld(v[2]);
-    return a != S_.INF && b != S_.INF && c != S_.INF && mine(a) && mine(b) && mine(c);
+  /// Whether the triangle whose vertices read as v is this thread's. INF is at position 2 of a
+  /// ghost and nowhere else, so a finite triangle has v[2] != INF; a read of a triangle that
+  /// another thread is rewriting mixes vertices of its slab and INF (of a fresh slot), and its
+  /// position 2 is INF or a vertex of that slab: refused either way.
+  bool takes(const int (&v)[3]) const {
+    return alone_ || (v[2] != S_.INF && mine(v[0]) && mine(v[1]) && mine(v[2]));
   }
   int newSlots() { return blocks_.take2(); }
 
@@ -352,20 +362,19 @@ class alignas(64) Inserter {  // aligned: two threads' inserters never share a c
         if (!Claim::kShared) throw std::logic_error("fastDelaunay: walk does not terminate");
         return Busy;
       }
-      if (!claim_.lock(t)) return Busy;
-      // (With a shared claim: under the lock, t is a live triangle no one else changes.)
-      if (ld(S_.V[t][2]) != S_.INF)
-        for (int j = 0; j < 3; ++j) {
-          const int v = ld(S_.V[t][j]);
-          if (pt(v)[0] == p[0] && pt(v)[1] == p[1]) {
-            dup = v;
+      int v[3];
+      if (!take(t, v)) return Busy;
+      // (With a shared claim: now t is a live triangle no one else changes.)
+      if (v[2] != S_.INF)
+        for (int j = 0; j < 3; ++j)
+          if (pt(v[j])[0] == p[0] && pt(v[j])[1] == p[1]) {
+            dup = v[j];
             claim_.releaseAll(cav_);
             return Duplicate;
           }
-        }
       // The walk read a triangle being rewritten: walk again from t. (One thread: a triangle
       // that contains p and does not have p as a vertex has p strictly inside its circle.)
-      if (Claim::kShared && !conflict(t, p)) {
+      if (Claim::kShared && !seedHolds(v, p)) {
         claim_.releaseAll(cav_);
         last = t;
         continue;
@@ -399,15 +408,49 @@ class alignas(64) Inserter {  // aligned: two threads' inserters never share a c
   static constexpr int kNext[3] = {1, 2, 0};
 
   static int ld(const int& x) { return Access::ld(x); }
+  // An entry of a triangle this insertion has taken: no other thread writes it now (the claims
+  // above), so a plain load races with nothing (other threads may only read it).
+  static int own(const int& x) { return x; }
   const double* pt(int v) const { return S_.P + 2 * std::size_t(v); }
 
+  // Reads the vertices of triangle t into v, once, and takes t for this insertion; false if the
+  // claim refuses it (another thread's).
+  __attribute__((always_inline)) bool take(int t, int (&v)[3]) {
+    const Tri& w = S_.V[std::size_t(t)];
+    if constexpr (Claim::kLockFirst) {
+      if (!claim_.lock(t)) return false;
+      for (int j = 0; j < 3; ++j) v[j] = own(w[j]);
+      return true;
+    } else {
+      for (int j = 0; j < 3; ++j) v[j] = ld(w[j]);
+      return claim_.takes(v);
+    }
+  }
+
   // Inlined by force: it is the innermost call of the walk and of the cavity search.
-  __attribute__((always_inline)) bool conflict(int t, const double* p) const {
-    const int a = ld(S_.V[t][0]), b = ld(S_.V[t][1]), c = ld(S_.V[t][2]);
+  __attribute__((always_inline)) bool conflict(const int (&v)[3], const double* p) const {
+    const int a = v[0], b = v[1], c = v[2];
     if (c == S_.INF)  // ghost (a, b, inf): the rule of predicates_inline.h
       return pred::ghostConflict(pred_.orient(pt(a), pt(b), p), pt(a)[0], pt(a)[1], pt(b)[0],
                                  pt(b)[1], p[0], p[1]);
     return pred_.incircle(pt(a), pt(b), pt(c), p) > 0;
+  }
+  __attribute__((always_inline)) bool conflict(int t, const double* p) const {
+    const int v[3] = {ld(S_.V[t][0]), ld(S_.V[t][1]), ld(S_.V[t][2])};
+    return conflict(v, p);
+  }
+
+  // With a shared claim, whether the triangle t the walk ended in, taken with vertices v, is in
+  // conflict with p (p not a vertex of it): the walk may have read t, or followed a link into it,
+  // while another thread rewrote them. Locks: t may have changed between the walk's reads and
+  // the lock, so the incircle test again. Slabs: t is this thread's, and no other thread wrote it
+  // in the round, so the walk read these vertices; only the link it came by may have been stale,
+  // so the edge it entered by, which the walk does not test, is tested now: p is then in the
+  // closed triangle, strictly inside its circle. (Alone, every read is consistent.)
+  bool seedHolds(const int (&v)[3], const double* p) const {
+    if (Claim::kLockFirst) return conflict(v, p);
+    if (from_ < 0 || v[2] == S_.INF) return true;
+    return pred_.orient(pt(v[from_]), pt(v[kNext[from_]]), p) >= 0;
   }
 
 //! [fastWalk]
@@ -425,6 +468,7 @@ class alignas(64) Inserter {  // aligned: two threads' inserters never share a c
         // Entered from its finite side: p is strictly beyond that hull edge, a conflict.
         if (from == 0 || conflict(t, p)) {
           st_.walkSteps += steps;
+          from_ = from;
           return t;
         }
         k = 0;
@@ -438,6 +482,7 @@ class alignas(64) Inserter {  // aligned: two threads' inserters never share a c
           k = 2;
         if (k < 0) {
           st_.walkSteps += steps;
+          from_ = from;
           return t;
         }
       }
@@ -509,14 +554,15 @@ class alignas(64) Inserter {  // aligned: two threads' inserters never share a c
     pending_[2] = 3 * seed;
     while (top > 0) {
       const int he = pending_[--top], t = he / 3, k = he - 3 * t;
-      const int h = ld(S_.A[std::size_t(he)]);
+      const int h = own(S_.A[std::size_t(he)]);  // t is in the cavity: taken
       const int n = h / 3;
       const typename Claim::State s = claim_.state(n);
       if (s == Claim::kInCavity)  // a shared edge met from its second side: not a tree
         throw std::logic_error("fastDelaunay: the cavity's triangles do not form a tree");
       if (s == Claim::kNew) {  // not seen yet: take it, then test it
-        if (!claim_.lock(n)) return false;
-        if (conflict(n, p)) {
+        int v[3];
+        if (!take(n, v)) return false;
+        if (conflict(v, p)) {
           claim_.enterCavity(n);
           cav_.push_back(n);
           if (__builtin_expect(top + 2 > pending_.size(), 0)) pending_.resize(2 * pending_.size());
@@ -527,8 +573,8 @@ class alignas(64) Inserter {  // aligned: two threads' inserters never share a c
         }
       }
       BoundaryEdge& e = bnd_.emplace_back();
-      e.a = ld(S_.V[t][k]);
-      e.b = ld(S_.V[t][kNext[k]]);
+      e.a = own(S_.V[t][k]);
+      e.b = own(S_.V[t][kNext[k]]);
       e.out = h;
     }
     return true;
@@ -611,6 +657,7 @@ class alignas(64) Inserter {  // aligned: two threads' inserters never share a c
   Claim& claim_;
   Pred pred_;
   FastStats& st_;
+  int from_ = -1;  // the edge by which the last walk entered its triangle (-1: it started there)
   std::vector<int> cav_;
   std::vector<BoundaryEdge> bnd_;
   std::vector<int> pending_ = std::vector<int>(64);  // the cavity search's stack (grows)

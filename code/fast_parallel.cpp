@@ -254,7 +254,7 @@ FastResult runShared(const std::vector<double>& xy, int threads, const FastOptio
   const int rounds = std::max(1, std::min(opt.rounds, 32));
   const std::size_t n = xy.size() / 2;
   // The adjacency array's memory first: the sort borrows it.
-  fast::RawMemory memA = fast::adjacencyMemory(fast::slotsFor(n, threads), n);
+  fast::RawMemory memA = fast::adjacencyMemory(fast::slotsFor(n, threads), n, threads);
   std::vector<int> orig;
   {
     const std::size_t* o = brioCoinOrderInto(xy, opt.seed, rounds, memA.get(), true, threads);

@@ -17,8 +17,10 @@ void adviseHugePages(const void* p, std::size_t bytes);
 /// Asks the kernel to map the whole 4 KB pages inside [p, p + bytes) now, in one call
 /// (MADV_POPULATE_WRITE, Linux 5.14), rather than by one page fault per page at first touch:
 /// the same zeroed pages, without a trap into the kernel for each. A hint only: false where the
-/// kernel refuses it (an older one), and nothing changes.
-bool populatePages(const void* p, std::size_t bytes);
+/// kernel refuses it (an older one), and nothing changes. threads > 1: the pages are cut into
+/// that many consecutive pieces, one call per piece, each on its own thread (the kernel clears a
+/// page on the thread that asks for it).
+bool populatePages(const void* p, std::size_t bytes, int threads = 1);
 
 /// n copies of v in a vector whose storage was given the 2 MB hint (adviseHugePages) before
 /// its first touch.

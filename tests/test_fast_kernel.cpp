@@ -315,31 +315,35 @@ TEST_CASE("fast kernel --order brio means the same BRIO rounds for the fast kern
   CHECK(lst.cavityFaces == fast.cavityFaces);
 }
 
-// The Store's arrays are mapped in one call (huge_pages.h): every whole page inside the range is
-// resident afterwards, the partly covered pages at both ends are left alone.
+// The Store's arrays are mapped in one call (huge_pages.h), or in one call per thread with
+// several threads: every whole page inside the range is resident afterwards, the partly covered
+// pages at both ends are left alone, whatever the pieces.
 TEST_CASE("fast kernel populatePages maps exactly the whole pages of a range") {
   constexpr std::size_t kPage = 4096, kPages = 16;
-  void* m = ::mmap(nullptr, kPages * kPage, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS,
-                   -1, 0);
-  REQUIRE(m != MAP_FAILED);
-  auto* base = static_cast<unsigned char*>(m);
-  ::madvise(m, kPages * kPage, MADV_NOHUGEPAGE);  // so that one fault maps one page
-  unsigned char in[kPages];
-  REQUIRE(::mincore(m, kPages * kPage, in) == 0);
-  for (std::size_t k = 0; k < kPages; ++k) CHECK((in[k] & 1) == 0);  // nothing touched yet
-  // From 100 bytes into page 0 to 100 bytes into page 15: pages 1..14 are whole.
-  const bool done = dt::populatePages(base + 100, (kPages - 1) * kPage);
-  utsname u{};
-  ::uname(&u);
-  int major = 0, minor = 0;
-  std::sscanf(u.release, "%d.%d", &major, &minor);
-  if (major > 5 || (major == 5 && minor >= 14)) CHECK(done);  // MADV_POPULATE_WRITE exists
-  REQUIRE(::mincore(m, kPages * kPage, in) == 0);
-  for (std::size_t k = 0; k < kPages; ++k) {
-    CAPTURE(k);
-    CHECK((in[k] & 1) == ((done && k >= 1 && k + 1 < kPages) ? 1 : 0));
+  for (int threads : {1, 2, 3, 20}) {
+    CAPTURE(threads);
+    void* m = ::mmap(nullptr, kPages * kPage, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS,
+                     -1, 0);
+    REQUIRE(m != MAP_FAILED);
+    auto* base = static_cast<unsigned char*>(m);
+    ::madvise(m, kPages * kPage, MADV_NOHUGEPAGE);  // so that one fault maps one page
+    unsigned char in[kPages];
+    REQUIRE(::mincore(m, kPages * kPage, in) == 0);
+    for (std::size_t k = 0; k < kPages; ++k) CHECK((in[k] & 1) == 0);  // nothing touched yet
+    // From 100 bytes into page 0 to 100 bytes into page 15: pages 1..14 are whole.
+    const bool done = dt::populatePages(base + 100, (kPages - 1) * kPage, threads);
+    utsname u{};
+    ::uname(&u);
+    int major = 0, minor = 0;
+    std::sscanf(u.release, "%d.%d", &major, &minor);
+    if (major > 5 || (major == 5 && minor >= 14)) CHECK(done);  // MADV_POPULATE_WRITE exists
+    REQUIRE(::mincore(m, kPages * kPage, in) == 0);
+    for (std::size_t k = 0; k < kPages; ++k) {
+      CAPTURE(k);
+      CHECK((in[k] & 1) == ((done && k >= 1 && k + 1 < kPages) ? 1 : 0));
+    }
+    ::munmap(m, kPages * kPage);
   }
-  ::munmap(m, kPages * kPage);
 }
 
 TEST_CASE("fast kernel the x86-64-v3 build and the baseline build make the same tests and give the same DT(S)") {
