@@ -348,6 +348,9 @@ class alignas(64) Inserter {  // aligned: two threads' inserters never share a c
       : S_(S), claim_(claim), pred_(pred), st_(st) {}
 
   int last = 0;  // where the next walk starts: a triangle of the last cavity
+  /// Whether a walk starts at the new triangle around the last point inserted that faces the
+  /// next one (startNear), rather than at `last` (the ladder turns it off).
+  bool ringStart = !kCentroidWalk;
 
   /// Inserts vertex ip; or sets dup to the vertex it duplicates (nothing changes); or, with a
   /// shared claim, reports Busy: a triangle it needed was another thread's (nothing changed and
@@ -355,6 +358,7 @@ class alignas(64) Inserter {  // aligned: two threads' inserters never share a c
 //! [fastInsert]
   Outcome insert(int ip, int& dup) {
     const double* p = pt(ip);
+    if (ringStart && ring_ >= 0) last = startNear(p);
     for (int attempt = 0; attempt < (Claim::kShared ? 3 : 1); ++attempt) {
       const int t = kCentroidWalk ? walkCentroid(p, dup) : walk(p);
       if (t == kDuplicate) return Duplicate;
@@ -454,7 +458,7 @@ class alignas(64) Inserter {  // aligned: two threads' inserters never share a c
   }
 
 //! [fastWalk]
-  // A visibility walk by orientation tests, from the last triangle created, that does not test
+  // A visibility walk by orientation tests, from `last` (see startNear), that does not test
   // the edge it came through. On a Delaunay triangulation it cannot cycle (Edelsbrunner). It
   // ends in a triangle that contains p or in a ghost that sees p; -1 after more steps than
   // there are triangles (one thread: a corrupted mesh; several: it read links being rewritten).
@@ -544,6 +548,7 @@ class alignas(64) Inserter {  // aligned: two threads' inserters never share a c
   // the half-edges still to cross, the next one on top. A neighbour the claim cannot take (another
   // thread's) ends the search: false.
   bool cavity(int seed, const double* p) {
+    ring_ = -1;
     cav_.clear();
     bnd_.clear();
     claim_.enterCavity(seed);
@@ -617,7 +622,31 @@ class alignas(64) Inserter {  // aligned: two threads' inserters never share a c
     else
       linkAround();
     last = bnd_.back().e1 / 3;
+    ring_ = ip;
   }
+
+//! [fastStart]
+  // The new triangle around the last point inserted, q, whose angle at q holds the direction
+  // from q to p (consecutive points are close, so the walk from there is short); `last` if the
+  // ring meets a ghost or is long. Going counter-clockwise around q, the ring's vertices pass
+  // from the right of the line from q along that direction to its left at the triangle sought:
+  // vertex i not strictly left, vertex i + 1 strictly left (i < m - 1); where no such pair is
+  // found, the wedge is the last one, from vertex m - 1 back to vertex 0: `last` already.
+  int startNear(const double* p) const {
+    const std::size_t m = bnd_.size();
+    if (m > 32) return last;
+    const double* q = pt(ring_);
+    const double dx = p[0] - q[0], dy = p[1] - q[1];
+    std::uint32_t left = 0;
+    for (std::size_t i = 0; i < m; ++i) {
+      if (bnd_[i].a == S_.INF) return last;
+      const double* a = pt(bnd_[i].a);
+      left |= std::uint32_t(dx * (a[1] - q[1]) - dy * (a[0] - q[0]) > 0) << i;
+    }
+    const std::uint32_t pass = ~left & (left >> 1);
+    return pass ? bnd_[std::size_t(__builtin_ctz(pass))].e1 / 3 : last;
+  }
+//! [fastStart]
 
   // Edge i + 1 of the boundary starts where edge i ends (the cavity search's order): the new
   // triangle on edge i meets the one on edge i + 1, around the ring.
@@ -657,6 +686,7 @@ class alignas(64) Inserter {  // aligned: two threads' inserters never share a c
   Claim& claim_;
   Pred pred_;
   FastStats& st_;
+  int ring_ = -1;  // the point the last fill inserted, while bnd_ holds its ring
   int from_ = -1;  // the edge by which the last walk entered its triangle (-1: it started there)
   std::vector<int> cav_;
   std::vector<BoundaryEdge> bnd_;

@@ -29,6 +29,7 @@ void run(std::vector<double>& P, std::vector<int>& orig, FastResult& res, Pred p
     S.init(0, f.i2, f.i1);
   MarkClaim claim(S);
   Inserter<Pred, PlainAccess, MarkClaim, kMap, kCentroid> K(S, claim, pred, res.stats);
+  K.ringStart = !opt.ladderLastCavityStart;
   res.stats.insertions = 3;
   std::vector<std::pair<int, int>> dups;  // (point, vertex it duplicates), insertion numbers
   const std::size_t every = std::max<std::size_t>(1, opt.progressEvery);
@@ -64,7 +65,8 @@ std::vector<std::uint64_t> fastHilbertKeys(const std::vector<double>& xy, int de
 FastResult fastDelaunay(const std::vector<double>& xy, const FastOptions& opt) {
   fast::checkInput(xy, "fastDelaunay");
   if ((opt.ladderMapAdjacency && !opt.ladderCentroidWalk) ||
-      (opt.ladderCentroidWalk && !opt.ladderCallPredicates))
+      (opt.ladderCentroidWalk && !opt.ladderLastCavityStart) ||
+      (opt.ladderLastCavityStart && !opt.ladderCallPredicates))
     throw std::invalid_argument("fastDelaunay: the ladder switches are cumulative");
   const std::size_t n = xy.size() / 2;
   FastResult res;

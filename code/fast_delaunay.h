@@ -31,12 +31,16 @@ enum class FastOrder {
 /// Options of fastDelaunay. The defaults are the fast kernel; the `ladder*` switches each put
 /// back one feature of the corrected listings, so that the optimisation ladder can measure what
 /// each change is worth (all of them give the same exact triangulation). They are cumulative:
-/// ladderMapAdjacency needs ladderCentroidWalk, which needs ladderCallPredicates.
+/// ladderMapAdjacency needs ladderCentroidWalk, which needs ladderLastCavityStart, which needs
+/// ladderCallPredicates.
 struct FastOptions {
   FastOrder order = FastOrder::RadixBrio;
   int rounds = 8;                  ///< RadixBrio: number of rounds (1 = a plain Hilbert sort)
   std::uint64_t seed = 1;          ///< seed of the BRIO rounds
   bool ladderCallPredicates = false; ///< out-of-line, counted dt::orient2d / dt::incircle
+  /// every walk starts in a new triangle of the last cavity (Table 2.2's rule), not in the one
+  /// around the last point that faces the next point
+  bool ladderLastCavityStart = false;
   bool ladderCentroidWalk = false; ///< walk of Listing 2.6: incircle at every step, centroid ray
   bool ladderMapAdjacency = false; ///< link new triangles through a std::map (Listing 2.4)
   /// Called after every `progressEvery` insertions with the points handled so far, their number

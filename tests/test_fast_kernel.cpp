@@ -69,6 +69,8 @@ std::vector<dt::FastOptions> allVariants() {
   v.push_back(o);
   o.ladderCallPredicates = true;
   v.push_back(o);
+  o.ladderLastCavityStart = true;
+  v.push_back(o);
   o.ladderCentroidWalk = true;
   v.push_back(o);
   o.ladderMapAdjacency = true;
@@ -250,6 +252,25 @@ TEST_CASE("fast kernel handles a cavity of hundreds of triangles (the centre of 
   const dt::FastResult r = fastChecked(p, o);
   CHECK(r.tri.size() == 400);  // the fan around the centre
   CHECK(r.stats.cavityFaces >= 398);
+}
+
+TEST_CASE("fast kernel starts each walk in the new triangle around the last point that faces the next one") {
+  // The start changes where the walks go, not what they find: the same DT(S), and on uniform
+  // points in BRIO order the walks visit far fewer triangles than from the last cavity's last
+  // new triangle (Table 2.2's rule, kept by the ladder's switch), about half as many.
+  const dttest::XY p = dttest::uniformPoints(20000, 17);
+  dt::FastOptions facing, lastCavity;
+  facing.ladderCallPredicates = lastCavity.ladderCallPredicates = true;
+  lastCavity.ladderLastCavityStart = true;
+  const dt::FastResult a = fastChecked(p, facing), b = fastChecked(p, lastCavity);
+  CHECK(canonical(a.tri) == canonical(b.tri));
+  REQUIRE(a.stats.insertions == b.stats.insertions);
+  const double stepsFacing = double(a.stats.walkSteps) / double(a.stats.insertions);
+  const double stepsLast = double(b.stats.walkSteps) / double(b.stats.insertions);
+  CAPTURE(stepsFacing);
+  CAPTURE(stepsLast);
+  CHECK(stepsFacing < 0.7 * stepsLast);
+  CHECK(a.stats.orient.calls() < b.stats.orient.calls());
 }
 
 TEST_CASE("fast kernel the ladder's out-of-line predicates record the same calls as the inlined ones stage by stage") {
