@@ -631,7 +631,7 @@ class alignas(64) Inserter {  // aligned: two threads' inserters never share a c
   // ring meets a ghost or is long. Going counter-clockwise around q, the ring's vertices pass
   // from the right of the line from q along that direction to its left at the triangle sought:
   // vertex i not strictly left, vertex i + 1 strictly left (i < m - 1); where no such pair is
-  // found, the wedge is the last one, from vertex m - 1 back to vertex 0: `last` already.
+  // found, the wedge is the last one, from vertex m - 1 back to vertex 0.
   int startNear(const double* p) const {
     const std::size_t m = bnd_.size();
     if (m > 32) return last;
@@ -644,7 +644,7 @@ class alignas(64) Inserter {  // aligned: two threads' inserters never share a c
       left |= std::uint32_t(dx * (a[1] - q[1]) - dy * (a[0] - q[0]) > 0) << i;
     }
     const std::uint32_t pass = ~left & (left >> 1);
-    return pass ? bnd_[std::size_t(__builtin_ctz(pass))].e1 / 3 : last;
+    return bnd_[pass ? std::size_t(__builtin_ctz(pass)) : m - 1].e1 / 3;
   }
 //! [fastStart]
 
