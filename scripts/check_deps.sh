@@ -59,6 +59,10 @@ head         base               scripts
 tail         base               scripts
 ls           base               scripts/fuzz.sh
 cp           base               scripts
+node         nodejs             book and web checks (axe-core in Chromium, package.json)
+npm          nodejs             scripts/deps.sh (npm ci: axe-core, pinned by package-lock.json)
+bwrap        bubblewrap         scripts/exercise.sh (the sandbox of grading)
+cmp          base               scripts/deps.sh
 git          git                scripts/mutants.sh (a temporary copy of the tree)
 shellcheck   shellcheck         CMakeLists.txt (the ctest entry shellcheck: every script of scripts/)
 tar          base               scripts/mutants.sh

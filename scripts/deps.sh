@@ -6,7 +6,7 @@
 set -euo pipefail
 DT_PACKAGES=(g++ cmake make libgmp-dev libmpfr-dev doctest-dev gnuplot-nox doxygen
              libjs-mathjax clang libclang-rt-14-dev chromium fonts-dejavu-core fonts-dejavu-extra git
-             shellcheck emscripten dpkg-dev)
+             shellcheck emscripten dpkg-dev bubblewrap nodejs)
 # Optional: CGAL, the reference of bench_kernels (the build detects it; without it the benchmark
 # compares the listings with the fast kernel only), and perf, which samples one Table 2.1 run for
 # the 2.3.4 page (without it that table says so). Installed only when asked, e.g. by
@@ -44,6 +44,23 @@ if ! ls "$wasm_src"/gmp_*.dsc > /dev/null 2>&1; then
   chown _apt "$wasm_src" 2>/dev/null || true  # apt downloads as _apt when it can
   (cd "$wasm_src" && apt-get source --download-only -qq gmp)
 fi
+# npm: Debian ships it as its own package; a nodejs from elsewhere (NodeSource) brings its own
+# npm and conflicts with Debian's, so the package is installed only when no npm is there.
+if ! command -v npm > /dev/null; then
+  apt-get update -qq
+  apt-get install -y -qq --no-install-recommends npm
+fi
+# axe-core (the accessibility rules the book's and the live figures' checks run in Chromium),
+# the one npm package, at the version package-lock.json pins; installed again only when the
+# lock file changed since the last install.
+(
+  cd "$(dirname "$0")/.."
+  if ! cmp -s package-lock.json node_modules/.dt-installed-lock.json 2> /dev/null ||
+     [ ! -f node_modules/axe-core/axe.min.js ]; then
+    npm ci --no-audit --no-fund --ignore-scripts --loglevel=error
+    cp package-lock.json node_modules/.dt-installed-lock.json
+  fi
+)
 if [ "${DT_WITH_OPTIONAL:-0}" = 1 ]; then
   for p in $(missing_of "${DT_OPTIONAL_PACKAGES[@]}"); do
     echo "installing (optional): $p"
