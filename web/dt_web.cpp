@@ -158,7 +158,8 @@ void describe(double px, double py, std::vector<dt::Face*>* cavityOut) {
   outD.push_back(px);
   outD.push_back(py);
   if (cavityOut) *cavityOut = cavity;
-  outS = format("p = (%.4g, %.4g). The walk to p visits %zu faces.", px, py, walk.size());
+  outS = format("p = (%.4g, %.4g). The walk to p visits %zu face%s.", px, py, walk.size(),
+                walk.size() == 1 ? "" : "s");
   if (info.duplicate) {
     outS += " p is a vertex of the triangulation: no cavity, nothing to insert.";
     return;

@@ -122,7 +122,7 @@
     var t = fig.info.textContent;
     ok("2.1/2.4 the live line states |C|, |dC|, |B| and the walk",
        t.indexOf("|𝒞| = " + r.cavityFinite) >= 0 && t.indexOf("|∂𝒞| = " + r.boundaryFinite) >= 0 &&
-       t.indexOf("|𝓑| = " + r.ballFinite) >= 0 && t.indexOf("visits " + r.walk + " faces") >= 0 &&
+       t.indexOf("|𝓑| = " + r.ballFinite) >= 0 && t.indexOf("visits " + r.walk + " face") >= 0 &&
        fig.info.getAttribute("aria-live") === "polite", t);
   }
 
@@ -390,7 +390,7 @@
     m.home();
 
     var h = figure("hilbert");
-    h.set("hilbert", 3);
+    h.set("hilbert", 3, 1);
     focusable("keys 2.11:", h.svg);
     key(h.svg, "ArrowRight");
     ok("keys 2.11: Right deepens the curve", h.info.textContent.indexOf("depth 4") >= 0, h.info.textContent);
