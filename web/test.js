@@ -300,6 +300,23 @@
        document.activeElement && document.activeElement.outerHTML.slice(0, 80));
   }
 
+  // ---- the GIF's pause: paused from the start iff reduced motion is asked; the button toggles --
+  function testGif() {
+    var reduce = window.matchMedia("(prefers-reduced-motion: reduce)").matches;
+    var img = document.querySelector("img"), btn = document.querySelector(".dt-gif-pause"),
+        still = document.querySelector(".dt-gif-still");
+    function paused() { return img.style.display === "none" && still.style.display === "" && btn.getAttribute("aria-pressed") === "true"; }
+    ok("gif: a pause button; " + (reduce ? "reduced motion: paused from the start" : "playing from the start"),
+       btn && paused() === reduce, btn ? btn.textContent : "no button");
+    if (!btn) return;
+    btn.dispatchEvent(new MouseEvent("click", { bubbles: true }));
+    ok("gif: the button " + (reduce ? "plays" : "pauses") + " it", paused() !== reduce, btn.textContent);
+    if (!paused()) btn.dispatchEvent(new MouseEvent("click", { bubbles: true }));
+    var px = still.getContext("2d").getImageData(0, 0, 1, 1).data;
+    ok("gif: paused, a frame of it stays in view", paused() && px[3] === 255 && (px[2] === 143 || px[0] === 214),
+       Array.prototype.join.call(px, ","));
+  }
+
   // ---- a tap where the finger is: the drawing's scaled box, not its viewBox units ----------
   function tap(node, type, cx, cy) {
     node.dispatchEvent(new PointerEvent(type, { bubbles: true, clientX: cx, clientY: cy, pointerId: 2,
@@ -424,6 +441,7 @@
   document.addEventListener("dt-live-mounted", function (ev) {
     var figs = ev.detail;
     attempt("page", function () { testPage(figs); });
+    attempt("gif", testGif);
     attempt("tap", testTap);
     attempt("native cases", testCases);
     attempt("2.1/2.4 cavity figure", testCavity);
