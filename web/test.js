@@ -361,6 +361,7 @@
   function testKeys() {
     var c = figure("cavity");
     c.setSize(100);
+    c.setShow("both");
     focusable("keys 2.1/2.4:", c.svg);
     var b = c.view.box, wx = b[2] - b[0], wy = b[3] - b[1];
     [["ArrowRight", false, 0.01, 0], ["ArrowRight", true, 0.1, 0], ["ArrowUp", false, 0, 0.01],
@@ -371,7 +372,8 @@
       ok("keys 2.1/2.4: " + (k[1] ? "Shift+" : "") + k[0] + " moves p by " + Math.abs(k[2] + k[3]) * 100 + " % of the view",
          Math.abs(q[0] - p[0] - k[2] * wx) < 1e-12 && Math.abs(q[1] - p[1] - k[3] * wy) < 1e-12 &&
          c.info.textContent !== before && c.counts().cavity === c.report.cavityFinite,
-         [(q[0] - p[0]) / wx, (q[1] - p[1]) / wy]);
+         [(q[0] - p[0]) / wx, (q[1] - p[1]) / wy, c.info.textContent !== before, c.counts().cavity,
+          c.report.cavityFinite].join(" "));
     });
     var shown = c.svg.parentNode.querySelector(".dt-show").value;
     key(c.svg, "Enter");
