@@ -232,7 +232,7 @@ build_web() {
 }
 run_web() {
   timeout "$timeout_s" bash "$src/web/run_browser_test.sh" "$build/web/test.html" >"$work/test.log" 2>&1 &&
-    timeout "$timeout_s" bash "$src/web/run_browser_test.sh" "$build/web/test.html" --width 390 --reduced-motion >>"$work/test.log" 2>&1
+    timeout "$timeout_s" bash "$src/web/run_browser_test.sh" "$build/web/test_390.html" --reduced-motion >>"$work/test.log" 2>&1
 }
 need_suite=0 need_web=0
 for f in "${M_file[@]}"; do
