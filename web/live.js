@@ -170,7 +170,7 @@ var DTLive = (function () {
     show.value = "both";
     legend(f.legend, [
       { stroke: S.C_TRI, width: 1, text: "DT(S)" },
-      { fill: S.C_NEIGH, stroke: S.C_NEIGH_EDGE, text: "faces the walk to p visited (not in 𝒞)" },
+      { fill: S.C_NEIGH, stroke: S.C_NEIGH_EDGE, text: "faces the walk to p visited" },
       { fill: S.C_CAVITY, stroke: S.C_CAVITY_EDGE, text: "cavity 𝒞" },
       { stroke: S.C_CAVITY_EDGE, width: 3, text: "boundary ∂𝒞" },
       { stroke: S.C_BALL_EDGE, width: 2, text: "ball 𝓑 (in ball mode also filled)" },
