@@ -195,7 +195,7 @@ if [ -f "$work/mutated" ]; then
   rm -f "$work/mutated"
 fi
 
-echo "mutants: copy in $work; configuring and building the unmutated tree ($targets)"
+echo "mutants: copy in $work; configuring and building the unmutated tree"
 # shellcheck disable=SC2086  # MUTANTS_CMAKE_ARGS is a list of options
 cmake -S "$src" -B "$build" -DCMAKE_BUILD_TYPE=Release ${MUTANTS_CMAKE_ARGS:-} >"$work/configure.log" 2>&1 ||
   { cat "$work/configure.log"; exit 2; }
@@ -239,6 +239,7 @@ for f in "${M_file[@]}"; do
   if is_web "$f"; then need_web=1; else need_suite=1; fi
 done
 if [ $need_suite = 1 ]; then
+  echo "mutants: the suite ($targets)"
   build_tests || { echo "mutants: the unmutated code does not build"; tail -30 "$work/build.log"; exit 2; }
   run_tests || { echo "mutants: the unmutated suite fails; fix it first"; tail -30 "$work/test.log"; exit 2; }
   # A selection that runs no test case passes whatever the code does: every mutant would be
@@ -249,6 +250,7 @@ if [ $need_suite = 1 ]; then
       exit 2; }
 fi
 if [ $need_web = 1 ]; then
+  echo "mutants: the live figures (web_live) and their browser test"
   build_web || { echo "mutants: the unmutated WebAssembly does not build"; tail -30 "$work/build.log"; exit 2; }
   run_web || { echo "mutants: the unmutated browser test fails; fix it first"; tail -30 "$work/test.log"; exit 2; }
 fi
