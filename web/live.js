@@ -628,7 +628,8 @@ var DTLive = (function () {
       f.info.textContent = DT.text();
       self.done = 0;
       self.finished = false;
-      self.view = new View(-0.7, -0.7, 1.7, 1.7, W, H);
+      // The whole of DT(S0 ∪ S), super vertices included, fills the drawing.
+      self.view = boxView(DT.sceneMesh().coords, W, H);
       clear(gFlip); clear(gPts);
       var m = drawMesh(), seen = {};
       // Every vertex, super vertices too, with the number the text names it by.
