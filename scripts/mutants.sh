@@ -189,10 +189,16 @@ mkdir -p "$src"
 (cd "$repo" && find . \( -path ./.git -o -path './build*' \) -prune -o -type f -print0 |
   xargs -0 cp -p --parents -t "$src")
 # A run interrupted while a mutant was applied left objects compiled from it, newer than the
-# restored file: make that file new so that it is compiled again.
+# restored file: make that file new so that it is compiled again. So did the last mutant of
+# each file in a finished run (the fresh copy gives the file its older time back): those are
+# listed in $work/restored.
 if [ -f "$work/mutated" ]; then
   touch "$src/$(cat "$work/mutated")"
   rm -f "$work/mutated"
+fi
+if [ -f "$work/restored" ]; then
+  while IFS= read -r f; do [ ! -f "$src/$f" ] || touch "$src/$f"; done <"$work/restored"
+  rm -f "$work/restored"
 fi
 
 echo "mutants: copy in $work; configuring and building the unmutated tree"
@@ -288,6 +294,7 @@ for i in "${!M_name[@]}"; do
   fi
   # Restore the file; a plain cp gives it a new time, so the next build recompiles it.
   cp "$work/saved" "$target"
+  echo "$file" >>"$work/restored"
   rm -f "$work/mutated"
   echo "$status $name ($file, $(( $(date +%s) - start )) s): ${M_desc[$i]}; $detail"
 done
