@@ -29,6 +29,11 @@
 # doctest options, MUTANTS_TARGETS the build targets (default: dt_suite), MUTANTS_CMAKE_ARGS adds
 # configure options (e.g. -DDT_TEST_FILES=test_spine.cpp: a suite of one file). To reuse compiled objects
 # between runs, export CMAKE_CXX_COMPILER_LAUNCHER (e.g. a compiler cache) yourself.
+#
+# A mutant of a file under web/ (the live figures) is judged by the browser test instead: the
+# copy builds the WebAssembly module and the test page (target web_live) and runs
+# web/run_browser_test.sh at 1280 and 390 px; the WebAssembly is built only when the selected
+# mutants include such a one (GMP for it is copied from the repository's build/ when there).
 set -euo pipefail
 
 repo=$(cd "$(dirname "$0")/.." && pwd)
@@ -184,13 +189,19 @@ mkdir -p "$src"
 (cd "$repo" && find . \( -path ./.git -o -path './build*' \) -prune -o -type f -print0 |
   xargs -0 cp -p --parents -t "$src")
 # A run interrupted while a mutant was applied left objects compiled from it, newer than the
-# restored file: make that file new so that it is compiled again.
+# restored file: make that file new so that it is compiled again. So did the last mutant of
+# each file in a finished run (the fresh copy gives the file its older time back): those are
+# listed in $work/restored.
 if [ -f "$work/mutated" ]; then
   touch "$src/$(cat "$work/mutated")"
   rm -f "$work/mutated"
 fi
+if [ -f "$work/restored" ]; then
+  while IFS= read -r f; do [ ! -f "$src/$f" ] || touch "$src/$f"; done <"$work/restored"
+  rm -f "$work/restored"
+fi
 
-echo "mutants: copy in $work; configuring and building the unmutated tree ($targets)"
+echo "mutants: copy in $work; configuring and building the unmutated tree"
 # shellcheck disable=SC2086  # MUTANTS_CMAKE_ARGS is a list of options
 cmake -S "$src" -B "$build" -DCMAKE_BUILD_TYPE=Release ${MUTANTS_CMAKE_ARGS:-} >"$work/configure.log" 2>&1 ||
   { cat "$work/configure.log"; exit 2; }
@@ -214,14 +225,41 @@ run_tests() {
     timeout "$timeout_s" ./dt_tests --abort-after=1 --no-intro "--source-file=$slow_files") \
     >"$work/test.log" 2>&1
 }
-build_tests || { echo "mutants: the unmutated code does not build"; tail -30 "$work/build.log"; exit 2; }
-run_tests || { echo "mutants: the unmutated suite fails; fix it first"; tail -30 "$work/test.log"; exit 2; }
-# A selection that runs no test case passes whatever the code does: every mutant would be
-# reported SURVIVED (doctest splits -tc on commas only, so '-tc=a b' selects "a", and "b" is
-# ignored). Refused, as is a suite that fails.
-grep -Eq 'test cases: *[1-9]' "$work/test.log" ||
-  { echo "mutants: the test options (${test_args:-none}) select no test case; every mutant would survive"
-    exit 2; }
+# The live figures' mutants: the WebAssembly module and the browser test page, and the test
+# at a laptop's and a phone's width (the verdict lines of the first failing run in the log).
+is_web() { case $1 in web/*) return 0 ;; *) return 1 ;; esac; }
+build_web() {
+  local gmp=web/work/deps/prefix
+  if [ ! -f "$build/$gmp/lib/libgmp.a" ] && [ -f "$repo/build/$gmp/lib/libgmp.a" ]; then
+    mkdir -p "$build/$gmp"
+    cp -pr "$repo/build/$gmp/." "$build/$gmp/"
+  fi
+  cmake --build "$build" -j"$jobs" --target web_live >"$work/build.log" 2>&1
+}
+run_web() {
+  timeout "$timeout_s" bash "$src/web/run_browser_test.sh" "$build/web/test.html" >"$work/test.log" 2>&1 &&
+    timeout "$timeout_s" bash "$src/web/run_browser_test.sh" "$build/web/test_390.html" --reduced-motion >>"$work/test.log" 2>&1
+}
+need_suite=0 need_web=0
+for f in "${M_file[@]}"; do
+  if is_web "$f"; then need_web=1; else need_suite=1; fi
+done
+if [ $need_suite = 1 ]; then
+  echo "mutants: the suite ($targets)"
+  build_tests || { echo "mutants: the unmutated code does not build"; tail -30 "$work/build.log"; exit 2; }
+  run_tests || { echo "mutants: the unmutated suite fails; fix it first"; tail -30 "$work/test.log"; exit 2; }
+  # A selection that runs no test case passes whatever the code does: every mutant would be
+  # reported SURVIVED (doctest splits -tc on commas only, so '-tc=a b' selects "a", and "b" is
+  # ignored). Refused, as is a suite that fails.
+  grep -Eq 'test cases: *[1-9]' "$work/test.log" ||
+    { echo "mutants: the test options (${test_args:-none}) select no test case; every mutant would survive"
+      exit 2; }
+fi
+if [ $need_web = 1 ]; then
+  echo "mutants: the live figures (web_live) and their browser test"
+  build_web || { echo "mutants: the unmutated WebAssembly does not build"; tail -30 "$work/build.log"; exit 2; }
+  run_web || { echo "mutants: the unmutated browser test fails; fix it first"; tail -30 "$work/test.log"; exit 2; }
+fi
 
 killed=0 survived=0 invalid=0
 declare -a survivors=() invalids=()
@@ -236,10 +274,12 @@ for i in "${!M_name[@]}"; do
     rm -f "$work/mutated"
     echo "INVALID   $name: $why"; invalid=$((invalid + 1)); invalids+=("$name"); continue
   fi
-  if ! build_tests; then
+  do_build=build_tests do_run=run_tests
+  if is_web "$file"; then do_build=build_web do_run=run_web; fi
+  if ! $do_build; then
     status="INVALID  "; invalid=$((invalid + 1)); invalids+=("$name")
     detail="does not compile: $(grep -m1 'error' "$work/build.log" || true)"
-  elif run_tests; then
+  elif $do_run; then
     status="SURVIVED "; survived=$((survived + 1)); survivors+=("$name")
     detail="every test passed"
   else
@@ -247,12 +287,14 @@ for i in "${!M_name[@]}"; do
     # The test case whose block holds the first error (blocks of passing tests with a MESSAGE
     # also start with "TEST CASE:").
     failed=$(awk '/^TEST CASE:/ { tc = $0; sub(/^TEST CASE: */, "", tc) }
-                  /ERROR|CRASHED/ { if (tc != "") { print tc; exit } }' "$work/test.log" || true)
+                  /ERROR|CRASHED/ { if (tc != "") { print tc; exit } }
+                  /^FAIL / { print; exit }' "$work/test.log" || true)
     [ -n "$failed" ] || failed="no test case named: crash or timeout ($(tail -1 "$work/test.log"))"
     detail="first failing: $failed"
   fi
   # Restore the file; a plain cp gives it a new time, so the next build recompiles it.
   cp "$work/saved" "$target"
+  echo "$file" >>"$work/restored"
   rm -f "$work/mutated"
   echo "$status $name ($file, $(( $(date +%s) - start )) s): ${M_desc[$i]}; $detail"
 done

@@ -14,6 +14,8 @@ var DT = (function () {
     return M.HEAPF64.slice(p, p + n);
   }
   function error() { return M.UTF8ToString(M._dtw_error()); }
+  // The sentence of the last call (what the figure shows, in words: its aria-live text).
+  api.text = function () { return M.UTF8ToString(M._dtw_out_s()); };
   // Calls f(pointer, n) with the points xy (x0 y0 x1 y1 ...) copied into wasm memory.
   function withPoints(xy, f) {
     var n = xy.length / 2;
@@ -43,10 +45,16 @@ var DT = (function () {
     r.boundaryEdges = take(r.boundaryFinite, 4);
     r.ballFaces = take(r.ballFinite, 6);
     r.p = [d[o], d[o + 1]];
+    r.text = api.text();
     return r;
   }
   api.ready = (typeof DTModule === "function" ? DTModule() : Promise.reject(
-      new Error("dt_wasm.js is not loaded"))).then(function (m) { M = m; return api; });
+      new Error("dt_wasm.js is not loaded"))).then(function (m) {
+    M = m;
+    // The enumerations the figures show (stage names, map kinds, sign names), from the C++.
+    api.record = JSON.parse(M.UTF8ToString(M._dtw_record()));
+    return api;
+  });
   // DT(S) by the fast kernel: Int32Array of index triples (counter-clockwise).
   api.triangulate = function (xy, checkIt) {
     return withPoints(xy, function (p, n) {
@@ -66,6 +74,8 @@ var DT = (function () {
   api.sceneInit = function (xy, mode, factor) {
     return withPoints(xy, function (p, n) { return check(M._dtw_scene_init(p, n, mode, factor || 10)); });
   };
+  // The scene the calls below work on (each figure of a page keeps its own).
+  api.useScene = function (id) { M._dtw_scene_select(id); };
   api.sceneMesh = function () {
     var k = M._dtw_scene_mesh();
     return { count: k, coords: outD(), ids: outI() };
@@ -87,7 +97,7 @@ var DT = (function () {
   api.flipPrepare = function () { return check(M._dtw_flip_prepare()); };
   api.flipStep = function () {
     var left = check(M._dtw_flip_step());
-    return { left: left, edges: outD(), ids: outI() };
+    return { left: left, edges: outD(), ids: outI(), text: api.text() };
   };
   api.orient = function (ax, ay, bx, by, cx, cy) {
     M._dtw_orient(ax, ay, bx, by, cx, cy);
@@ -99,11 +109,20 @@ var DT = (function () {
     var o = outI();
     return { naive: o[0], exact: o[1], stage: o[2] };
   };
-  // kind 0: O(m,b,c); 1: O(c,b,m); 2: InC(b,c,e,m). Int32Array of (naive, exact, stage) per cell.
+  // kind 0: O(m,b,c); 1: O(c,b,m); 2: InC(b,c,e,m). cells: Int32Array of (naive, exact,
+  // stage) per cell; stages: the cells each stage decided (stage order); wrong: naive != exact.
   api.predicateMap = function (kind, x0, y0, step, n, b, c, e) {
     e = e || [0, 0];
-    M._dtw_predicate_map(kind, x0, y0, step, n, b[0], b[1], c[0], c[1], e[0], e[1]);
-    return outI();
+    check(M._dtw_predicate_map(kind, x0, y0, step, n, b[0], b[1], c[0], c[1], e[0], e[1]));
+    var o = outI(), k = 3 * n * n, s = api.record.stages.length;
+    return { cells: o.subarray(0, k), stages: Array.prototype.slice.call(o, k, k + s), wrong: o[k + s] };
+  };
+  // Cell (i, j) of the same map: its signs and stage; api.text() says them in words.
+  api.mapCell = function (kind, i, j, x0, y0, step, b, c, e) {
+    e = e || [0, 0];
+    check(M._dtw_map_cell(kind, i, j, x0, y0, step, b[0], b[1], c[0], c[1], e[0], e[1]));
+    var o = outI();
+    return { naive: o[0], exact: o[1], stage: o[2] };
   };
   api.hilbertOrder = function (xy, depth) {
     return withPoints(xy, function (p, n) {

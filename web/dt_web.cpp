@@ -7,6 +7,8 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
+#include <map>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -21,6 +23,7 @@
 #include "flip.h"
 #include "hilbert.h"
 #include "mesh.h"
+#include "predicate_stages.h"
 #include "predicates.h"
 #include "search.h"
 #include "triangulate.h"
@@ -36,7 +39,24 @@ namespace {
 
 std::vector<double> outD;  // doubles of the last call (coordinates)
 std::vector<int> outI;     // ints of the last call (counts, indices, signs)
+std::string outS;          // the sentence that says what the last call showed (aria-live text)
 std::string lastError;
+
+// The enumerations a figure shows, in the order of the values the binding returns; the page
+// reads them through dtw_record, so its labels cannot drift from the C++.
+constexpr const char* kMapKinds[] = {"O(a, b, c), Figure 2.7 (a)", "O(c, b, a), Figure 2.7 (b)",
+                                     "InC(a, b, c, d), Figure 2.8"};
+constexpr int kMapKindCount = 3;
+constexpr const char* kSignNames[] = {"negative", "zero", "positive"};  // indexed by sign + 1
+
+// printf into a std::string (the sentences of the figures).
+template <class... A>
+std::string format(const char* f, A... a) {
+  char buf[512];
+  std::snprintf(buf, sizeof buf, f, a...);
+  return buf;
+}
+const char* signName(int s) { return kSignNames[s + 1]; }
 
 // One scene: a triangulation kept between calls (2.1/2.4 drag, 2.5 steps, 2.3.6 flips).
 struct Scene {
@@ -53,7 +73,11 @@ struct Scene {
   bool superRemoved = false;
   std::vector<std::array<long, 3>> recovered;  // canonical triangles of the copy's result
 };
-Scene scene;
+// The scenes of the figures on a page, by the id the page chose (dtw_scene_select): two live
+// figures on one page each keep their own triangulation.
+std::map<int, Scene> scenes;
+Scene* current = &scenes[0];
+Scene& sc() { return *current; }
 
 const dt::Face* firstLiveFace(const dt::Triangulation& T) {
   for (const dt::Face& f : T.faces())
@@ -86,12 +110,13 @@ std::vector<std::array<long, 3>> canonical(const dt::Triangulation& T, bool drop
 // and in outD the finite walk faces, the finite cavity faces, the boundary edges with a finite
 // end pair, the finite ball triangles (6, 6, 4, 6 doubles each), then p.
 void describe(double px, double py, std::vector<dt::Face*>* cavityOut) {
+  if (!sc().T) throw std::logic_error("no scene: call dtw_scene_init first");
   dt::Vertex p(px, py, 0, -100);
   dt::SearchInfo info;
   std::vector<const dt::Face*> walk;
   info.trace = &walk;
-  info.maxSteps = scene.T->faces().size() + 1;
-  dt::Face* seed = dt::lineSearch(scene.start, &p, &info);
+  info.maxSteps = sc().T->faces().size() + 1;
+  dt::Face* seed = dt::lineSearch(sc().start, &p, &info);
   std::vector<dt::Face*> cavity, otherSide;
   std::vector<dt::Edge> bnd;
   if (seed) {
@@ -103,6 +128,14 @@ void describe(double px, double py, std::vector<dt::Face*>* cavityOut) {
   std::size_t walkFinite = 0, cavFinite = 0, ballFinite = 0, bndFinite = 0;
   for (const dt::Face* f : walk) walkFinite += finite(f);
   for (const dt::Face* f : cavity) cavFinite += finite(f);
+  // With ghost faces the walk never falls off the domain (info.outside stays false): p is
+  // outside the hull when it lies strictly beyond the real edge of a ghost face it conflicts
+  // with (on the edge itself it is on the hull, not outside).
+  bool outside = false;
+  for (const dt::Face* f : cavity) {
+    const int i = f->infiniteIndex();
+    if (i >= 0 && dt::orientationTest(f->V[(i + 1) % 3], f->V[(i + 2) % 3], &p) > 0) outside = true;
+  }
   for (const dt::Edge& e : bnd) {
     const bool fin = !e.V[0]->infinite && !e.V[1]->infinite;
     ballFinite += fin;
@@ -110,7 +143,7 @@ void describe(double px, double py, std::vector<dt::Face*>* cavityOut) {
   }
   outI = {int(walk.size()), int(walkFinite), int(cavity.size()), int(cavFinite),
           int(bnd.size()), int(bnd.size()), int(ballFinite), info.duplicate != nullptr,
-          info.outside, int(bndFinite)};
+          outside || info.outside, int(bndFinite)};
   outD.clear();
   for (const dt::Face* f : walk)
     if (finite(f)) putFace(f);
@@ -125,6 +158,17 @@ void describe(double px, double py, std::vector<dt::Face*>* cavityOut) {
   outD.push_back(px);
   outD.push_back(py);
   if (cavityOut) *cavityOut = cavity;
+  outS = format("p = (%.4g, %.4g). The walk to p visits %zu face%s.", px, py, walk.size(),
+                walk.size() == 1 ? "" : "s");
+  if (info.duplicate) {
+    outS += " p is a vertex of the triangulation: no cavity, nothing to insert.";
+    return;
+  }
+  outS += format(" Cavity |𝒞| = %zu triangles, boundary |∂𝒞| = %zu edges, ball |𝓑| = %zu new "
+                 "triangles.", cavFinite, bndFinite, ballFinite);
+  if (outside)
+    outS += format(" p is outside the convex hull: the cavity also holds %zu ghost faces, "
+                   "which are not drawn.", cavity.size() - cavFinite);
 }
 
 template <class F>
@@ -146,6 +190,25 @@ DTW_EXPORT int dtw_out_d_size() { return int(outD.size()); }
 DTW_EXPORT int* dtw_out_i() { return outI.data(); }
 DTW_EXPORT int dtw_out_i_size() { return int(outI.size()); }
 DTW_EXPORT const char* dtw_error() { return lastError.c_str(); }
+/// The sentence of the last call that shows something (a query, a step, a map, an order): what
+/// the figure now shows, in words, for its aria-live region.
+DTW_EXPORT const char* dtw_out_s() { return outS.c_str(); }
+
+/// The one record of the enumerations the figures show, as JSON: the predicate stages in the
+/// order of dt::pred::Stage (the values of lastPredicateStage and of dtw_predicate_map's
+/// third int), the map kinds in the order of dtw_predicate_map's `kind`, the sign names
+/// (indexed by sign + 1). The page draws stage s in the style's series colour s.
+DTW_EXPORT const char* dtw_record() {
+  auto list = [](const char* const* names, int n) {
+    std::string r = "[";
+    for (int i = 0; i < n; ++i) r += std::string(i ? ", \"" : "\"") + names[i] + "\"";
+    return r + "]";
+  };
+  outS = "{\"stages\": " + list(dt::pred::kStageNames, dt::pred::kStageCount) +
+         ", \"mapKinds\": " + list(kMapKinds, kMapKindCount) + ", \"signs\": " +
+         list(kSignNames, 3) + "}";
+  return outS.c_str();
+}
 
 /// DT(S) of n points xy (x0 y0 x1 y1 ...) by the fast kernel (dt::fastDelaunay, the command
 /// line's default): outI receives the counter-clockwise index triples. Returns the number of
@@ -186,19 +249,26 @@ DTW_EXPORT int dtw_triangulate_listings(const double* xy, int n) {
   });
 }
 
+/// Makes scene `id` the one the scene functions below work on (a new one is empty until
+/// dtw_scene_init). Returns 0.
+DTW_EXPORT int dtw_scene_select(int id) {
+  current = &scenes[id];
+  return 0;
+}
+
 /// Starts a scene on n points. mode 0: DT(S) with ghost faces (2.2.2), for the cavity and ball
 /// of a moving point (2.1, 2.4); mode 1: the two super-triangles of 2.2.1 (`factor` times the
 /// box of S), the points to be inserted one at a time by dtw_scene_step (2.5). Returns the
 /// number of finite faces, -1 on error.
 DTW_EXPORT int dtw_scene_init(const double* xy, int n, int mode, double factor) {
   return guarded([&] {
-    scene = Scene{};
-    scene.T = std::make_unique<dt::Triangulation>();
-    scene.xy.assign(xy, xy + 2 * std::size_t(n));
+    sc() = Scene{};
+    sc().T = std::make_unique<dt::Triangulation>();
+    sc().xy.assign(xy, xy + 2 * std::size_t(n));
     std::vector<dt::Vertex*> S;
-    for (int i = 0; i < n; ++i) S.push_back(scene.T->addVertex(xy[2 * i], xy[2 * i + 1], i));
+    for (int i = 0; i < n; ++i) S.push_back(sc().T->addVertex(xy[2 * i], xy[2 * i + 1], i));
     if (mode == 0) {
-      dt::delaunayTrglHull(*scene.T, S, dt::StartRule::LastCavity);
+      dt::delaunayTrglHull(*sc().T, S, dt::StartRule::LastCavity);
     } else {
       const double inf = std::numeric_limits<double>::infinity();  // the points' bounding box
       double x0 = inf, x1 = -inf, y0 = inf, y1 = -inf;
@@ -208,11 +278,13 @@ DTW_EXPORT int dtw_scene_init(const double* xy, int n, int mode, double factor) 
         y0 = std::min(y0, xy[2 * i + 1]);
         y1 = std::max(y1, xy[2 * i + 1]);
       }
-      dt::initSuperTriangles(*scene.T, x0, y0, x1, y1, factor);
+      dt::initSuperTriangles(*sc().T, x0, y0, x1, y1, factor);
     }
-    scene.factor = factor;
-    scene.start = const_cast<dt::Face*>(firstLiveFace(*scene.T));
-    return int(scene.T->numFiniteFaces());
+    sc().factor = factor;
+    sc().start = const_cast<dt::Face*>(firstLiveFace(*sc().T));
+    outS = mode == 0 ? format("DT(S) of %d points.", n)
+                     : format("DT_0: the two super-triangles; %d points to insert.", n);
+    return int(sc().T->numFiniteFaces());
   });
 }
 
@@ -221,7 +293,8 @@ DTW_EXPORT int dtw_scene_init(const double* xy, int n, int mode, double factor) 
 DTW_EXPORT int dtw_scene_mesh() {
   outD.clear();
   outI.clear();
-  const auto faces = scene.T->finiteFaces();
+  if (!sc().T) return 0;
+  const auto faces = sc().T->finiteFaces();
   for (const dt::Face* f : faces) {
     putFace(f);
     for (const dt::Vertex* v : f->V) outI.push_back(int(v->id));
@@ -245,17 +318,21 @@ DTW_EXPORT int dtw_scene_query(double px, double py) {
 /// the number of points left, or -1 when none is left or on error.
 DTW_EXPORT int dtw_scene_step() {
   return guarded([&] {
-    if (scene.next >= scene.xy.size() / 2) throw std::out_of_range("no point left");
-    const std::size_t i = scene.next++;
-    const double px = scene.xy[2 * i], py = scene.xy[2 * i + 1];
+    if (sc().next >= sc().xy.size() / 2) throw std::out_of_range("no point left");
+    const std::size_t i = sc().next++;
+    const double px = sc().xy[2 * i], py = sc().xy[2 * i + 1];
     describe(px, py, nullptr);
-    dt::Vertex* v = &scene.T->vertices()[i];
-    const std::uint64_t before = scene.stats.searchSteps;
-    dt::Face* f = dt::insertVertex(*scene.T, scene.start, v, scene.stats, scene.scratch);
-    if (f) scene.start = f;
-    outI.push_back(int(scene.stats.searchSteps - before));
+    dt::Vertex* v = &sc().T->vertices()[i];
+    const std::uint64_t before = sc().stats.searchSteps;
+    dt::Face* f = dt::insertVertex(*sc().T, sc().start, v, sc().stats, sc().scratch);
+    if (f) sc().start = f;
+    outI.push_back(int(sc().stats.searchSteps - before));
     outI.push_back(int(i));
-    return int(scene.xy.size() / 2 - scene.next);
+    outS = format("Point %zu of %zu inserted. ", i + 1, sc().xy.size() / 2) + outS +
+           format(" N_search = %llu for this point, %llu summed over the %zu points inserted; "
+                  "%zu left.", (unsigned long long)(sc().stats.searchSteps - before),
+                  (unsigned long long)sc().stats.searchSteps, i + 1, sc().xy.size() / 2 - sc().next);
+    return int(sc().xy.size() / 2 - sc().next);
   });
 }
 
@@ -264,31 +341,33 @@ DTW_EXPORT int dtw_scene_step() {
 /// of flips.
 DTW_EXPORT int dtw_flip_prepare() {
   return guarded([&] {
-    if (scene.next < scene.xy.size() / 2) throw std::logic_error("insert every point first");
+    if (sc().next < sc().xy.size() / 2) throw std::logic_error("insert every point first");
     dt::Triangulation copy;
     std::vector<dt::Vertex*> S;
-    const std::size_t n = scene.xy.size() / 2;
+    const std::size_t n = sc().xy.size() / 2;
     for (std::size_t i = 0; i < n; ++i)
-      S.push_back(copy.addVertex(scene.xy[2 * i], scene.xy[2 * i + 1], long(i)));
-    double x0 = scene.xy[0], x1 = x0, y0 = scene.xy[1], y1 = y0;
+      S.push_back(copy.addVertex(sc().xy[2 * i], sc().xy[2 * i + 1], long(i)));
+    double x0 = sc().xy[0], x1 = x0, y0 = sc().xy[1], y1 = y0;
     for (std::size_t i = 0; i < n; ++i) {
-      x0 = std::min(x0, scene.xy[2 * i]);
-      x1 = std::max(x1, scene.xy[2 * i]);
-      y0 = std::min(y0, scene.xy[2 * i + 1]);
-      y1 = std::max(y1, scene.xy[2 * i + 1]);
+      x0 = std::min(x0, sc().xy[2 * i]);
+      x1 = std::max(x1, sc().xy[2 * i]);
+      y0 = std::min(y0, sc().xy[2 * i + 1]);
+      y1 = std::max(y1, sc().xy[2 * i + 1]);
     }
-    dt::initSuperTriangles(copy, x0, y0, x1, y1, scene.factor);
+    dt::initSuperTriangles(copy, x0, y0, x1, y1, sc().factor);
     dt::delaunayTrgl(copy, S, dt::StartRule::LastCavity);
-    if (canonical(copy, false) != canonical(*scene.T, false))
+    if (canonical(copy, false) != canonical(*sc().T, false))
       throw std::logic_error("the copy of DT(S0 u S) differs from the scene");
     std::vector<std::array<const dt::Vertex*, 4>> log;
     dt::recoverDelaunay(copy, dt::RecoveryRule::Full, &log);
-    scene.flips.clear();
-    for (const auto& l : log) scene.flips.push_back({l[0]->id, l[1]->id, l[2]->id, l[3]->id});
-    scene.flipsDone = 0;
-    scene.superRemoved = false;
-    scene.recovered = canonical(copy, true);
-    return int(scene.flips.size());
+    sc().flips.clear();
+    for (const auto& l : log) sc().flips.push_back({l[0]->id, l[1]->id, l[2]->id, l[3]->id});
+    sc().flipsDone = 0;
+    sc().superRemoved = false;
+    sc().recovered = canonical(copy, true);
+    outS = format("DT(S0 ∪ S), all %zu points inserted into the super-triangles: %zu flips "
+                  "recover DT(S).", n, sc().flips.size());
+    return int(sc().flips.size());
   });
 }
 
@@ -300,14 +379,16 @@ DTW_EXPORT int dtw_flip_step() {
   return guarded([&] {
     outD.clear();
     outI.clear();
-    if (scene.flipsDone == scene.flips.size()) {
-      if (canonical(*scene.T, true) != scene.recovered)
+    if (sc().flipsDone == sc().flips.size()) {
+      if (canonical(*sc().T, true) != sc().recovered)
         throw std::logic_error("replayed flips do not give recoverDelaunay's DT(S)");
-      scene.superRemoved = true;
+      sc().superRemoved = true;
+      outS = format("All %zu flips done: removing the faces that touch a super vertex leaves "
+                    "DT(S), the same triangles as recoverDelaunay's.", sc().flips.size());
       return 0;
     }
-    const auto& fl = scene.flips[scene.flipsDone];
-    for (dt::Face& f : scene.T->faces()) {
+    const auto& fl = sc().flips[sc().flipsDone];
+    for (dt::Face& f : sc().T->faces()) {
       if (f.deleted) continue;
       for (int k = 0; k < 3; ++k)
         if (f.V[k]->id == fl[0] && f.V[(k + 1) % 3]->id == fl[1]) {
@@ -319,8 +400,11 @@ DTW_EXPORT int dtw_flip_step() {
             if (v != a && v != b) (c ? d : c) = v;
           outD = {a->x, a->y, b->x, b->y, c->x, c->y, d ? d->x : c->x, d ? d->y : c->y};
           outI = {int(a->id), int(b->id), int(fl[2]), int(fl[3])};
-          ++scene.flipsDone;
-          return int(scene.flips.size() - scene.flipsDone);
+          ++sc().flipsDone;
+          outS = format("Flip %zu of %zu: edge p%ld p%ld becomes p%ld p%ld (negative numbers are "
+                        "super vertices).", sc().flipsDone, sc().flips.size(), a->id, b->id,
+                        fl[2], fl[3]);
+          return int(sc().flips.size() - sc().flipsDone);
         }
     }
     throw std::logic_error("flip edge not found");
@@ -328,8 +412,8 @@ DTW_EXPORT int dtw_flip_step() {
 }
 
 /// Orientation of a, b, c: outI = [naive sign, robust (exact) sign, stage that decided it
-/// (dt::lastPredicateStage: 0 filter, 1 GMP, 2 and 3 exact machine arithmetic, 4 extended
-/// filter)]. Returns the exact sign.
+/// (dt::lastPredicateStage, a dt::pred::Stage: 0 filter, 1 small multiples, 2 wide integers,
+/// 3 extended exponent, 4 GMP; dtw_record names them)]. Returns the exact sign.
 DTW_EXPORT int dtw_orient(double ax, double ay, double bx, double by, double cx, double cy) {
   const int naive = dt::orient2dNaive(ax, ay, bx, by, cx, cy);
   const int exact = dt::orient2d(ax, ay, bx, by, cx, cy);
@@ -346,30 +430,74 @@ DTW_EXPORT int dtw_incircle(double ax, double ay, double bx, double by, double c
   return exact;
 }
 
+namespace {
+// One cell of a predicate map: the moving point m in predicate `kind` (see dtw_predicate_map);
+// o gets naive sign, exact sign, stage.
+void mapCell(int kind, double mx, double my, double bx, double by, double cx, double cy, double ex,
+             double ey, int* o) {
+  if (kind == 0) {
+    o[0] = dt::orient2dNaive(mx, my, bx, by, cx, cy);
+    o[1] = dt::orient2d(mx, my, bx, by, cx, cy);
+  } else if (kind == 1) {
+    o[0] = dt::orient2dNaive(cx, cy, bx, by, mx, my);
+    o[1] = dt::orient2d(cx, cy, bx, by, mx, my);
+  } else {
+    o[0] = dt::incircleNaive(bx, by, cx, cy, ex, ey, mx, my);
+    o[1] = dt::incircle(bx, by, cx, cy, ex, ey, mx, my);
+  }
+  o[2] = dt::lastPredicateStage();
+}
+}  // namespace
+
 /// The predicate maps of Figures 2.7 / 2.8 (and of the incircle figure): the moving point
 /// m = (x0 + i step, y0 + j step), 0 <= i, j < n (row j, column i), in O(m, b, c) (kind 0),
 /// O(c, b, m) (kind 1) or InC(b, c, e, m) with e = (ex, ey) (kind 2). outI gets 3 ints per
-/// cell: naive sign, exact sign, stage. Returns n*n.
+/// cell (naive sign, exact sign, stage), then the number of cells each stage decided (in
+/// stage order), then the number of cells where the naive sign is wrong; outS says so in
+/// words. Returns n*n, or -1 for an unknown kind.
 DTW_EXPORT int dtw_predicate_map(int kind, double x0, double y0, double step, int n, double bx,
                                  double by, double cx, double cy, double ex, double ey) {
-  outI.assign(3 * std::size_t(n) * n, 0);
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      const double mx = x0 + i * step, my = y0 + j * step;
-      int* o = &outI[3 * (std::size_t(j) * n + i)];
-      if (kind == 0) {
-        o[0] = dt::orient2dNaive(mx, my, bx, by, cx, cy);
-        o[1] = dt::orient2d(mx, my, bx, by, cx, cy);
-      } else if (kind == 1) {
-        o[0] = dt::orient2dNaive(cx, cy, bx, by, mx, my);
-        o[1] = dt::orient2d(cx, cy, bx, by, mx, my);
-      } else {
-        o[0] = dt::incircleNaive(bx, by, cx, cy, ex, ey, mx, my);
-        o[1] = dt::incircle(bx, by, cx, cy, ex, ey, mx, my);
+  return guarded([&] {
+    if (kind < 0 || kind >= kMapKindCount || n < 1) throw std::invalid_argument("bad map");
+    const std::size_t cells = std::size_t(n) * n;
+    outI.assign(3 * cells, 0);
+    dt::pred::StageCounts stages;
+    int wrong = 0;
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        int* o = &outI[3 * (std::size_t(j) * n + i)];
+        mapCell(kind, x0 + i * step, y0 + j * step, bx, by, cx, cy, ex, ey, o);
+        stages.add(o[2]);
+        wrong += o[0] != o[1];
       }
-      o[2] = dt::lastPredicateStage();
+    outS = format("%s with the cell %.6g × 2⁻⁵³ wide: the naive sign is wrong in %d of %zu "
+                  "cells. Decided by:", kMapKinds[kind], std::ldexp(step, 53), wrong, cells);
+    for (int s = 0; s < dt::pred::kStageCount; ++s) {
+      outI.push_back(int(stages[s]));
+      outS += format("%s %s %llu cells", s ? ";" : "", dt::pred::kStageNames[s],
+                     (unsigned long long)stages[s]);
     }
-  return n * n;
+    outI.push_back(wrong);
+    outS += ".";
+    return n * n;
+  });
+}
+
+/// One cell of a map, for the reader's cursor: outI = naive sign, exact sign, stage (as
+/// dtw_predicate_map); outS says it in words. Returns 0, or -1 for an unknown kind.
+DTW_EXPORT int dtw_map_cell(int kind, int i, int j, double x0, double y0, double step, double bx,
+                            double by, double cx, double cy, double ex, double ey) {
+  return guarded([&] {
+    if (kind < 0 || kind >= kMapKindCount) throw std::invalid_argument("bad map");
+    outI.assign(3, 0);
+    const double mx = x0 + i * step, my = y0 + j * step;
+    mapCell(kind, mx, my, bx, by, cx, cy, ex, ey, outI.data());
+    outS = format("Cell (%d, %d), the moving point at (%.17g, %.17g): naive sign %s, exact sign %s%s, "
+                  "decided by the stage %s.", i, j, mx, my, signName(outI[0]), signName(outI[1]),
+                  outI[0] != outI[1] ? " (the naive sign is wrong)" : "",
+                  dt::pred::kStageNames[outI[2]]);
+    return 0;
+  });
 }
 
 /// 2.3.5: the Hilbert order of the points on the fixed curve of the given depth (1..31;
@@ -379,6 +507,8 @@ DTW_EXPORT int dtw_hilbert_order(const double* xy, int n, int depth) {
     std::vector<double> pts(xy, xy + 2 * std::size_t(n));
     const auto ord = dt::hilbertOrder(pts, depth, false);
     outI.assign(ord.begin(), ord.end());
+    outS = format("Hilbert order of %d points on the curve of depth %d (4^%d cells), drawn as one "
+                  "polyline.", n, depth, depth);
     return n;
   });
 }
@@ -393,6 +523,10 @@ DTW_EXPORT int dtw_brio_order(const double* xy, int n, int seed, int depth) {
     const auto ord = dt::brioOrder(pts, std::uint64_t(seed), depth, &starts, false);
     outI.assign(ord.begin(), ord.end());
     outI.insert(outI.end(), starts.begin(), starts.end());
+    outS = format("BRIO order of %d points: %zu rounds, of sizes", n, starts.size());
+    for (std::size_t r = 0; r < starts.size(); ++r)
+      outS += format("%s %zu", r ? "," : "", (r + 1 < starts.size() ? starts[r + 1] : std::size_t(n)) - starts[r]);
+    outS += ", each in Hilbert order.";
     return int(starts.size());
   });
 }
