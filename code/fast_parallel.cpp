@@ -228,6 +228,7 @@ SplitForecast forecastSplit(const std::vector<double>& xy, int threads) {
   return f;
 }
 
+//! [decideThreads]
 ThreadDecision decideThreads(const std::vector<double>& xy, int threads) {
   ThreadDecision d;
   if (threads <= 1) return d;
@@ -251,6 +252,7 @@ ThreadDecision decideThreads(const std::vector<double>& xy, int threads) {
   d.reason = ParallelReason::Concurrent;
   return d;
 }
+//! [decideThreads]
 
 //! [fastDelaunayParallel]
 // The insertions after the sort, the same for both claims: the small first rounds by one thread,

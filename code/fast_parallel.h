@@ -46,7 +46,7 @@ enum class ParallelMode {
 /// the share of its vertices on a triangle that crosses a cut (a stand-in for the insertions
 /// a slab would defer) is at most maxCutShareRatio times what uniform points give.
 struct ParallelModel {
-  static constexpr std::size_t minPointsPerThread = 150000;
+  static constexpr std::size_t minPointsPerThread = 300000;
   static constexpr std::size_t sampleSize = 2048;
   static constexpr double maxCutShareRatio = 3.0;
 };
