@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <map>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -320,6 +322,26 @@ TEST_CASE("parallel the split forecast tells uniform points from a circle and an
         dt::ParallelModel::maxCutShareRatio);
   // Three slabs cut more than two.
   CHECK(dt::forecastSplit(dttest::uniformPoints(100000, 10), 3).uniformCutShare > u.uniformCutShare);
+  // The share itself, counted another way on a set smaller than the sample (so the sample is
+  // the set): vertices of triangles with vertices on both sides of the median x, or on a hull
+  // edge (an edge of one triangle only).
+  const dttest::XY q = dttest::uniformPoints(1500, 13);
+  const std::vector<dt::Tri> tri = dt::fastDelaunay(q).tri;
+  std::vector<double> xs;
+  for (std::size_t i = 0; i < q.size(); i += 2) xs.push_back(q[i]);
+  std::nth_element(xs.begin(), xs.begin() + 750, xs.end());
+  const double cut = xs[750];
+  std::map<std::pair<int, int>, int> edgeUses;
+  std::set<int> cutVertices;
+  for (const dt::Tri& t : tri) {
+    int right = 0;
+    for (int v : t) right += q[2 * std::size_t(v)] >= cut;
+    if (right == 1 || right == 2) cutVertices.insert(t.begin(), t.end());
+    for (int k = 0; k < 3; ++k) ++edgeUses[std::minmax(t[k], t[(k + 1) % 3])];
+  }
+  for (const auto& e : edgeUses)
+    if (e.second == 1) cutVertices.insert({e.first.first, e.first.second});
+  CHECK(dt::forecastSplit(q, 2).cutShare == doctest::Approx(double(cutVertices.size()) / 1500));
   // A collinear sample has no triangulation: it cannot be split.
   CHECK(dt::forecastSplit({0, 0, 1, 1, 2, 2, 3, 3}, 2).cutShare == 1.0);
 }
