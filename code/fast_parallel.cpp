@@ -236,7 +236,7 @@ ThreadDecision decideThreads(const std::vector<double>& xy, int threads) {
     d.reason = ParallelReason::OneCore;
     return d;
   }
-  // More threads than hardware threads never pays: a round waits for its slowest slab.
+  // No more threads than hardware threads: a round waits for its slowest slab.
   const std::size_t bySize = xy.size() / 2 / ParallelModel::minPointsPerThread;
   const int t = int(std::min<std::size_t>(std::size_t(std::min(threads, defaultThreadCount())), bySize));
   if (t < 2) {
