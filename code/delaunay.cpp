@@ -57,8 +57,9 @@ void fastKernel(std::vector<double>& xy, const TriangulateOptions& opt, Triangul
   if (opt.phase) opt.phase("triangulating " + std::to_string(n) + " points (fast kernel)", n);
   const auto t0 = std::chrono::steady_clock::now();
   const double sys0 = systemSeconds();
+  ParallelStats ps;
   FastResult fr =
-      fastDelaunayParallel(xy, fo.order == FastOrder::RadixBrio ? opt.threads : 1, fo);
+      fastDelaunayParallel(xy, fo.order == FastOrder::RadixBrio ? opt.threads : 1, fo, &ps);
   r.seconds = since(t0);
   r.systemSeconds = systemSince(sys0);
   std::vector<double>().swap(xy);  // fr.points holds them, in insertion order
@@ -69,6 +70,10 @@ void fastKernel(std::vector<double>& xy, const TriangulateOptions& opt, Triangul
   r.walkSteps = fr.stats.walkSteps;
   r.cavityFaces = fr.stats.cavityFaces;
   r.duplicates = std::move(fr.duplicates);
+  r.threadsUsed = ps.threadsUsed;
+  r.threadsReason = parallelReasonName(opt.threads > 1 && fo.order != FastOrder::RadixBrio
+                                           ? ParallelReason::SequentialOnly
+                                           : ps.reason);
   std::vector<char> isDup(n, 0);
   for (const auto& d : r.duplicates) isDup[std::size_t(d.first)] = 1;
   r.used.resize(n);
@@ -206,6 +211,8 @@ TriangulateResult triangulate(std::vector<double> xy, const TriangulateOptions& 
     fastKernel(xy, opt, r);
   else
     listingsKernel(xy, opt, r);
+  if (opt.threads > 1 && !(opt.kernel == KernelChoice::Fast && opt.method == BuildMethod::Hull))
+    r.threadsReason = parallelReasonName(ParallelReason::SequentialOnly);
   if (opt.check) {
     if (opt.phase) opt.phase("checking the result with exact predicates", r.xy.size() / 2);
     const CheckReport c = checkDelaunay(r.xy, r.tri, r.used.empty() ? nullptr : &r.used);

@@ -40,7 +40,8 @@ struct TriangulateOptions {
   BuildMethod method = BuildMethod::Hull;
   InsertionOrder order = InsertionOrder::Brio;
   KernelChoice kernel = KernelChoice::Fast;
-  /// Threads of the fast kernel with InsertionOrder::Brio (1: the sequential kernel; see fast_parallel.h).
+  /// Threads of the fast kernel with InsertionOrder::Brio (1: the sequential kernel); more are
+  /// used only where fast_parallel.h's cost model says they pay (TriangulateResult::threadsUsed).
   int threads = 1;
   /// Validate the result with checkDelaunay (exact); a failure throws std::logic_error.
   bool check = true;
@@ -74,6 +75,9 @@ struct TriangulateResult {
   /// mostly the mapping of new memory: page faults, pages cleared); -1 where it is not known.
   double systemSeconds = -1;
   bool checked = false;  ///< checkDelaunay passed (options.check)
+  int threadsUsed = 1;   ///< threads that inserted (fast_parallel.h's cost model decides)
+  /// Why that many: dt::parallelReasonName of the reason (fast_parallel.h).
+  std::string threadsReason = "one_thread_requested";
 };
 
 /// The input is valid but the method cannot handle it (BuildMethod::Super on points too close to the

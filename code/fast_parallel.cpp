@@ -2,11 +2,16 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <map>
 #include <memory>
+#include <mutex>
 #include <stdexcept>
 
 #include "fast_core.h"
+#include "generators.h"
 #include "hilbert.h"
+#include "triangulate.h"
 
 namespace dt {
 
@@ -125,6 +130,130 @@ struct SlabPolicy {
 
 int defaultThreadCount() { return std::max(1, int(std::thread::hardware_concurrency())); }
 
+const char* parallelReasonName(ParallelReason r) {
+  switch (r) {
+    case ParallelReason::Concurrent: return "concurrent";
+    case ParallelReason::OneRequested: return "one_thread_requested";
+    case ParallelReason::OneCore: return "one_core";
+    case ParallelReason::TooFewPoints: return "too_few_points";
+    case ParallelReason::SlabsDoNotSplit: return "slabs_do_not_split";
+    case ParallelReason::SequentialOnly: return "sequential_order_or_kernel";
+  }
+  return "unknown";
+}
+
+namespace {
+
+// The share of a sample's vertices that lie on a triangle no slab can take: one with vertices in
+// two slabs (the slabs cut at the sample's x-quantiles, as SlabPolicy::round cuts a round), or
+// a ghost (a hull edge: every point on a circle is one). A sample with no triangulation
+// (collinear, fewer than three distinct points, or refused) counts as all cut.
+double cutShareOf(const std::vector<double>& sample, int threads) {
+  FastResult r;
+  try {
+    r = fastDelaunay(sample);
+  } catch (const DegenerateInput&) {
+    return 1;
+  } catch (const std::invalid_argument&) {  // the whole input is refused in a moment, by the kernel
+    return 1;
+  }
+  const std::size_t m = sample.size() / 2;
+  std::vector<double> xs(m);
+  for (std::size_t i = 0; i < m; ++i) xs[i] = sample[2 * i];
+  std::vector<double> cut;
+  for (int k = 1; k < threads; ++k) {
+    auto q = xs.begin() + std::ptrdiff_t(m * std::size_t(k) / std::size_t(threads));
+    std::nth_element(xs.begin(), q, xs.end());
+    cut.push_back(*q);
+  }
+  std::sort(cut.begin(), cut.end());
+  // A point's slab: the number of cuts at or left of it (slab k holds cut[k-1] <= x < cut[k]).
+  auto slab = [&](int v) {
+    return std::upper_bound(cut.begin(), cut.end(), sample[2 * std::size_t(v)]) - cut.begin();
+  };
+  std::vector<char> used(m, 0), onCut(m, 0);
+  // In counter-clockwise triangles (v, a, b) an inner vertex's out-neighbours a and in-neighbours
+  // b are the same vertices; a hull vertex lacks one of each, two different ones: sums differ.
+  std::vector<std::int64_t> out(m, 0), in(m, 0);
+  for (const Tri& t : r.tri) {
+    const auto s0 = slab(t[0]);
+    const bool across = slab(t[1]) != s0 || slab(t[2]) != s0;
+    for (int k = 0; k < 3; ++k) {
+      const std::size_t v = std::size_t(t[k]);
+      used[v] = 1;
+      if (across) onCut[v] = 1;
+      out[v] += t[(k + 1) % 3];
+      in[v] += t[(k + 2) % 3];
+    }
+  }
+  for (std::size_t v = 0; v < m; ++v)
+    if (out[v] != in[v]) onCut[v] = 1;
+  const auto nUsed = std::count(used.begin(), used.end(), 1);
+  return nUsed ? double(std::count(onCut.begin(), onCut.end(), 1)) / double(nUsed) : 1;
+}
+
+// Uniform points' cut share for a thread count: computed once per count (a fixed sample).
+double uniformCutShare(int threads) {
+  static std::mutex mu;
+  static std::map<int, double> known;
+  std::lock_guard<std::mutex> hold(mu);
+  auto it = known.find(threads);
+  if (it == known.end())
+    it = known.emplace(threads, cutShareOf(uniformPoints(ParallelModel::sampleSize, 47), threads)).first;
+  return it->second;
+}
+
+void requireDefaultOrder(const FastOptions& opt) {
+  if (opt.order != FastOrder::RadixBrio || opt.ladderCallPredicates)
+    throw std::invalid_argument(
+        "fastDelaunayParallel: more than one thread needs the default order and predicates");
+}
+
+}  // namespace
+
+SplitForecast forecastSplit(const std::vector<double>& xy, int threads) {
+  // An evenly spaced sample of the input: for a set given in any order, spread over all of it.
+  const std::size_t n = xy.size() / 2, m = std::min(n, ParallelModel::sampleSize);
+  std::vector<double> sample;
+  sample.reserve(2 * m);
+  for (std::size_t j = 0; j < m; ++j) {
+    const std::size_t i = j * n / m;
+    sample.push_back(xy[2 * i]);
+    sample.push_back(xy[2 * i + 1]);
+  }
+  SplitForecast f;
+  f.cutShare = cutShareOf(sample, threads);
+  f.uniformCutShare = uniformCutShare(threads);
+  f.ratio = f.cutShare / f.uniformCutShare;
+  return f;
+}
+
+//! [decideThreads]
+ThreadDecision decideThreads(const std::vector<double>& xy, int threads) {
+  ThreadDecision d;
+  if (threads <= 1) return d;
+  if (defaultThreadCount() < 2) {
+    d.reason = ParallelReason::OneCore;
+    return d;
+  }
+  // No more threads than hardware threads: a round waits for its slowest slab.
+  const std::size_t bySize = xy.size() / 2 / ParallelModel::minPointsPerThread;
+  const int t = int(std::min<std::size_t>(std::size_t(std::min(threads, defaultThreadCount())), bySize));
+  if (t < 2) {
+    d.reason = ParallelReason::TooFewPoints;
+    return d;
+  }
+  d.forecast = forecastSplit(xy, t);
+  if (!(d.forecast.ratio <= ParallelModel::maxCutShareRatio)) {
+    d.reason = ParallelReason::SlabsDoNotSplit;
+    return d;
+  }
+  d.threads = t;
+  d.reason = ParallelReason::Concurrent;
+  return d;
+}
+//! [decideThreads]
+
 //! [fastDelaunayParallel]
 // The insertions after the sort, the same for both claims: the small first rounds by one thread,
 // each larger round shared out by the policy, the deferred insertions of a round by one thread;
@@ -239,15 +368,13 @@ void insertRounds(const std::vector<double>& xy, std::vector<double>& P, std::ve
 
 namespace {
 
-// fastDelaunayParallel with threads >= 1 (1: fastDelaunaySharedCoreAlone).
+// fastDelaunayParallel with threads >= 1 (1: fastDelaunaySharedCoreAlone); fills the run's
+// part of ps.
 FastResult runShared(const std::vector<double>& xy, int threads, const FastOptions& opt,
-                     ParallelStats* pstats, int minPiece, ParallelClaim claim) {
-  ParallelStats ps;
+                     ParallelStats& ps, int minPiece, ParallelClaim claim) {
   threads = std::min(threads, fast::kMaxThreads);
-  ps.threads = threads;
-  if (opt.order != FastOrder::RadixBrio || opt.ladderCallPredicates)
-    throw std::invalid_argument(
-        "fastDelaunayParallel: more than one thread needs the default order and predicates");
+  ps.threadsUsed = threads;
+  requireDefaultOrder(opt);
   fast::checkInput(xy, "fastDelaunayParallel");
   FastResult res;
   const auto t0 = std::chrono::steady_clock::now();
@@ -279,23 +406,42 @@ FastResult runShared(const std::vector<double>& xy, int threads, const FastOptio
   else
     insertRounds<SlabPolicy>(xy, P, orig, roundStart, rounds, threads, opt, minPiece, ps, res, t0,
                              std::move(memA));
-  if (pstats) *pstats = ps;
   return res;
 }
 
 }  // namespace
 
 FastResult fastDelaunayParallel(const std::vector<double>& xy, int threads, const FastOptions& opt,
-                                ParallelStats* pstats, int minPiece, ParallelClaim claim) {
-  if (threads > 1) return runShared(xy, threads, opt, pstats, minPiece, claim);
-  if (pstats) *pstats = ParallelStats{};
-  return fastDelaunay(xy, opt);
+                                ParallelStats* pstats, int minPiece, ParallelClaim claim,
+                                ParallelMode mode) {
+  if (threads > 1) requireDefaultOrder(opt);  // whatever the model then decides
+  ParallelStats ps;
+  ps.threadsRequested = std::max(1, threads);
+  ThreadDecision d;
+  if (threads > 1 && mode == ParallelMode::Always) {
+    d.threads = threads;
+    d.reason = ParallelReason::Concurrent;
+  } else if (threads > 1) {
+    const auto t0 = std::chrono::steady_clock::now();
+    d = decideThreads(xy, threads);
+    ps.decisionSeconds = secondsSince(t0);
+  }
+  ps.reason = d.reason;
+  ps.forecast = d.forecast;
+  FastResult res = d.threads > 1 ? runShared(xy, d.threads, opt, ps, minPiece, claim)
+                                 : fastDelaunay(xy, opt);
+  if (pstats) *pstats = ps;
+  return res;
 }
 //! [fastDelaunayParallel]
 
 FastResult fastDelaunaySharedCoreAlone(const std::vector<double>& xy, const FastOptions& opt,
                                        ParallelStats* pstats, ParallelClaim claim) {
-  return runShared(xy, 1, opt, pstats, 2048, claim);
+  ParallelStats ps;
+  ps.reason = ParallelReason::Concurrent;  // the shared machinery's rounds, by one thread
+  FastResult res = runShared(xy, 1, opt, ps, 2048, claim);
+  if (pstats) *pstats = ps;
+  return res;
 }
 
 }  // namespace dt

@@ -8,6 +8,7 @@
 // gives DT(S): book/parallel.md.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -15,9 +16,68 @@
 
 namespace dt {
 
+/// Why fastDelaunayParallel ran the number of threads it did (ParallelStats::reason). Its
+/// name, for --stats and the tables: parallelReasonName.
+enum class ParallelReason {
+  Concurrent,      ///< "concurrent": the larger rounds were shared among the threads
+  OneRequested,    ///< "one_thread_requested": one thread was asked for
+  OneCore,         ///< "one_core": the machine has one hardware thread
+  TooFewPoints,    ///< "too_few_points": fewer than ParallelModel::minPointsPerThread per thread
+  SlabsDoNotSplit, ///< "slabs_do_not_split": a sample's triangles cross the slab cuts too often
+  SequentialOnly,  ///< "sequential_order_or_kernel": an order or kernel that has no parallel form
+};
+
+/// The name of a reason: lower case, words joined by '_' (the enum's documentation gives each).
+const char* parallelReasonName(ParallelReason r);
+
+/// Whether the threads a call asks for are used whatever the input (the tests of the concurrent
+/// rounds) or only where the cost model of ParallelModel says they pay (the default).
+enum class ParallelMode {
+  WherePays,  ///< the cost model decides: the sequential kernel below its size or on poor splits
+  Always,     ///< the concurrent rounds, whatever the size and the input (tests, bench_parallel)
+};
+
+/// The cost model's inputs, measured on this project's benchmarks (the parallel page shows
+/// them and the table that checks them). A second thread pays only when (1) each thread gets
+/// at least minPointsPerThread points: below that the fixed costs of the threads (starting
+/// them, cutting the slabs, the first rounds alone, the deferred insertions) outweigh the
+/// shared insertions; and (2) the slabs split the mesh: a sample of sampleSize points is
+/// triangulated by the sequential kernel and cut at the x-quantiles the rounds would use, and
+/// the share of its vertices on a triangle that crosses a cut (a stand-in for the insertions
+/// a slab would defer) is at most maxCutShareRatio times what uniform points give.
+struct ParallelModel {
+  static constexpr std::size_t minPointsPerThread = 300000;
+  static constexpr std::size_t sampleSize = 2048;
+  static constexpr double maxCutShareRatio = 3.0;
+};
+
+/// The predictor of how well slabs split a point set (ParallelModel, (2)).
+struct SplitForecast {
+  double cutShare = 0;         ///< share of the sample's vertices on a triangle across a cut
+  double uniformCutShare = 0;  ///< the same for a uniform sample of the same size
+  double ratio = 0;            ///< cutShare / uniformCutShare
+};
+
+/// The forecast for xy cut into `threads` slabs; a sample with no triangulation (all collinear,
+/// fewer than three distinct points) gives cutShare 1.
+SplitForecast forecastSplit(const std::vector<double>& xy, int threads);
+
+/// What the cost model decides for xy with `threads` threads asked for (mode WherePays), and
+/// the forecast it used (zero when the size or the cores decided first).
+struct ThreadDecision {
+  int threads = 1;
+  ParallelReason reason = ParallelReason::OneRequested;
+  SplitForecast forecast;
+};
+ThreadDecision decideThreads(const std::vector<double>& xy, int threads);
+
 /// What the parallel run did, beside the FastStats of the result.
 struct ParallelStats {
-  int threads = 1;                    ///< threads used (1: the sequential kernel was called)
+  int threadsRequested = 1;           ///< threads the call asked for
+  int threadsUsed = 1;                ///< threads used (1: the sequential kernel was called)
+  ParallelReason reason = ParallelReason::OneRequested;  ///< why threadsUsed threads
+  SplitForecast forecast;             ///< the cost model's forecast, when it was made
+  double decisionSeconds = 0;         ///< time the cost model took (the sample's triangulation)
   std::uint64_t parallelPoints = 0;   ///< points handed to the concurrent rounds
   std::uint64_t deferred = 0;         ///< of those, insertions that met a lock and were redone alone
   int parallelRounds = 0;             ///< BRIO rounds inserted concurrently
@@ -36,13 +96,18 @@ enum class ParallelClaim {
   Locks,  ///< a try-lock (compare-and-swap) per triangle read or written
 };
 
-/// The number of threads `--threads` means by default: the machine's hardware threads (at least 1).
+/// The machine's hardware threads (at least 1): what `--threads auto` asks for, and the most the
+/// cost model of fastDelaunayParallel uses.
 int defaultThreadCount();
 
-/// Going further (parallel page): DT(S) of xy = x0 y0 x1 y1 ... with `threads` threads. threads
-/// <= 1 calls fastDelaunay(xy, opt) itself. Otherwise the small first BRIO rounds (opt.order
+/// Going further (parallel page): DT(S) of xy = x0 y0 x1 y1 ... with up to `threads` threads.
+/// With mode WherePays (the default) the cost model (decideThreads, ParallelModel) picks the
+/// number: at most the machine's hardware threads, and the sequential kernel (fastDelaunay
+/// itself) below the model's size or where the slabs would not split; pstats says which and
+/// why. threads <= 1 calls fastDelaunay(xy, opt). With more than one thread the small first
+/// BRIO rounds (opt.order
 /// must be FastOrder::RadixBrio) are inserted by one thread, and each larger round is shared
-/// among `threads` threads (claim: Slabs, each thread the round's points in one slab of x, cut
+/// among the threads (claim: Slabs, each thread the round's points in one slab of x, cut
 /// at the x-quantiles of a sample of the round, in Hilbert order; Locks, consecutive pieces of the round's
 /// Hilbert order), inserted concurrently; insertions that need another thread's triangles are
 /// redone by one thread after the round. The result is the
@@ -54,10 +119,11 @@ int defaultThreadCount();
 /// fastDelaunay, and std::invalid_argument for a ladder switch or another order when threads >
 /// 1. A round is
 /// inserted concurrently when each thread gets at least minPiece points of it (the tests make it
-/// small, to make threads meet on small inputs).
+/// small, and the mode Always, to make threads meet on small inputs).
 FastResult fastDelaunayParallel(const std::vector<double>& xy, int threads,
                                 const FastOptions& opt = {}, ParallelStats* pstats = nullptr,
-                                int minPiece = 2048, ParallelClaim claim = ParallelClaim::Slabs);
+                                int minPiece = 2048, ParallelClaim claim = ParallelClaim::Slabs,
+                                ParallelMode mode = ParallelMode::WherePays);
 
 /// The parallel kernel's machinery run by one thread, for measurement: the same rounds, relaxed
 /// atomic access, claim (one slab, the whole plane, or the locks) and deferred insertions as

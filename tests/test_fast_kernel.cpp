@@ -404,7 +404,9 @@ TEST_CASE("fast kernel the x86-64-v3 build and the baseline build make the same 
       CHECK(a.stats.incircle[s] == b.stats.incircle[s]);
     }
   }
-  // Two threads: the option reaches the threads' loops too.
-  CHECK(dt::fastDelaunayParallel(p, 2, {}, nullptr, 64).stats.x86_64_v3 == v3);
-  CHECK_FALSE(dt::fastDelaunayParallel(p, 2, base, nullptr, 64).stats.x86_64_v3);
+  // Two threads (whatever the cost model would choose): the option reaches the threads' loops too.
+  const auto Slabs = dt::ParallelClaim::Slabs;
+  const auto Always = dt::ParallelMode::Always;
+  CHECK(dt::fastDelaunayParallel(p, 2, {}, nullptr, 64, Slabs, Always).stats.x86_64_v3 == v3);
+  CHECK_FALSE(dt::fastDelaunayParallel(p, 2, base, nullptr, 64, Slabs, Always).stats.x86_64_v3);
 }

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <map>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -28,12 +30,14 @@ Tris canonical(Tris t) {
   return t;
 }
 
-// Runs the parallel kernel, validates the result exactly (every point not reported as a
-// duplicate must be a vertex), and returns it.
+constexpr dt::ParallelMode kAlways = dt::ParallelMode::Always;
+
+// Runs the concurrent rounds (whatever the cost model would choose), validates the result
+// exactly (every point not reported as a duplicate must be a vertex), and returns it.
 dt::FastResult parallelChecked(const dttest::XY& p, int threads, int minPiece,
                                dt::ParallelStats* ps = nullptr,
                                dt::ParallelClaim claim = dt::ParallelClaim::Slabs) {
-  dt::FastResult r = dt::fastDelaunayParallel(p, threads, {}, ps, minPiece, claim);
+  dt::FastResult r = dt::fastDelaunayParallel(p, threads, {}, ps, minPiece, claim, kAlways);
   std::vector<char> must(p.size() / 2, 1);
   for (const auto& d : r.duplicates) must[std::size_t(d.first)] = 0;
   const dt::CheckReport c = dt::checkDelaunay(p, r.tri, &must);
@@ -60,7 +64,8 @@ TEST_CASE("parallel the same triangulation as the sequential kernel in general p
           CAPTURE(int(claim));
           dt::ParallelStats ps;
           const dt::FastResult r = parallelChecked(p, threads, minPiece, &ps, claim);
-          CHECK(ps.threads == threads);
+          CHECK(ps.threadsUsed == threads);
+          CHECK(ps.reason == dt::ParallelReason::Concurrent);
           CHECK(r.stats.insertions == n);
           CHECK(canonical(r.tri) == seq);
           deferred += ps.deferred;
@@ -166,7 +171,8 @@ TEST_CASE("parallel the command line gives the same triangles with one and two t
 TEST_CASE("parallel numbers the output in insertion order and reports progress on request") {
   dttest::XY p = dttest::uniformPoints(60000, 5);
   p.insert(p.end(), {p[10], p[11], p[20], p[21]});  // two duplicates
-  const dt::FastResult plain = dt::fastDelaunayParallel(p, 2, {}, nullptr, 64);
+  const dt::FastResult plain =
+      dt::fastDelaunayParallel(p, 2, {}, nullptr, 64, dt::ParallelClaim::Slabs, kAlways);
   dt::FastOptions o;
   o.insertionNumbering = true;
   o.progressEvery = 1000;
@@ -177,7 +183,8 @@ TEST_CASE("parallel numbers the output in insertion order and reports progress o
     last = done;
     ++calls;
   };
-  const dt::FastResult r = dt::fastDelaunayParallel(p, 2, o, nullptr, 64);
+  const dt::FastResult r =
+      dt::fastDelaunayParallel(p, 2, o, nullptr, 64, dt::ParallelClaim::Slabs, kAlways);
   REQUIRE(r.inserted.size() == p.size() / 2);
   REQUIRE(r.points.size() == p.size());
   for (std::size_t i = 0; i < r.inserted.size(); ++i) {
@@ -206,7 +213,7 @@ TEST_CASE("parallel the shared core alone gives the sequential triangulation and
     dt::ParallelStats ps;
     const dt::FastResult r = dt::fastDelaunaySharedCoreAlone(p, {}, &ps, claim);
     CHECK(canonical(r.tri) == seq);
-    CHECK(ps.threads == 1);
+    CHECK(ps.threadsUsed == 1);
     CHECK(ps.parallelPoints > 90000);
     if (claim == dt::ParallelClaim::Locks) CHECK(ps.deferred == 0);
     CHECK(ps.deferred < ps.parallelPoints / 100);
@@ -221,8 +228,144 @@ TEST_CASE("parallel the shared core alone gives the sequential triangulation and
   // Two threads: the busy time is summed over both, so it may exceed the rounds' wall time,
   // but not twice it.
   dt::ParallelStats ps;
-  const dt::FastResult r = dt::fastDelaunayParallel(p, 2, {}, &ps);
+  const dt::FastResult r =
+      dt::fastDelaunayParallel(p, 2, {}, &ps, 2048, dt::ParallelClaim::Slabs, kAlways);
   CHECK(canonical(r.tri) == seq);
+  CHECK(ps.parallelPoints > 0);
   CHECK(ps.busySeconds <= 2 * ps.concurrentSeconds);
   CHECK(ps.loneSeconds + ps.concurrentSeconds + ps.finishSeconds <= r.stats.insertSeconds);
+}
+
+namespace {
+
+// The cost model's decision for p with two threads asked for, and the result checked against
+// the sequential kernel's triangles (the same whatever the model chose, p in general position)
+// or, with `unique` false, exactly validated.
+dt::ParallelStats decided(const dttest::XY& p, bool unique) {
+  dt::ParallelStats ps;
+  const dt::FastResult r = dt::fastDelaunayParallel(p, 2, {}, &ps);
+  if (unique) {
+    CHECK(canonical(r.tri) == canonical(dt::fastDelaunay(p).tri));
+  } else {
+    const dt::CheckReport c = dt::checkDelaunay(p, r.tri);
+    INFO(c.error);
+    CHECK(c.ok);
+  }
+  CHECK(ps.threadsRequested == 2);
+  return ps;
+}
+
+// What the model says when it sees the input (the machine has a second core).
+dt::ParallelReason onTwoCores(dt::ParallelReason r) {
+  return dt::defaultThreadCount() >= 2 ? r : dt::ParallelReason::OneCore;
+}
+
+}  // namespace
+
+TEST_CASE("parallel the cost model runs one thread below its size and says why") {
+  const std::size_t least = 2 * dt::ParallelModel::minPointsPerThread;
+  const dt::ParallelStats small = decided(dttest::uniformPoints(30000, 4), true);
+  CHECK(small.threadsUsed == 1);
+  CHECK(small.reason == onTwoCores(dt::ParallelReason::TooFewPoints));
+  CHECK(small.parallelPoints == 0);
+  const dt::ParallelStats justBelow = decided(dttest::uniformPoints(least - 1, 5), true);
+  CHECK(justBelow.threadsUsed == 1);
+  CHECK(justBelow.reason == onTwoCores(dt::ParallelReason::TooFewPoints));
+  // One thread asked for: the sequential kernel, and that reason.
+  dt::ParallelStats one;
+  dt::fastDelaunayParallel(dttest::uniformPoints(1000, 6), 1, {}, &one);
+  CHECK(one.threadsUsed == 1);
+  CHECK(one.reason == dt::ParallelReason::OneRequested);
+}
+
+TEST_CASE("parallel the cost model shares uniform points from its size on") {
+  const std::size_t least = 2 * dt::ParallelModel::minPointsPerThread;
+  const dt::ParallelStats ps = decided(dttest::uniformPoints(least, 8), true);
+  const bool two = dt::defaultThreadCount() >= 2;
+  CHECK(ps.threadsUsed == (two ? 2 : 1));
+  CHECK(ps.reason == onTwoCores(dt::ParallelReason::Concurrent));
+  if (two) {
+    CHECK(ps.parallelPoints > least / 2);  // the large rounds went to the threads
+    CHECK(ps.forecast.ratio > 0);
+    CHECK(ps.forecast.ratio <= dt::ParallelModel::maxCutShareRatio);
+  }
+}
+
+TEST_CASE("parallel the cost model runs one thread where the slabs cannot split") {
+  const std::size_t n = 2 * dt::ParallelModel::minPointsPerThread + 1000;
+  // Every point of a circle is on the hull, whose ghosts no slab may take; points with a tiny
+  // spread in x put every triangle across the cut. Both are above the model's size.
+  const dt::ParallelStats circle = decided(dt::circlePoints(n), false);
+  CHECK(circle.threadsUsed == 1);
+  CHECK(circle.reason == onTwoCores(dt::ParallelReason::SlabsDoNotSplit));
+  dttest::XY thin = dttest::uniformPoints(n, 9);
+  for (std::size_t i = 0; i < thin.size(); i += 2) thin[i] = 1 + thin[i] * 1e-9;
+  const dt::ParallelStats flat = decided(thin, false);
+  CHECK(flat.threadsUsed == 1);
+  CHECK(flat.reason == onTwoCores(dt::ParallelReason::SlabsDoNotSplit));
+  if (dt::defaultThreadCount() >= 2) {
+    CHECK(circle.forecast.cutShare == 1.0);
+    CHECK(flat.forecast.ratio > dt::ParallelModel::maxCutShareRatio);
+  }
+}
+
+TEST_CASE("parallel the split forecast tells uniform points from a circle and an exponent spread") {
+  // The forecast alone (no size gate): uniform points give about the reference share, the
+  // points of a circle are all on the hull, an exponent spread crowds the cut.
+  const dt::SplitForecast u = dt::forecastSplit(dttest::uniformPoints(100000, 10), 2);
+  CHECK(u.uniformCutShare > 0);
+  CHECK(u.uniformCutShare < 0.2);
+  CHECK(u.ratio > 0.5);
+  CHECK(u.ratio < 1.5);
+  CHECK(dt::forecastSplit(dt::circlePoints(5000), 2).cutShare == 1.0);
+  CHECK(dt::forecastSplit(dt::exponentSpreadPoints(20000, 11), 2).ratio >
+        dt::ParallelModel::maxCutShareRatio);
+  // Three slabs cut more than two.
+  CHECK(dt::forecastSplit(dttest::uniformPoints(100000, 10), 3).uniformCutShare > u.uniformCutShare);
+  // The share itself, counted another way on a set smaller than the sample (so the sample is
+  // the set): vertices of triangles with vertices on both sides of the median x, or on a hull
+  // edge (an edge of one triangle only).
+  const dttest::XY q = dttest::uniformPoints(1500, 13);
+  const std::vector<dt::Tri> tri = dt::fastDelaunay(q).tri;
+  std::vector<double> xs;
+  for (std::size_t i = 0; i < q.size(); i += 2) xs.push_back(q[i]);
+  std::nth_element(xs.begin(), xs.begin() + 750, xs.end());
+  const double cut = xs[750];
+  std::map<std::pair<int, int>, int> edgeUses;
+  std::set<int> cutVertices;
+  for (const dt::Tri& t : tri) {
+    int right = 0;
+    for (int v : t) right += q[2 * std::size_t(v)] >= cut;
+    if (right == 1 || right == 2) cutVertices.insert(t.begin(), t.end());
+    for (int k = 0; k < 3; ++k) ++edgeUses[std::minmax(t[k], t[(k + 1) % 3])];
+  }
+  for (const auto& e : edgeUses)
+    if (e.second == 1) cutVertices.insert({e.first.first, e.first.second});
+  CHECK(dt::forecastSplit(q, 2).cutShare == doctest::Approx(double(cutVertices.size()) / 1500));
+  // A collinear sample has no triangulation: it cannot be split.
+  CHECK(dt::forecastSplit({0, 0, 1, 1, 2, 2, 3, 3}, 2).cutShare == 1.0);
+}
+
+TEST_CASE("parallel the command line prints the threads used and why") {
+  const dttest::XY p = dttest::uniformPoints(20000, 12);
+  const std::string in = dttest::tmpPath("parallel_stats_in.node");
+  dttest::writeText(in, dttest::nodeText(p));
+  const std::string out = dttest::tmpPath("parallel_stats_out");
+  for (const char* t : {"2", "auto"}) {
+    const dttest::CliResult r = dttest::runCli("'" + in + "' -o '" + out + "' --stats --threads " + t);
+    INFO(r.err);
+    REQUIRE(r.status == 0);
+    CHECK(r.out.find("\nthreads_used: 1\n") != std::string::npos);
+    CHECK(r.out.find(std::string("\nthreads_reason: ") +
+                     dt::parallelReasonName(onTwoCores(dt::ParallelReason::TooFewPoints)) + "\n") !=
+          std::string::npos);
+  }
+  const dttest::CliResult one = dttest::runCli("'" + in + "' -o '" + out + "' --stats");
+  CHECK(one.out.find("\nthreads_reason: one_thread_requested\n") != std::string::npos);
+  const dttest::CliResult listings =
+      dttest::runCli("'" + in + "' -o '" + out + "' --stats --threads 2 --kernel listings");
+  CHECK(listings.out.find("\nthreads_reason: sequential_order_or_kernel\n") != std::string::npos);
+  const dttest::CliResult bad = dttest::runCli("'" + in + "' -o '" + out + "' --threads automatic");
+  CHECK(bad.status == 2);
+  CHECK(bad.err.find("'auto'") != std::string::npos);
 }

@@ -6,16 +6,21 @@
 // covers everything from the coordinates to the triangulation (sorting included). Writes
 // table_bench.{md,csv,html}.
 //
-// The fast kernel runs once sequentially and once with all cores (code/fast_parallel.h); CPU
-// time sums the threads, so the parallel gain shows in the wall time. The fast kernels' results
-// are validated exactly (dt::checkDelaunay, in the first repetition) after the timing; the peak
+// The fast kernel runs sequentially, with as many threads as the machine has where the cost
+// model of code/fast_parallel.h lets them run (what `--threads auto` does), and with them
+// forced; CPU time sums the threads, so the parallel gain shows in the wall time. The methods
+// run in turn, A B C D A B C D ..., so that a burst of load hits them all; each timing is the
+// median of the runs with their spread (min-max), and the threads' ratios to one thread are
+// taken run by run. Writes table_thread_model.{md,csv,html} too: the cost model's forecast
+// and decision for each set beside the measured ratios. The fast kernels' results are
+// validated exactly (dt::checkDelaunay, in the first repetition) after the timing; the peak
 // is taken before the check.
 //
 //   bench_kernels [--out DIR] [--quick] [--max-n N] [--reps R]
-//     --quick     10^4 and 10^5 points, one repetition
+//     --quick     10^4 and 10^5 points, three repetitions
 //     --max-n N   largest size (default 10^6; 10^7 adds the 10^7 row, several minutes;
 //                 10^8 adds uniform points at 10^8 for the fast kernels only, about 10 GB)
-//     --reps R    repetitions per run, the fastest is kept (default 3; 1 from 10^7)
+//     --reps R    repetitions per run, the median is kept (default 5; 1 from 10^7)
 #include <malloc.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
@@ -87,15 +92,20 @@ std::string loadAverage() {
   return ch::fmt("%.2f %.2f %.2f", a[0], a[1], a[2]);
 }
 
-enum class Method { Listings, Fast, FastParallel, Cgal };
+enum class Method { Listings, Fast, FastParallel, FastForced, Cgal };
 std::string methodName(Method m) {
   switch (m) {
     case Method::Listings: return "listings + Hilbert";
     case Method::Fast: return "fast kernel";
     case Method::FastParallel:
-      return "fast kernel, " + std::to_string(dt::defaultThreadCount()) + " threads";
+      return "fast kernel, up to " + std::to_string(dt::defaultThreadCount()) + " threads (cost model)";
+    case Method::FastForced:
+      return "fast kernel, " + std::to_string(dt::defaultThreadCount()) + " threads forced";
     default: return "CGAL 2D";
   }
+}
+bool isFast(Method m) {
+  return m == Method::Fast || m == Method::FastParallel || m == Method::FastForced;
 }
 
 // The point sets, from fixed seeds. Grid: the integer points of a square (about n of them,
@@ -157,10 +167,14 @@ std::vector<double> makePoints(Family f, std::size_t n) {
 }
 
 // One triangulation; returns the number of finite triangles. The fast kernels' triangles go to
-// `tri`, for the exact check after the timing.
-long triangulate(Method m, const std::vector<double>& xy, std::vector<dt::Tri>& tri) {
-  if (m == Method::Fast || m == Method::FastParallel) {
-    tri = dt::fastDelaunayParallel(xy, m == Method::Fast ? 1 : dt::defaultThreadCount()).tri;
+// `tri`, for the exact check after the timing, and what the threads did to `ps`.
+long triangulate(Method m, const std::vector<double>& xy, std::vector<dt::Tri>& tri,
+                 dt::ParallelStats& ps) {
+  if (isFast(m)) {
+    const int threads = m == Method::Fast ? 1 : dt::defaultThreadCount();
+    const dt::ParallelMode mode =
+        m == Method::FastForced ? dt::ParallelMode::Always : dt::ParallelMode::WherePays;
+    tri = dt::fastDelaunayParallel(xy, threads, {}, &ps, 2048, dt::ParallelClaim::Slabs, mode).tri;
     return long(tri.size());
   }
   if (m == Method::Listings) {
@@ -192,10 +206,15 @@ struct Measure {
   long triangles = 0;
   long peakKB = 0;
   std::size_t points = 0;
+  int threadsUsed = 1;
+  dt::ParallelReason reason = dt::ParallelReason::OneRequested;
+  double cutShare = 0, cutRatio = 0;  // the cost model's forecast (0: not made)
+  double decisionSeconds = 0;
 };
 
 // Runs one method in a child process: the child builds the points, triangulates, reports time
 // and count through a pipe; the parent reads the child's peak resident memory from wait4.
+constexpr int kOut = 10;
 Measure runChild(Method m, Family f, std::size_t n, bool check) {
   Measure r;
   int fd[2];
@@ -208,17 +227,27 @@ Measure runChild(Method m, Family f, std::size_t n, bool check) {
     // A fixed mmap threshold: glibc otherwise raises it after each large free, and the next
     // arrays then land in a heap it does not return, which inflates the peak for every method.
     mallopt(M_MMAP_THRESHOLD, 128 * 1024);
-    double out[5] = {0, -1, 0, 0, 0};
+    double out[kOut] = {0, -1, 0, 0, 0, 1, 0, 0, 0, 0};
     try {
       const std::vector<double> xy = makePoints(f, n);
       std::vector<dt::Tri> tri;
+      dt::ParallelStats ps;
       const double t0 = cpuSeconds(), w0 = wallSeconds();
-      const long count = triangulate(m, xy, tri);
+      const long count = triangulate(m, xy, tri, ps);
       out[0] = cpuSeconds() - t0;
       out[3] = wallSeconds() - w0;
       out[4] = double(dt::peakResidentKB());
       out[2] = double(xy.size() / 2);
-      if (check && (m == Method::Fast || m == Method::FastParallel)) {
+      out[5] = ps.threadsUsed;
+      out[6] = double(int(ps.reason));
+      // The forecast for the model's table even where the size decided first (after the clock).
+      const dt::SplitForecast fc = m == Method::FastParallel && ps.forecast.cutShare == 0
+                                       ? dt::forecastSplit(xy, std::max(2, dt::defaultThreadCount()))
+                                       : ps.forecast;
+      out[7] = fc.cutShare;
+      out[8] = fc.ratio;
+      out[9] = ps.decisionSeconds;
+      if (check && isFast(m)) {
         const dt::CheckReport c = dt::checkDelaunay(xy, tri);
         if (!c.ok) throw std::runtime_error("exact check failed: " + c.error);
       }
@@ -230,7 +259,7 @@ Measure runChild(Method m, Family f, std::size_t n, bool check) {
     _exit(w == ssize_t(sizeof out) ? 0 : 1);
   }
   close(fd[1]);
-  double in[5] = {0, -1, 0, 0, 0};
+  double in[kOut] = {0, -1, 0, 0, 0, 1, 0, 0, 0, 0};
   const ssize_t got = read(fd[0], in, sizeof in);
   close(fd[0]);
   int status = 0;
@@ -243,6 +272,54 @@ Measure runChild(Method m, Family f, std::size_t n, bool check) {
   r.points = std::size_t(in[2]);
   r.wall = in[3];
   r.peakKB = in[4] > 0 ? long(in[4]) : ru.ru_maxrss;  // before the check when it was read
+  r.threadsUsed = int(in[5]);
+  r.reason = dt::ParallelReason(int(in[6]));
+  r.cutShare = in[7];
+  r.cutRatio = in[8];
+  r.decisionSeconds = in[9];
+  return r;
+}
+
+// The median of some values (the mean of the middle two for an even count), and their spread.
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const std::size_t k = v.size() / 2;
+  return v.empty() ? 0 : v.size() % 2 ? v[k] : (v[k - 1] + v[k]) / 2;
+}
+std::string spread(const std::vector<double>& v, const char* format) {
+  if (v.size() < 2) return "-";
+  const auto mm = std::minmax_element(v.begin(), v.end());
+  return ch::fmt(format, *mm.first) + "-" + ch::fmt(format, *mm.second);
+}
+
+// The runs of one method on one set: each run's measure, and their medians (peak: the largest).
+struct Runs {
+  std::vector<Measure> all;
+  bool ok() const { return !all.empty() && all.back().ok; }
+  std::vector<double> cpu() const {
+    std::vector<double> v;
+    for (const Measure& x : all) v.push_back(x.seconds);
+    return v;
+  }
+  std::vector<double> wall() const {
+    std::vector<double> v;
+    for (const Measure& x : all) v.push_back(x.wall);
+    return v;
+  }
+  Measure summary() const {
+    Measure m = all.back();
+    m.seconds = median(cpu());
+    m.wall = median(wall());
+    for (const Measure& x : all) m.peakKB = std::max(m.peakKB, x.peakKB);
+    return m;
+  }
+};
+
+// Run by run, the wall time of a against b (the same repetition: run next to each other).
+std::vector<double> pairedRatios(const Runs& a, const Runs& b) {
+  std::vector<double> r;
+  for (std::size_t k = 0; k < a.all.size() && k < b.all.size(); ++k)
+    if (a.all[k].ok && b.all[k].ok && b.all[k].wall > 0) r.push_back(a.all[k].wall / b.all[k].wall);
   return r;
 }
 
@@ -252,15 +329,16 @@ int main(int argc, char** argv) {
   const ch::Program p{"bench_kernels",
                       "The kernels against CGAL on nine point families (no figure); --max-n 10000000 adds 10^7, 100000000 adds 10^8.",
                       1000, 100000000, {},
-                      {{"--reps", "N", "runs per kernel, the best kept (default 3, 1 with --quick)", 1, 1000}}};
+                      {{"--reps", "N", "runs per kernel, the median kept (default 5, 3 with --quick)", 1, 1000}}};
   const ch::Options o = ch::parseOptions(argc, argv, p);
-  const int reps = int(o.number("--reps", o.quick ? 1 : 3));
+  const int reps = int(o.number("--reps", o.quick ? 3 : 5));
   std::vector<std::size_t> sizes = o.quick ? std::vector<std::size_t>{10000, 100000}
                                            : std::vector<std::size_t>{100000, 1000000};
   const std::size_t maxN = o.maxN > 0 ? std::size_t(o.maxN) : (o.quick ? 100000 : 1000000);
   if (maxN >= 10000000) sizes.push_back(10000000);
   if (maxN >= 100000000) sizes.push_back(100000000);
-  std::vector<Method> methods = {Method::Listings, Method::Fast, Method::FastParallel};
+  std::vector<Method> methods = {Method::Listings, Method::Fast, Method::FastParallel,
+                                 Method::FastForced};
 #ifdef DT_HAVE_CGAL
   methods.push_back(Method::Cgal);
   const bool haveCgal = true;
@@ -271,16 +349,38 @@ int main(int argc, char** argv) {
 #endif
 
   ch::Table t;
-  t.caption = std::string("Kernels on the same points, one process per run, best of ") +
+  t.caption = std::string("Kernels on the same points, one process per run, the kernels in turn, "
+                          "median of ") +
               std::to_string(reps) +
-              " (CPU time, user + system, from the coordinates to the triangles, sorting "
-              "included; "
+              " runs and their spread, min-max (the listings at 10^6 and beyond: one run; CPU "
+              "time, user + system, from the coordinates to the triangles, sorting included; "
               "peak: the whole process, points included; ratios to " +
               (haveCgal ? "CGAL" : "the listings") +
               "; wall: elapsed time of the same run, load average " + loadAverage() +
               " at the start; the fast kernels' triangles are validated exactly)";
-  t.header = {"points", "n", "kernel", "CPU time (s)", "time ratio", "wall (s)", "wall ratio",
-              "peak (MB)", "peak ratio", "triangles", "same count"};
+  t.header = {"points", "n", "kernel", "CPU time (s)", "CPU min-max", "time ratio", "wall (s)",
+              "wall min-max", "wall ratio", "peak (MB)", "peak ratio", "threads used", "triangles",
+              "same count"};
+  // The cost model's table: its forecast and decision on each set, against the measured ratios.
+  const int cores = dt::defaultThreadCount();
+  ch::Table mt;
+  mt.caption = "The cost model of the parallel kernel on bench_kernels' sets (this run): the share "
+               "of a sample's vertices on a triangle no slab can take, against uniform points "
+               "(computed for every set; it decides only at the model's size and above), "
+               "the threads it chose of " + std::to_string(cores) +
+               " and why, and the wall time of " + std::to_string(cores) +
+               " threads against one, median and spread of the runs paired in turn, forced and as "
+               "the model chose";
+  mt.header = {"points", "n", "cut share", "against uniform", "threads used", "reason",
+               "forced / 1 thread", "forced min-max", "model / 1 thread", "model min-max",
+               "model slower than 1 thread by over 5 %"};
+  // Over all sets and sizes: the runs in which the threads (as the model chose) beat one
+  // thread, and the worst median ratio; 'noise' is the margin a ratio may exceed 1 by.
+  const double noise = 1.05;
+  std::size_t pairsBeat = 0, pairs = 0;
+  double worstTwo = 0, decisionShare = 0;
+  std::string worstTwoFamily, lostOn;
+  std::size_t worstTwoN = 0;
   const Family families[] = {Family::Uniform,        Family::Clustered, Family::Grid,
                              Family::Circle,         Family::Outlier,   Family::ClusterBeside,
                              Family::LogRadius,      Family::ExponentSpread, Family::Mixed300};
@@ -305,35 +405,24 @@ int main(int argc, char** argv) {
       if (familySize(f, n) < n && n != sizes.front()) continue;  // its one size: measured once
       // 10^8: the fast kernels on uniform points only (CGAL and the listings would take long).
       if (n >= 100000000 && f != Family::Uniform) continue;
-      std::vector<Measure> res;
       std::vector<Method> ran;
-      for (Method m : methods) {
-        if (n >= 100000000 && m != Method::Fast && m != Method::FastParallel) continue;
-        // The listings at 10^7 take minutes: once is enough.
-        const int r = (n >= 10000000 || (m == Method::Listings && n >= 1000000)) ? 1 : reps;
-        if (n >= 100000000) std::cout << "running " << methodName(m) << " at 10^8..." << std::endl;
-        Measure best;
-        for (int k = 0; k < r; ++k) {
+      for (Method m : methods)
+        if (n < 100000000 || m == Method::Fast || m == Method::FastParallel) ran.push_back(m);
+      // In turn: repetition k of every method before repetition k + 1 of any.
+      std::vector<Runs> runsOf(ran.size());
+      for (int k = 0; k < reps; ++k)
+        for (std::size_t j = 0; j < ran.size(); ++j) {
+          const Method m = ran[j];
+          // The listings at 10^6 and beyond take long, and everything at 10^7: once is enough.
+          const int r = (n >= 10000000 || (m == Method::Listings && n >= 1000000)) ? 1 : reps;
+          if (k >= r || (k > 0 && !runsOf[j].ok())) continue;
+          if (n >= 100000000) std::cout << "running " << methodName(m) << " at 10^8..." << std::endl;
           // Validated once (the first repetition): the same points every time.
-          const Measure x = runChild(m, f, familySize(f, n), k == 0);
-          if (!x.ok) {
-            best = x;
-            break;
-          }
-          if (!best.ok || x.seconds < best.seconds) {  // the least CPU time, and the least wall
-            const long peak = std::max(best.peakKB, x.peakKB);
-            const double wall = best.ok ? std::min(best.wall, x.wall) : x.wall;
-            best = x;
-            best.peakKB = peak;
-            best.wall = wall;
-          } else {
-            best.wall = std::min(best.wall, x.wall);
-          }
+          runsOf[j].all.push_back(runChild(m, f, familySize(f, n), k == 0));
+          if (k + 1 == std::min(r, reps) || !runsOf[j].ok()) progress.update(++done);
         }
-        res.push_back(best);
-        ran.push_back(m);
-        progress.update(++done);
-      }
+      std::vector<Measure> res;
+      for (const Runs& r : runsOf) res.push_back(r.ok() ? r.summary() : r.all.back());
       // The reference: CGAL if present, else the listings; none at 10^8 (neither runs there).
       const Measure* base = nullptr;
       for (std::size_t k = 0; k < ran.size(); ++k)
@@ -345,12 +434,15 @@ int main(int argc, char** argv) {
         for (const Measure& y : res) same = same && y.ok && y.triangles == x.triangles;
         t.add({familyName(f), std::to_string(x.points), methodName(ran[k]),
                x.ok ? ch::fmt("%.3f", x.seconds) : "failed",
+               x.ok ? spread(runsOf[k].cpu(), "%.3f") : "-",
                x.ok && ratios ? ch::fmt("%.2f", x.seconds / base->seconds) : "-",
                x.ok ? ch::fmt("%.3f", x.wall) : "-",
+               x.ok ? spread(runsOf[k].wall(), "%.3f") : "-",
                x.ok && ratios ? ch::fmt("%.2f", x.wall / base->wall) : "-",
                ch::fmt("%.0f", double(x.peakKB) / 1024),
                ratios && base->peakKB > 0 ? ch::fmt("%.2f", double(x.peakKB) / double(base->peakKB))
                                           : "-",
+               isFast(ran[k]) && x.ok ? std::to_string(x.threadsUsed) : "-",
                std::to_string(x.triangles), same ? "yes" : "NO"});
         const bool lastSize = n == verdictN || familySize(f, verdictN) < verdictN;
         if (haveCgal && lastSize && x.ok && ratios && ran[k] != Method::Cgal) {
@@ -376,15 +468,85 @@ int main(int argc, char** argv) {
                              double(x.peakKB) / 1024)
                   << "\n";
       }
+      // The threads against one thread, run by run: as the model chose, and forced.
+      const Runs *one = nullptr, *model = nullptr, *forced = nullptr;
+      for (std::size_t k = 0; k < ran.size(); ++k) {
+        if (!runsOf[k].ok()) continue;
+        if (ran[k] == Method::Fast) one = &runsOf[k];
+        if (ran[k] == Method::FastParallel) model = &runsOf[k];
+        if (ran[k] == Method::FastForced) forced = &runsOf[k];
+      }
+      if (one && model) {
+        const std::vector<double> mr = pairedRatios(*model, *one);
+        const std::vector<double> fr = forced ? pairedRatios(*forced, *one) : std::vector<double>{};
+        for (double r : mr) pairsBeat += r < 1.0;
+        pairs += mr.size();
+        const double med = median(mr);
+        if (med > worstTwo) {
+          worstTwo = med;
+          worstTwoFamily = familyName(f);
+          worstTwoN = familySize(f, n);
+        }
+        if (med > noise)
+          lostOn += std::string(lostOn.empty() ? "" : ", ") + familyName(f) + " at " +
+                    std::to_string(familySize(f, n));
+        const Measure& d = model->all.front();  // the decision is the same in every run
+        if (f == Family::Uniform && n == verdictN)
+          decisionShare = median([&] {
+            std::vector<double> v;
+            for (const Measure& x : model->all) v.push_back(x.decisionSeconds / x.wall);
+            return v;
+          }());
+        mt.add({familyName(f), std::to_string(familySize(f, n)),
+                d.cutShare > 0 ? ch::fmt("%.3f", d.cutShare) : "-",
+                d.cutShare > 0 ? ch::fmt("%.2f", d.cutRatio) : "-",
+                std::to_string(d.threadsUsed), dt::parallelReasonName(d.reason),
+                fr.empty() ? "-" : ch::fmt("%.2f", median(fr)), spread(fr, "%.2f"),
+                ch::fmt("%.2f", med), spread(mr, "%.2f"), med > noise ? "yes" : "no"});
+      }
     }
   }
+  // The two rows of the threads: how often they beat one thread, and their worst median ratio.
+  const std::string threadsName = methodName(Method::FastParallel);
+  t.add({"all sets", "all sizes", threadsName + ": runs faster than 1 thread (wall)", "-", "-",
+         "-", "-", "-",
+         pairs ? ch::fmt("%zu", pairsBeat) + " of " + std::to_string(pairs) : "-", "-", "-", "-",
+         "-", "-"});
+  t.add({"all sets", "all sizes", threadsName + ": worst median wall ratio to 1 thread", "-", "-",
+         "-", "-", "-",
+         pairs ? ch::fmt("%.2f", worstTwo) + " (" + worstTwoFamily + ", " +
+                     std::to_string(worstTwoN) + ")"
+               : "-",
+         "-", "-", "-", "-", "-"});
   t.emit(o, "table_bench");
+  mt.emit(o, "table_thread_model");
   ch::Values v(o, "bench_kernels");
   v.set("kernel.n", std::to_string(verdictN));
   v.num("kernel.speed_bound", speedBound, "%g");
   v.num("kernel.memory_bound", memoryBound, "%g");
   v.num("kernel.family_bound", familyBound, "%g");
   v.num("kernel.listings_bound", listingsBound, "%g");
+  // The cost model's inputs (fast_parallel.h) and what it gave in this run.
+  v.set("threads.cores", std::to_string(cores));
+  v.set("threads.reps", std::to_string(reps));
+  v.set("threads.min_points_per_thread", std::to_string(dt::ParallelModel::minPointsPerThread));
+  v.set("threads.sample_size", std::to_string(dt::ParallelModel::sampleSize));
+  v.num("threads.max_ratio", dt::ParallelModel::maxCutShareRatio, "%g");
+  v.num("threads.uniform_cut_share",
+        dt::forecastSplit(makePoints(Family::Uniform, 4096), std::max(2, cores)).uniformCutShare,
+        "%.3f");
+  v.num("threads.noise_percent", 100 * (noise - 1), "%.0f");
+  v.set("threads.beat", std::to_string(pairsBeat));
+  v.set("threads.pairs", std::to_string(pairs));
+  v.num("threads.worst_ratio", worstTwo, "%.2f");
+  v.set("threads.worst_family", worstTwoFamily.empty() ? "none" : worstTwoFamily);
+  v.set("threads.worst_n", std::to_string(worstTwoN));
+  v.num("threads.decision_percent", 100 * decisionShare, "%.2f");
+  v.set("threads.decision_n", std::to_string(verdictN));
+  v.verdict("threads.lost_verdict", lostOn.empty(),
+            "never slower than one thread beyond the noise margin",
+            "slower than one thread beyond the noise margin");
+  v.set("threads.lost_on", lostOn.empty() ? "none" : lostOn);
   if (haveCgal && uniformSpeedup > 0) {
     v.num("kernel.uniform_speedup", uniformSpeedup, "%.2f");
     v.verdict("kernel.speed_target", uniformSpeedup >= speedBound, "met", "missed");
