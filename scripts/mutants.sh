@@ -251,6 +251,14 @@ fast_files() {
     done
   done
   list+=$starts_programs
+  # Only the files the suite was built from (DT_TEST_FILES), when it names them.
+  if [ -n "$suite_files" ]; then
+    local kept="" item
+    for item in ${list//,/ }; do
+      [[ " $suite_files " == *" ${item#\*} "* ]] && [[ ,$kept, != *,$item,* ]] && kept+=",$item"
+    done
+    list=$kept
+  fi
   echo "${list#,}"
 }
 
@@ -300,6 +308,8 @@ run_tests() {
   run_pass 1 "$2" "--source-file=$slow_files"
 }
 build_tests || { echo "mutants: the unmutated code does not build"; tail -30 "$work/build.log"; exit 2; }
+# The test files the suite is built from, if the configuration names them (DT_TEST_FILES).
+suite_files=$(sed -n 's/^DT_TEST_FILES:[A-Z]*=//p' "$build/CMakeCache.txt" | tr ';,' '  ')
 if ! run_tests "$timeout_s" "$timeout_s"; then
   if [ -n "$timed_out" ]; then
     echo "mutants: the unmutated suite timed out ($timed_out; MUTANTS_TIMEOUT=$timeout_s): raise MUTANTS_TIMEOUT on a busy machine"
