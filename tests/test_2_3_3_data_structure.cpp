@@ -144,7 +144,8 @@ TEST_CASE("2.3.3 in 3D a facet has 1 or 2 tetrahedra but the tetrahedra around a
   CHECK(*cycleLengths.rbegin() >= 6);
   // A facet with three tetrahedra (not a manifold) is refused, not given a wrong ring.
   std::vector<dt::Tet> bad = {{0, 1, 2, 3}, {0, 1, 2, 4}, {0, 1, 2, 5}};
-  CHECK_THROWS_AS(dt::edgeRings(bad), std::logic_error);
+  CHECK_THROWS_WITH_AS(dt::edgeRings(bad), "edgeRings: a facet through an edge has more than two tetrahedra",
+                       std::logic_error);
   // 2D: every edge of a triangulation has 1 or 2 triangles, so a fixed 8-pointer record works.
   dt::Triangulation T;
   dt::delaunayTrglHull(T, dt::addVertices(T, dt::uniformPoints(500, 33)), dt::StartRule::LastCavity);
