@@ -48,7 +48,7 @@ const std::string kPage =
 
 }  // namespace
 
-TEST_CASE("citations: the book's pages cite every claim test and only tests that exist") {
+TEST_CASE("citations the book's pages cite every claim test and only tests that exist") {
   const Book b = realBook();
   REQUIRE(b.pages.size() > 10);
   REQUIRE(b.tests.size() > 100);
@@ -57,7 +57,7 @@ TEST_CASE("citations: the book's pages cite every claim test and only tests that
   CHECK(errors.empty());
 }
 
-TEST_CASE("citations: a stale citation and a missing one fail naming file and line") {
+TEST_CASE("citations a stale citation and a missing one fail naming file and line") {
   const std::vector<booktool::TestCase> tests = {
       {"2.3.4 the map makes 3 operations per triangle", "tests/t.cpp", 10},
       {"2.3.4 the walk visits sqrt(n) faces", "tests/t.cpp", 20},
@@ -77,7 +77,7 @@ TEST_CASE("citations: a stale citation and a missing one fail naming file and li
   CHECK(anyContains(errors, "tests/t.cpp:20: the claim test \"2.3.4 the walk visits about sqrt(n) faces\" is cited by no page"));
 }
 
-TEST_CASE("citations: a test of another section is refused unless the line names that section") {
+TEST_CASE("citations a test of another section is refused unless the line names that section") {
   const std::vector<booktool::TestCase> tests = {
       {"2.3.4 the map makes 3 operations per triangle", "tests/t.cpp", 10},
       {"2.2.1 super-triangles of any factor fail on some input", "tests/t.cpp", 40}};
@@ -93,7 +93,7 @@ TEST_CASE("citations: a test of another section is refused unless the line names
   CHECK(booktool::checkCitations(b.pages, b.tests).empty());
 }
 
-TEST_CASE("citations: a not-tested label and an empty test cell are refused") {
+TEST_CASE("citations a not-tested label and an empty test cell are refused") {
   const std::vector<booktool::TestCase> tests = {
       {"2.3.4 the map makes 3 operations per triangle", "tests/t.cpp", 10}};
   for (const char* cell : {"program only (no timed test)", "measured, not tested", ""}) {

@@ -27,7 +27,7 @@ Notes notesOf(const std::string& err) {
 
 }  // namespace
 
-TEST_CASE("cli delaunay2d names ten merged duplicates and counts the others for 10 11 and 13 copies") {
+TEST_CASE("cli messages delaunay2d names ten merged duplicates and counts the others for 10 11 and 13 copies") {
   // Four distinct points (lines 1-4), then `copies` copies of the second one (line 2).
   for (int copies : {10, 11, 13}) {
     CAPTURE(copies);
@@ -56,7 +56,7 @@ TEST_CASE("cli delaunay2d names ten merged duplicates and counts the others for 
   }
 }
 
-TEST_CASE("cli delaunay2d --method super names the line of the point too close to overflow") {
+TEST_CASE("cli messages delaunay2d --method super names the line of the point too close to overflow") {
   // Comments and blank lines make line numbers differ from point numbers; of two points near
   // the overflow threshold the farther one is named, wherever it stands in the file.
   struct Case {

@@ -29,7 +29,7 @@ const Pinned kPinned[] = {
 
 }  // namespace
 
-TEST_CASE("predicate stages are counted under their own name: one pinned input per stage for orient2d and incircle") {
+TEST_CASE("stage names the predicate stages are counted under their own name: one pinned input per stage for orient2d and incircle") {
   REQUIRE(sizeof(kPinned) / sizeof(kPinned[0]) == std::size_t(dt::pred::kStageCount));
   for (const Pinned& p : kPinned) {
     CAPTURE(p.name);

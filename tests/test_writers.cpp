@@ -113,7 +113,7 @@ double orient(const std::vector<double>& xy, const std::array<int, 3>& t) {
 
 }  // namespace
 
-TEST_CASE("writers: the .msh read back has the input's points in order and its triangles counter-clockwise") {
+TEST_CASE("writers the .msh read back has the input's points in order and its triangles counter-clockwise") {
   for (const Input& in : {input(300, 5, 1.0, 0, 0), input(200, 6, 1e-7, 1e6, -3e5), input(50, 7, 3e200, -1e201, 0)}) {
     const Msh m = readMsh(dt::mshText(in.xy, in.tri));
     REQUIRE(m.xy.size() == in.xy.size());
@@ -126,7 +126,7 @@ TEST_CASE("writers: the .msh read back has the input's points in order and its t
   }
 }
 
-TEST_CASE("writers: the SVG read back is the input scaled alike on both axes with y pointing down") {
+TEST_CASE("writers the SVG read back is the input scaled alike on both axes with y pointing down") {
   const int size = 640;
   for (const Input& in : {input(300, 8, 1.0, 0, 0), input(100, 9, 1e-9, 7, 7), input(60, 10, 1e300, -5e299, 1e299)}) {
     int width = 0, height = 0;
