@@ -14,6 +14,19 @@ namespace dt {
 /// an edge is shared by more than two faces (a non-manifold input).
 void computeAdjacencies(std::vector<Face*>& cavity);
 
+/// The work of one computeAdjacencies call on its std::map, counted by the map itself: the
+/// measure of 2.3.4's "one search/insert on a std::map per triangle" and of its O(N log N).
+struct AdjacencyCounts {
+  std::uint64_t searches = 0;     ///< map.find calls (one per edge of every face)
+  std::uint64_t inserts = 0;      ///< map.insert calls (an edge seen for the first time)
+  std::uint64_t erases = 0;       ///< map.erase calls (an edge met from its second face)
+  std::uint64_t comparisons = 0;  ///< key comparisons made by all of them
+  std::uint64_t largest = 0;      ///< the most edges the map held at once
+};
+
+/// The same, adding the map's operations to `counts`.
+void computeAdjacencies(std::vector<Face*>& cavity, AdjacencyCounts& counts);
+
 /// The same, adding to `comparisons` the number of edge comparisons its std::map made (the
 /// measure of the O(N log N) claim of 2.3.4; the tests count them).
 void computeAdjacencies(std::vector<Face*>& cavity, std::uint64_t& comparisons);

@@ -245,16 +245,20 @@ struct HilbertTables {
   }
 };
 
-std::uint64_t hilbertIndexByTable(std::uint32_t i, std::uint32_t j, int depth, int& s) {
+// `lookups`, when given, counts the table look-ups (HilbertWork).
+std::uint64_t hilbertIndexByTable(std::uint32_t i, std::uint32_t j, int depth, int& s,
+                                  std::uint64_t* lookups = nullptr) {
   static const HilbertTables T;
   std::uint64_t key = 0;
   int l = depth;
   for (; l % 4 != 0; --l) {
+    if (lookups) ++*lookups;
     const int d = T.one[s][(((i >> (l - 1)) & 1) << 1) | ((j >> (l - 1)) & 1)];
     key = (key << 2) | std::uint64_t(d & 3);
     s = d >> 8;
   }
   for (; l > 0; l -= 4) {
+    if (lookups) ++*lookups;
     const int d = T.four[s][(((i >> (l - 4)) & 15) << 4) | ((j >> (l - 4)) & 15)];
     key = (key << 8) | std::uint64_t(d & 255);
     s = d >> 8;
@@ -268,6 +272,7 @@ struct BoxCells {
   HilbertBox box;
   int depth;
   double scale, top;
+  std::uint64_t* lookups = nullptr;  // counts the table look-ups when set (HilbertWork)
   BoxCells(const HilbertBox& b, int d)
       : box(b), depth(d), scale(std::ldexp(1.0, d)), top(std::ldexp(1.0, d) - 1) {}
   std::uint32_t cell(double v, double lo) const {
@@ -278,15 +283,17 @@ struct BoxCells {
   // The key of point k on the curve that starts in `state`; `state` becomes the cell's state.
   std::uint64_t key(const std::vector<double>& xy, std::size_t k, int& state) const {
     return hilbertIndexByTable(cell(xy[2 * k], box.xmin), cell(xy[2 * k + 1], box.ymin), depth,
-                               state);
+                               state, lookups);
   }
 };
 
 // Calls f(k, key of point k) for every point, keys equal to hilbertKeys'.
 template <class F>
-void forEachKey(const std::vector<double>& xy, int depth, F f) {
-  const BoxCells cells(hilbertBox(xy), depth);  // the box also refuses NaN and infinities
+void forEachKey(const std::vector<double>& xy, int depth, F f, HilbertWork* work = nullptr) {
+  BoxCells cells(hilbertBox(xy), depth);  // the box also refuses NaN and infinities
+  if (work) cells.lookups = &work->keyLookups;
   const std::size_t n = xy.size() / 2;
+  if (work) work->keyBytes += n * 2 * sizeof(double);  // each point's coordinates read once
   for (std::size_t k = 0; k < n; ++k) {
     int state = 0;  // red = +x, blue = +y
     f(k, cells.key(xy, k, state));
@@ -302,9 +309,11 @@ int bitsFor(std::size_t n) {  // smallest b with n <= 2^b
 // Stable least-significant-digit radix sort of the n words a on their bits [lo, hi), with b
 // (n words) as the other buffer of the passes. Each pass keeps the order of equal digits, so
 // words equal on [lo, hi) keep their input order. Returns the buffer, a or b, that holds the
-// sorted words.
-std::uint64_t* radixSort(std::uint64_t* a, std::uint64_t* b, std::size_t n, int lo, int hi) {
+// sorted words. `work`, when given, counts the passes and the bytes read and written.
+std::uint64_t* radixSort(std::uint64_t* a, std::uint64_t* b, std::size_t n, int lo, int hi,
+                         HilbertWork* work = nullptr) {
   if (hi <= lo || n < 2) return a;
+  if (work) work->sortBytes += n * sizeof(std::uint64_t);  // the histogram sweep reads a
   const int passes = (hi - lo + 12) / 13;  // digits of at most 13 bits: 8192 counters fit L2
   const int digit = (hi - lo + passes - 1) / passes;
   const std::uint64_t mask = (std::uint64_t{1} << digit) - 1;
@@ -318,16 +327,20 @@ std::uint64_t* radixSort(std::uint64_t* a, std::uint64_t* b, std::size_t n, int 
     for (std::size_t d = 0; d <= mask; ++d) sum += std::exchange(c[d], sum);
     const int sh = lo + digit * q;
     for (std::size_t k = 0; k < n; ++k) b[c[(a[k] >> sh) & mask]++] = a[k];
+    if (work) {
+      ++work->sortPasses;
+      work->sortBytes += 2 * n * sizeof(std::uint64_t);  // a read, b written
+    }
     std::swap(a, b);
   }
   return a;
 }
 
 // radixSort of a whole vector, with a buffer of its own.
-void radixSort(std::vector<std::uint64_t>& a, int lo, int hi) {
+void radixSort(std::vector<std::uint64_t>& a, int lo, int hi, HilbertWork* work = nullptr) {
   if (hi <= lo || a.size() < 2) return;
   std::vector<std::uint64_t> b = hugeVector<std::uint64_t>(a.size());
-  if (radixSort(a.data(), b.data(), a.size(), lo, hi) != a.data()) a.swap(b);
+  if (radixSort(a.data(), b.data(), a.size(), lo, hi, work) != a.data()) a.swap(b);
 }
 
 //! [adaptiveHilbert]
@@ -418,7 +431,8 @@ void refineSorted(const std::vector<double>& xy, const BoxCells& cells, std::siz
 // with one radix sort of (group, key, index) packed in 64 bits when they fit, else std::sort.
 std::vector<std::size_t> sortByGroupKeyIndex(const std::vector<double>& xy, int depth,
                                              const std::vector<std::uint32_t>& group,
-                                             int groupBits, bool adaptive) {
+                                             int groupBits, bool adaptive,
+                                             HilbertWork* work = nullptr) {
   const std::size_t n = xy.size() / 2;
   const int idxBits = bitsFor(n);
   const int keyBits = 2 * depth;
@@ -428,11 +442,13 @@ std::vector<std::size_t> sortByGroupKeyIndex(const std::vector<double>& xy, int 
     forEachKey(xy, depth, [&](std::size_t k, std::uint64_t key) {
       const std::uint64_t g = groupBits ? group[k] : 0;
       w[k] = (((g << keyBits) | key) << idxBits) | k;
-    });
+    }, work);
+    if (work) work->keyBytes += n * sizeof(std::uint64_t);  // the packed words written
     // The words are in index order and the sort is stable: the index bits need no pass.
-    radixSort(w, idxBits, idxBits + keyBits + groupBits);
+    radixSort(w, idxBits, idxBits + keyBits + groupBits, work);
     const std::uint64_t idxMask = (std::uint64_t{1} << idxBits) - 1;
     for (std::size_t k = 0; k < n; ++k) order[k] = std::size_t(w[k] & idxMask);
+    if (work) work->sortBytes += n * (sizeof(std::uint64_t) + sizeof(std::size_t));  // unpacked
     if (adaptive)
       refineSorted(xy, BoxCells(hilbertBox(xy), depth), order.data(), n,
                    [&](std::size_t a, std::size_t b) { return (w[a] >> idxBits) == (w[b] >> idxBits); });
@@ -564,6 +580,15 @@ std::vector<std::uint64_t> hilbertKeysFast(const std::vector<double>& xy, int de
 std::vector<std::size_t> hilbertOrder(const std::vector<double>& xy, int depth, bool adaptive) {
   if (xy.size() % 2 != 0) throw std::invalid_argument("hilbertBox: odd number of coordinates");
   return sortByGroupKeyIndex(xy, checkedDepth(depth, xy.size() / 2), {}, 0, adaptive);
+}
+
+std::vector<std::size_t> hilbertOrder(const std::vector<double>& xy, int depth, HilbertWork& work) {
+  if (xy.size() % 2 != 0) throw std::invalid_argument("hilbertBox: odd number of coordinates");
+  const std::size_t n = xy.size() / 2;
+  depth = checkedDepth(depth, n);
+  if (2 * depth + bitsFor(n) > 64)
+    throw std::invalid_argument("hilbertOrder: the counted sort needs key and index in 64 bits");
+  return sortByGroupKeyIndex(xy, depth, {}, 0, false, &work);
 }
 
 std::vector<std::size_t> brioRoundSizes(std::size_t n, std::size_t firstRound) {

@@ -80,6 +80,21 @@ std::vector<std::uint64_t> hilbertKeysFast(const std::vector<double>& xy, int de
 std::vector<std::size_t> hilbertOrder(const std::vector<double>& xy, int depth = 0,
                                       bool adaptive = true);
 
+/// The work of hilbertOrder's fixed-grid sort, counted where it is done: the two sides of the
+/// notes' "the main cost of sorting points is on the sorting algorithm itself and not on the
+/// computation of the Hilbert curve coordinates" (2.3.5), at the same n.
+struct HilbertWork {
+  std::uint64_t keyLookups = 0;  ///< table look-ups made by the keys (up to 4 levels each)
+  std::uint64_t keyBytes = 0;    ///< bytes the keys read (coordinates) and write (packed words)
+  std::uint64_t sortPasses = 0;  ///< scatter passes of the radix sort
+  std::uint64_t sortBytes = 0;   ///< bytes the sort reads and writes: histogram sweep, passes, unpacking
+};
+
+/// hilbertOrder(xy, depth, false) with its work added to `work`. Throws std::invalid_argument
+/// where key and index do not fit one 64-bit word (beyond about 2^24 points), the one case in
+/// which hilbertOrder uses a comparison sort instead of the radix sort counted here.
+std::vector<std::size_t> hilbertOrder(const std::vector<double>& xy, int depth, HilbertWork& work);
+
 /// Sizes of the BRIO rounds for n points, first round first: the last round holds the larger
 /// half of the points, the one before half of the rest, and so on down to a first round of at
 /// most `firstRound` points (Amenta, Choi, Rote 2003).

@@ -25,7 +25,13 @@
 # suite (build/dt_tests, stopping at the first failure, without test_progress.cpp, whose 30 s
 # of terminal sessions test only the progress display; the files that run whole programs come
 # last, so a mutant an ordinary case kills costs seconds), so the whole list is not part of
-# scripts/test.sh. MUTANTS_TEST_ARGS replaces the
+# scripts/test.sh. The first pass runs only the test files that can reach the mutant's file (a
+# C++ file reached through the chain of #include "..." lines, each header leading to the code/
+# files that implement it, i.e. include it first; a test file that starts programs reaches
+# everything). Each pass of a mutant has a timeout of MUTANTS_TIMEOUT_FACTOR (default 3) times
+# that pass's time on the unmutated tree, at least MUTANTS_TIMEOUT_MIN s (default 60); a mutant
+# stopped by it is reported KILLED with the words "timed out". MUTANTS_TIMEOUT (default 3600 s)
+# only bounds the unmutated run, whose timeout is named as such. MUTANTS_TEST_ARGS replaces the
 # doctest options, MUTANTS_TARGETS the build targets (default: dt_suite), MUTANTS_CMAKE_ARGS adds
 # configure options (e.g. -DDT_TEST_FILES=test_spine.cpp: a suite of one file). To reuse compiled objects
 # between runs, export CMAKE_CXX_COMPILER_LAUNCHER (e.g. a compiler cache) yourself.
@@ -38,7 +44,9 @@ set -euo pipefail
 
 repo=$(cd "$(dirname "$0")/.." && pwd)
 jobs=${MUTANTS_JOBS:-2}
-timeout_s=${MUTANTS_TIMEOUT:-300}
+timeout_s=${MUTANTS_TIMEOUT:-3600}
+timeout_factor=${MUTANTS_TIMEOUT_FACTOR:-3}
+timeout_min=${MUTANTS_TIMEOUT_MIN:-60}
 test_args=${MUTANTS_TEST_ARGS:---source-file-exclude=*test_progress*}
 slow_files='*test_exercises*,*test_figures*,*test_cli*,*test_bad_input*,*test_chapter_options*'
 targets=${MUTANTS_TARGETS:-dt_suite}
@@ -77,17 +85,23 @@ if [ $mode = selftest ]; then
     echo "mutants self-test: an unknown mutant name was accepted"; cat "$log"; exit 1
   fi
   # 3. The real run: a real bug KILLED, a comment-only change SURVIVED, the stale one INVALID,
-  # and the exit status says the list is not clean. To stay cheap, the copy's suite is the one
-  # file that kills the real bug (tests/test_2_3_6_flips.cpp), built without the others.
+  # an endless loop KILLED as a timeout (a small multiple of the unmutated pass's time, not
+  # MUTANTS_TIMEOUT), a bug in a file no test of the suite reaches SURVIVED without running a
+  # test, and the exit status says the list is not clean. To stay cheap, the copy's suite is the
+  # one file that kills the real bug (tests/test_2_3_6_flips.cpp), built without the others.
   status=0
   MUTANTS_CMAKE_ARGS=${MUTANTS_CMAKE_ARGS:--DDT_TEST_FILES=test_2_3_6_flips.cpp} \
-    MUTANTS_TARGETS=${MUTANTS_TARGETS:-dt_tests} MUTANTS_TEST_ARGS=${MUTANTS_TEST_ARGS:-} \
+    MUTANTS_TARGETS=${MUTANTS_TARGETS:-dt_tests} MUTANTS_TIMEOUT_MIN=${MUTANTS_TIMEOUT_MIN:-10} \
     bash "$0" --list "$planted" >"$log" 2>&1 || status=$?
   cat "$log"
   ok=1
   grep -q '^KILLED    selftest-real ' "$log" || { echo "mutants self-test: the real bug was not KILLED"; ok=0; }
   grep -q '^SURVIVED  selftest-comment ' "$log" ||
     { echo "mutants self-test: a comment-only change was not reported SURVIVED"; ok=0; }
+  grep -Eq '^KILLED    selftest-hang .*timed out after [0-9]+ s \(' "$log" ||
+    { echo "mutants self-test: the endless loop was not KILLED as a timeout"; ok=0; }
+  grep -q '^SURVIVED  selftest-unreached .*no test file of the suite reaches code/writers.cpp' "$log" ||
+    { echo "mutants self-test: a file no test reaches was not skipped"; ok=0; }
   grep -q '^INVALID   selftest-stale' "$log" || { echo "mutants self-test: the stale mutant was not INVALID"; ok=0; }
   [ "$status" = 1 ] || { echo "mutants self-test: exit status $status, not 1"; ok=0; }
   # 4. Test options that select no test case are refused (exit 2), not run into SURVIVED.
@@ -205,25 +219,104 @@ echo "mutants: copy in $work; configuring and building the unmutated tree"
 # shellcheck disable=SC2086  # MUTANTS_CMAKE_ARGS is a list of options
 cmake -S "$src" -B "$build" -DCMAKE_BUILD_TYPE=Release ${MUTANTS_CMAKE_ARGS:-} >"$work/configure.log" 2>&1 ||
   { cat "$work/configure.log"; exit 2; }
+# ---- which test files can reach a file --------------------------------------------------------
+# Edges of the include graph, read once: a file leads to the repository files it includes with
+# "..." (looked up beside it, then in tests/ and code/), and a header to the code/ files that
+# implement it (include it first). reached_by[F] lists the files with an edge to F.
+declare -A reached_by=()
+starts_programs=""  # test files that run programs: they reach every file
+for f in "$src"/code/*.h "$src"/code/*.cpp "$src"/tests/*.h "$src"/tests/*.cpp "$src"/tests/fuzz/*.h \
+         "$src"/book/*.h "$src"/chapters/*.h; do
+  [ -f "$f" ] || continue
+  rel=${f#"$src"/}
+  dir=$(dirname "$rel")
+  first=1
+  while IFS= read -r inc; do
+    for cand in "$dir/$inc" "tests/$inc" "code/$inc"; do
+      if [ -f "$src/$cand" ]; then
+        cand=$(realpath -m --relative-to="$src" "$src/$cand")
+        reached_by[$cand]+=" $rel"
+        # An implementation includes its header first: the header leads to it.
+        [ $first = 1 ] && [[ $rel == code/*.cpp ]] && reached_by[$rel]+=" $cand"
+        break
+      fi
+    done
+    first=0
+  done < <(sed -n 's/^[[:space:]]*#[[:space:]]*include[[:space:]]*"\([^"]*\)".*/\1/p' "$f")
+  [[ $rel == tests/*.cpp ]] && grep -Eq 'DT_CLI|runCli|std::system|popen|DT_BINARY_DIR|process\.h' "$f" &&
+    starts_programs+=",*$(basename "$rel")"
+done
+# The first pass's --source-file value for a mutant of file $1: the test files that reach it
+# ("*" for a file that is not C++ or that the graph does not know, and for the unmutated run);
+# empty if none does.
+fast_files() {
+  local target=$1 f n list=""
+  if [[ -z $target || ! $target =~ \.(h|cpp)$ ]]; then echo "*"; return; fi
+  local -A seen=([$target]=1)
+  local -a todo=("$target")
+  while [ ${#todo[@]} -gt 0 ]; do
+    f=${todo[0]}; todo=("${todo[@]:1}")
+    [[ $f == tests/*.cpp ]] && list+=",*$(basename "$f")"
+    for n in ${reached_by[$f]:-}; do
+      [ -n "${seen[$n]:-}" ] || { seen[$n]=1; todo+=("$n"); }
+    done
+  done
+  list+=$starts_programs
+  # Only the files the suite was built from (DT_TEST_FILES), when it names them.
+  if [ -n "$suite_files" ]; then
+    local kept="" item
+    for item in ${list//,/ }; do
+      [[ " $suite_files " == *" ${item#\*} "* ]] && [[ ,$kept, != *,$item,* ]] && kept+=",$item"
+    done
+    list=$kept
+  fi
+  echo "${list#,}"
+}
+
 build_tests() {
   # shellcheck disable=SC2086  # targets is a list
   cmake --build "$build" -j"$jobs" --target $targets >"$work/build.log" 2>&1
 }
+# run_pass N LIMIT ARGS...: one run of dt_tests (stopping at the first failing test case: a
+# killed mutant costs seconds) under a timeout of LIMIT s, appended to the log; its time goes to
+# pass_time[N]. Returns 124 on a timeout, dt_tests' status otherwise.
+declare -a pass_time=(0 0)
+timed_out=""
+run_pass() {
+  local n=$1 limit=$2 t0 status=0
+  shift 2
+  t0=$(date +%s%N)
+  # shellcheck disable=SC2086  # the options are a list
+  (set -f; cd "$build" && timeout "$limit" ./dt_tests --abort-after=1 --no-intro "$@") \
+    >>"$work/test.log" 2>&1 || status=$?
+  pass_time[n]=$(( ($(date +%s%N) - t0 + 999999999) / 1000000000 ))
+  [ $status = 124 ] && timed_out="pass $((n + 1)) timed out after $limit s"
+  return $status
+}
+# The timeout of pass N of a mutant: a multiple of the unmutated pass's time.
+limit_of() {
+  local l=$(( timeout_factor * base_time[$1] ))
+  [ $l -ge "$timeout_min" ] || l=$timeout_min
+  echo "$l"
+}
+# run_tests LIMIT0 LIMIT1 [TARGET]: the suite on the build, a crash or a timeout failing it too.
+# Without MUTANTS_TEST_ARGS, in two passes: the files whose cases build and run whole programs
+# (the exercise machinery, the chapter programs, the triangulator's command lines: minutes) come
+# last, after the rest has passed; the first pass runs only the files that reach TARGET.
 run_tests() {
-  # Stopping at the first failing test case: a killed mutant costs seconds. A crash or a hang
-  # (timeout) fails the run too. Without MUTANTS_TEST_ARGS, in two passes: the files whose
-  # cases build and run whole programs (the exercise machinery, the chapter programs, the
-  # triangulator's command lines: minutes) come last, after the rest has passed.
-  # shellcheck disable=SC2086  # test_args is a list of options
+  local files
+  : >"$work/test.log"
+  timed_out=""
   if [ -n "${MUTANTS_TEST_ARGS+set}" ]; then
-    (set -f; cd "$build" && timeout "$timeout_s" ./dt_tests --abort-after=1 --no-intro $test_args) \
-      >"$work/test.log" 2>&1
+    # shellcheck disable=SC2086  # test_args is a list of options
+    run_pass 0 "$1" $test_args
     return
   fi
-  (set -f; cd "$build" &&
-    timeout "$timeout_s" ./dt_tests --abort-after=1 --no-intro "--source-file-exclude=*test_progress*,$slow_files" &&
-    timeout "$timeout_s" ./dt_tests --abort-after=1 --no-intro "--source-file=$slow_files") \
-    >"$work/test.log" 2>&1
+  files=$(fast_files "${3:-}")
+  if [ -n "$files" ]; then
+    run_pass 0 "$1" "--source-file=$files" "--source-file-exclude=*test_progress*,$slow_files" || return
+  fi
+  run_pass 1 "$2" "--source-file=$slow_files"
 }
 # The live figures' mutants: the WebAssembly module and the browser test page, and the test
 # at a laptop's and a phone's width (the verdict lines of the first failing run in the log).
@@ -240,6 +333,9 @@ run_web() {
   timeout "$timeout_s" bash "$src/web/run_browser_test.sh" "$build/web/test.html" >"$work/test.log" 2>&1 &&
     timeout "$timeout_s" bash "$src/web/run_browser_test.sh" "$build/web/test_390.html" --reduced-motion >>"$work/test.log" 2>&1
 }
+# A mutant of the suite's sources: both passes under timeouts derived from the unmutated run.
+# shellcheck disable=SC2317  # called through $do_run
+run_suite_mutant() { run_tests "$(limit_of 0)" "$(limit_of 1)" "$file"; }
 need_suite=0 need_web=0
 for f in "${M_file[@]}"; do
   if is_web "$f"; then need_web=1; else need_suite=1; fi
@@ -247,7 +343,18 @@ done
 if [ $need_suite = 1 ]; then
   echo "mutants: the suite ($targets)"
   build_tests || { echo "mutants: the unmutated code does not build"; tail -30 "$work/build.log"; exit 2; }
-  run_tests || { echo "mutants: the unmutated suite fails; fix it first"; tail -30 "$work/test.log"; exit 2; }
+  # The test files the suite is built from, if the configuration names them (DT_TEST_FILES).
+  suite_files=$(sed -n 's/^DT_TEST_FILES:[A-Z]*=//p' "$build/CMakeCache.txt" | tr ';,' '  ')
+  if ! run_tests "$timeout_s" "$timeout_s"; then
+    if [ -n "$timed_out" ]; then
+      echo "mutants: the unmutated suite timed out ($timed_out; MUTANTS_TIMEOUT=$timeout_s): raise MUTANTS_TIMEOUT on a busy machine"
+    else
+      echo "mutants: the unmutated suite fails; fix it first"
+    fi
+    tail -30 "$work/test.log"; exit 2
+  fi
+  declare -a base_time=("${pass_time[0]}" "${pass_time[1]}")
+  echo "mutants: the unmutated suite took ${base_time[0]} s and ${base_time[1]} s (its two passes): a mutant's passes time out after $(limit_of 0) s and $(limit_of 1) s"
   # A selection that runs no test case passes whatever the code does: every mutant would be
   # reported SURVIVED (doctest splits -tc on commas only, so '-tc=a b' selects "a", and "b" is
   # ignored). Refused, as is a suite that fails.
@@ -274,7 +381,7 @@ for i in "${!M_name[@]}"; do
     rm -f "$work/mutated"
     echo "INVALID   $name: $why"; invalid=$((invalid + 1)); invalids+=("$name"); continue
   fi
-  do_build=build_tests do_run=run_tests
+  do_build=build_tests do_run=run_suite_mutant timed_out=""
   if is_web "$file"; then do_build=build_web do_run=run_web; fi
   if ! $do_build; then
     status="INVALID  "; invalid=$((invalid + 1)); invalids+=("$name")
@@ -282,6 +389,8 @@ for i in "${!M_name[@]}"; do
   elif $do_run; then
     status="SURVIVED "; survived=$((survived + 1)); survivors+=("$name")
     detail="every test passed"
+    is_web "$file" || [ -n "${MUTANTS_TEST_ARGS+set}" ] || [ -n "$(fast_files "$file")" ] ||
+      detail="$detail (no test file of the suite reaches $file; only the slow pass ran)"
   else
     status="KILLED   "; killed=$((killed + 1))
     # The test case whose block holds the first error (blocks of passing tests with a MESSAGE
@@ -289,8 +398,12 @@ for i in "${!M_name[@]}"; do
     failed=$(awk '/^TEST CASE:/ { tc = $0; sub(/^TEST CASE: */, "", tc) }
                   /ERROR|CRASHED/ { if (tc != "") { print tc; exit } }
                   /^FAIL / { print; exit }' "$work/test.log" || true)
-    [ -n "$failed" ] || failed="no test case named: crash or timeout ($(tail -1 "$work/test.log"))"
-    detail="first failing: $failed"
+    if [ -n "$timed_out" ]; then
+      detail="$timed_out ($timeout_factor x the unmutated pass's time, at least $timeout_min s)${failed:+, in or after: $failed}"
+    else
+      [ -n "$failed" ] || failed="no test case named: a crash ($(tail -1 "$work/test.log"))"
+      detail="first failing: $failed"
+    fi
   fi
   # Restore the file; a plain cp gives it a new time, so the next build recompiles it.
   cp "$work/saved" "$target"

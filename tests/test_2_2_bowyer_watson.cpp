@@ -8,6 +8,7 @@
 
 #include "bowyer_watson.h"
 #include "check.h"
+#include "delaunay.h"
 #include "predicates.h"
 #include "support.h"
 #include "triangulate.h"
@@ -189,4 +190,27 @@ TEST_CASE("2.2.1 no super-triangle size is right a priori: for every factor the 
     const dt::BowyerWatsonResult big = dt::bowyerWatson(p, 1000 * factor);
     CHECK(dt::hullEdgesNotCovered(big.xy, big.ids, big.tri).empty());
   }
+}
+
+TEST_CASE("2.2.1 Figure 2.6 detector: a hull edge through collinear points is covered piece by piece") {
+  // Points 0 1 2 on the line y = 0 and 3 above: the hull edge 0 -> 2 of Omega(S) is no edge of
+  // any triangulation, its pieces 0 -> 1 and 1 -> 2 are. Both triangles kept: nothing missing
+  // (a detector that skipped collinear hull points would miss 0 -> 2 here). One triangle dropped:
+  // exactly its two hull pieces are reported, in counter-clockwise order. Ids are shifted so that
+  // indices and ids differ.
+  // Point 4 is a super-vertex (id < 0): it and its triangle are left out.
+  const XY xy = {0, 0, 1, 0, 2, 0, 1, 1, 0.5, 3};
+  const std::vector<long> ids = {10, 11, 12, 13, -1};
+  const std::vector<dt::Tri> both = {{0, 1, 3}, {1, 2, 3}, {0, 3, 4}};
+  CHECK(dt::hullEdgesNotCovered(xy, ids, both).empty());
+  const std::vector<dt::Tri> one = {{0, 1, 3}, {0, 3, 4}};
+  const auto missing = dt::hullEdgesNotCovered(xy, ids, one);
+  REQUIRE(missing.size() == 2);
+  CHECK(missing[0] == std::array<long, 2>{11, 12});
+  CHECK(missing[1] == std::array<long, 2>{12, 13});
+  // Collinear points on every side of a square (a 4 x 4 grid), triangulated exactly: covered.
+  const dt::TriangulateResult G = dt::triangulate(dt::gridPoints(4, 4));
+  std::vector<long> gids(G.xy.size() / 2);
+  for (std::size_t i = 0; i < gids.size(); ++i) gids[i] = long(i);
+  CHECK(dt::hullEdgesNotCovered(G.xy, gids, G.tri).empty());
 }

@@ -11,6 +11,7 @@
 
 #include "adjacency.h"
 #include "stats.h"
+#include "mesh3d.h"
 #include "support.h"
 
 TEST_CASE("2.3.3 pointer counts: full 42n and bidirectional 30n and vertices-only 9n and winged-edge 33n and face-based 15n") {
@@ -91,58 +92,60 @@ TEST_CASE("2.3.3 exercise 2: vertexStar lists exactly the triangles of a vertex"
   }
 }
 
-TEST_CASE("2.3.3 in 3D a tetrahedron has at most one neighbour per facet but an edge has a varying number of tetrahedra around it") {
-  // Why the face-based structure extends directly to 3D and an edge-based one only with a
-  // variable-size cycle per edge (the errata qualifies the notes' "the edge-based ones cannot").
-  // No 3D code is under test here: this is the counting fact the book cites, on a mesh built
-  // here.
-  // Face-based: each simplex stores its vertices and one neighbour across each facet; that is a
-  // fixed-size record in any dimension iff every facet has at most 2 simplices (a manifold).
-  // Edge-based (winged edge: 2 faces, 4 wing edges, 2 vertices per edge): fixed-size iff every
-  // edge has a fixed number of faces around it, true in 2D (1 or 2), false in 3D, where the
-  // number of tetrahedra around an edge varies. Counted on the Freudenthal (Kuhn) subdivision
-  // of a 4 x 4 x 4 grid of cubes, 6 tetrahedra per cube, and on a 2D Delaunay triangulation.
+TEST_CASE("2.3.3 in 3D a facet has 1 or 2 tetrahedra but the tetrahedra around an edge form a cycle of varying length") {
+  // The notes: the face-based structure "can be extended in 3D", the edge-based ones cannot.
+  // The errata corrects the second half: an edge-based record extends too, but around a 3D
+  // edge it must hold a cycle of tetrahedra instead of two faces. Both halves on the library's
+  // Kuhn mesh (code/mesh3d.h) of a 4 x 4 x 4 grid of cubes: every facet has 1 or 2
+  // tetrahedra (4 vertices + 4 neighbours per tetrahedron, a fixed record), every edge's
+  // tetrahedra form one cycle (inside) or one path (on the boundary), of several lengths.
   const int k = 4;
-  auto id = [&](int i, int j, int l) { return (i * (k + 1) + j) * (k + 1) + l; };
-  std::vector<std::array<int, 4>> tets;
-  std::array<int, 3> perm = {0, 1, 2};
-  for (int i = 0; i < k; ++i)
-    for (int j = 0; j < k; ++j)
-      for (int l = 0; l < k; ++l) {
-        std::sort(perm.begin(), perm.end());
-        do {  // the path (i,j,l) -> ... -> (i+1,j+1,l+1), one axis at a time
-          int c[3] = {i, j, l};
-          std::array<int, 4> t;
-          t[0] = id(c[0], c[1], c[2]);
-          for (int s = 0; s < 3; ++s) {
-            ++c[perm[std::size_t(s)]];
-            t[std::size_t(s + 1)] = id(c[0], c[1], c[2]);
-          }
-          tets.push_back(t);
-        } while (std::next_permutation(perm.begin(), perm.end()));
-      }
+  const std::vector<dt::Tet> tets = dt::kuhnTetrahedra(k);
   REQUIRE(tets.size() == std::size_t(6 * k * k * k));
-  std::map<std::array<int, 3>, int> perFacet;
-  std::map<std::pair<int, int>, int> perEdge;
-  for (auto t : tets) {
-    std::sort(t.begin(), t.end());
-    for (int skip = 0; skip < 4; ++skip) {
-      std::array<int, 3> f;
-      int m = 0;
-      for (int q = 0; q < 4; ++q)
-        if (q != skip) f[std::size_t(m++)] = t[std::size_t(q)];
-      ++perFacet[f];
-    }
+  std::set<int> facetCounts;
+  for (const auto& [f, n] : dt::tetsPerFacet(tets)) facetCounts.insert(n);
+  CHECK(facetCounts == std::set<int>{1, 2});
+  // An independent count of the tetrahedra on each edge, against the rings' lengths.
+  std::map<std::pair<int, int>, std::size_t> perEdge;
+  for (const dt::Tet& t : tets)
     for (int a = 0; a < 4; ++a)
-      for (int b = a + 1; b < 4; ++b) ++perEdge[{t[std::size_t(a)], t[std::size_t(b)]}];
+      for (int b = a + 1; b < 4; ++b) ++perEdge[std::minmax(t[std::size_t(a)], t[std::size_t(b)])];
+  const auto rings = dt::edgeRings(tets);
+  REQUIRE(rings.size() == perEdge.size());
+  // An edge lies on the cube's boundary iff both ends share a coordinate equal to 0 or k.
+  auto onBoundary = [&](int u, int v) {
+    const int cu[3] = {u / ((k + 1) * (k + 1)), u / (k + 1) % (k + 1), u % (k + 1)};
+    const int cv[3] = {v / ((k + 1) * (k + 1)), v / (k + 1) % (k + 1), v % (k + 1)};
+    for (int x = 0; x < 3; ++x)
+      if (cu[x] == cv[x] && (cu[x] == 0 || cu[x] == k)) return true;
+    return false;
+  };
+  std::set<std::size_t> cycleLengths;
+  for (const auto& [e, ring] : rings) {
+    CAPTURE(e.first);
+    CAPTURE(e.second);
+    REQUIRE(ring.tets.size() == perEdge[e]);
+    // Consecutive tetrahedra share a facet through the edge (three common vertices).
+    const std::size_t m = ring.tets.size();
+    for (std::size_t i = 0; i + 1 < m + (ring.closed ? 1 : 0); ++i) {
+      const dt::Tet& s = tets[std::size_t(ring.tets[i])];
+      const dt::Tet& t = tets[std::size_t(ring.tets[(i + 1) % m])];
+      int common = 0;
+      for (int x : s) common += std::count(t.begin(), t.end(), x) > 0;
+      CHECK(common == 3);
+    }
+    // A cycle exactly for an edge whose midpoint is inside the cube.
+    const bool boundary = onBoundary(e.first, e.second);
+    CHECK(ring.closed == !boundary);
+    if (ring.closed) cycleLengths.insert(m);
   }
-  std::set<int> facetCounts, edgeCounts;
-  for (const auto& [f, n] : perFacet) facetCounts.insert(n);
-  for (const auto& [e, n] : perEdge) edgeCounts.insert(n);
-  CHECK(facetCounts == std::set<int>{1, 2});  // 4 vertices + 4 neighbours per tetrahedron
-  MESSAGE("tetrahedra around an edge: from " << *edgeCounts.begin() << " to " << *edgeCounts.rbegin());
-  CHECK(edgeCounts.size() >= 3);              // no fixed-size edge record
-  CHECK(*edgeCounts.rbegin() >= 6);
+  MESSAGE("interior edges have cycles of " << *cycleLengths.begin() << " to " << *cycleLengths.rbegin() << " tetrahedra");
+  CHECK(cycleLengths.size() >= 2);  // no fixed-size edge record
+  CHECK(*cycleLengths.rbegin() >= 6);
+  // A facet with three tetrahedra (not a manifold) is refused, not given a wrong ring.
+  std::vector<dt::Tet> bad = {{0, 1, 2, 3}, {0, 1, 2, 4}, {0, 1, 2, 5}};
+  CHECK_THROWS_WITH_AS(dt::edgeRings(bad), "edgeRings: a facet through an edge has more than two tetrahedra",
+                       std::logic_error);
   // 2D: every edge of a triangulation has 1 or 2 triangles, so a fixed 8-pointer record works.
   dt::Triangulation T;
   dt::delaunayTrglHull(T, dt::addVertices(T, dt::uniformPoints(500, 33)), dt::StartRule::LastCavity);

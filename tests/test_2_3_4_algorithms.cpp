@@ -390,3 +390,36 @@ TEST_CASE("2.3.4 computeAdjacencies makes O(log N) std::map comparisons per edge
   CHECK(perEdge[2] - perEdge[1] > 1.5);
   CHECK(perEdge[2] - perEdge[1] < 2 * std::log2(10.0) + 1);
 }
+
+TEST_CASE("2.3.4 computeAdjacencies makes 3 std::map searches and 3 inserts or erases per triangle (not one of each)") {
+  // The notes: "one search/insert on a std::map per triangle". The map of the library's
+  // Listing 2.4 counts its own operations (AdjacencyCounts): every edge of every face is searched
+  // once, then inserted (its first face) or erased (its second), so a face costs 3 searches and 3
+  // inserts or erases. Inserts minus erases are the edges seen once: the hull's.
+  for (std::size_t n : {200u, 3000u}) {
+    CAPTURE(n);
+    dt::Triangulation T;
+    dt::delaunayTrglHull(T, dt::addVertices(T, dt::uniformPoints(n, 235)), dt::StartRule::LastCavity);
+    std::vector<dt::Face*> faces;
+    for (dt::Face& f : T.faces())
+      if (!f.isGhost()) faces.push_back(&f);
+    const std::uint64_t N = faces.size();
+    std::uint64_t hullEdges = 0;
+    for (const dt::Face* f : faces)
+      for (int k = 0; k < 3; ++k) hullEdges += f->F[k]->isGhost();
+    dt::AdjacencyCounts c;
+    dt::computeAdjacencies(faces, c);
+    REQUIRE(dt::checkTriangulation(T).ok);
+    MESSAGE("per triangle: " << double(c.searches) / double(N) << " searches, "
+                             << double(c.inserts + c.erases) / double(N) << " inserts or erases, "
+                             << double(c.comparisons) / double(N) << " comparisons");
+    CHECK(c.searches == 3 * N);
+    CHECK(c.inserts + c.erases == 3 * N);
+    CHECK(c.inserts - c.erases == hullEdges);
+    CHECK(c.erases == (3 * N - hullEdges) / 2);
+    // Each operation of a map of at most `largest` keys costs at most 2 log2(largest + 1) + 2
+    // comparisons (a red-black tree): the O(log N) per operation of the notes' O(N log N).
+    CHECK(c.largest <= 3 * N);
+    CHECK(double(c.comparisons) <= double(c.searches + c.inserts) * (2 * std::log2(double(c.largest) + 1) + 2));
+  }
+}
