@@ -251,7 +251,10 @@ done
 # empty if none does.
 fast_files() {
   local target=$1 f n list=""
-  if [[ -z $target || ! $target =~ \.(h|cpp)$ ]]; then echo "*"; return; fi
+  case $target in
+    *.h | *.cpp) ;;
+    *) echo "*"; return ;;
+  esac
   local -A seen=([$target]=1)
   local -a todo=("$target")
   while [ ${#todo[@]} -gt 0 ]; do
