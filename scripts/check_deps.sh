@@ -62,7 +62,7 @@ cp           base               scripts
 node         nodejs             book and web checks (axe-core in Chromium, package.json)
 npm          nodejs             scripts/deps.sh (npm ci: axe-core, pinned by package-lock.json)
 bwrap        bubblewrap         scripts/exercise.sh (the sandbox of grading)
-realpath     base               scripts/mutants.sh (a file's path relative to the tree)
+realpath     base               scripts/mutants.sh (paths relative to the tree)
 cmp          base               scripts/deps.sh
 git          git                scripts/mutants.sh (a temporary copy of the tree)
 shellcheck   shellcheck         CMakeLists.txt (the ctest entry shellcheck: every script of scripts/)
