@@ -356,7 +356,7 @@ std::vector<std::string> defectsOf(const std::string& body) {
 }  // namespace
 
 TEST_CASE("book the rendered check finds every kind of raw markup a reader saw") {
-  // Each body reproduces one defect of issue 14 as Doxygen rendered it (the formula survives
+  // Each body reproduces one defect a reader once saw, as Doxygen rendered it (the formula survives
   // as MathJax source, the markup around it as typed).
   const std::vector<std::pair<std::string, std::string>> broken = {
       {"bold around a formula (2.1 corollary)",
