@@ -185,16 +185,34 @@ inline bool distinctive(const TypedNumber& n) {
   return n.value >= 100;
 }
 
+/// A value that is one number and not a round one (two significant digits or more, or a
+/// fraction): "1.0001", "53,980", "12.5"; not "10000.0", "3 of 7" or a sentence.
+inline bool measuredNumber(const std::string& value, double& v) {
+  const auto ns = numbersIn(value);
+  if (ns.size() != 1 || booktool::squeeze(value) != ns[0].text) return false;
+  v = ns[0].value;
+  if (v != std::floor(v)) return true;
+  double m = std::fabs(v);
+  while (m >= 10 && std::fmod(m, 10) == 0) m /= 10;
+  return m >= 10 && v >= 100;
+}
+
 /// The page source's numbers (prose and formulas; code, comments, @{..}, file arguments and
-/// quotations left out) that some value also holds: "file:line: '1.0001' is the value of
-/// key ... : cite @{key}". `values`: key -> (value, where).
+/// quotations left out) that a value of the page's own programs (`programs`: their values
+/// files are values_<program>.txt) or a bound named in a test holds as its one number:
+/// "file:line: '1.0001' typed, a value of key (where): cite @{key}". `values`: key -> (value,
+/// where). A number of another program's values is a coincidence (an input size of one page
+/// is the bit count of another), not a copy.
 inline std::vector<std::string> typedValues(const std::string& page, const std::string& file,
-                                            const std::map<std::string, std::pair<std::string, std::string>>& values) {
-  // Each distinctive number any value holds, with the first key holding it.
+                                            const std::map<std::string, std::pair<std::string, std::string>>& values,
+                                            const std::vector<std::string>& programs = {}) {
   std::map<double, std::string> held;
-  for (const auto& [key, v] : values)
-    for (const TypedNumber& n : numbersIn(v.first))
-      if (distinctive(n)) held.emplace(n.value, key);
+  for (const auto& [key, v] : values) {
+    bool mine = v.second.rfind("tests/", 0) == 0;
+    for (const std::string& p : programs) mine = mine || v.second == "values_" + p + ".txt";
+    double x = 0;
+    if (mine && measuredNumber(v.first, x)) held.emplace(x, key);
+  }
   // The prose check's blanking, formulas kept: blank only what proseOnly blanks besides them.
   std::string text = page;
   for (const char* open : {"\\f$", "\\f[", "\\f{"}) {

@@ -187,7 +187,17 @@ int prepare(const std::string& bookDir, const std::string& valuesDir, const std:
           errors.push_back("book/" + f + ": links to a solution (" + std::string(ref) +
                            ") outside a solution block; the student edition has none");
     // A number the page types that a program or a test bound holds: cite it instead.
-    for (const std::string& e : bookaccess::typedValues(text, p.file, values)) errors.push_back(e);
+    {
+      std::vector<std::string> programs;
+      for (const std::string& l : booktool::splitLines(booktool::readFile(bookDir + "/" + f))) {
+        booktool::ReproduceSpec spec;
+        std::string error;
+        if (booktool::parseReproduce(l, spec, error)) programs = spec.programs;
+      }
+      // On the source as written, so that the line numbers are the file's.
+      for (const std::string& e : bookaccess::typedValues(booktool::readFile(bookDir + "/" + f), p.file, values, programs))
+        errors.push_back(e);
+    }
     p.text = booktool::substitute(text, p.file, values, byName, errors);
     for (const auto& [img, alt] : bookaccess::figureAlts(p.text, p.file, errors)) alts[img] = alt;
     if (edition == booktool::Edition::Student) p.text = studentTables(p.text, valuesDir, outDir);
