@@ -114,9 +114,47 @@ inline std::string withFigures(const std::string& html, const std::string& page,
     if (a == alts.end()) errors.push_back(page + ": the figure " + src + " has no alt text");
     else alt = a->second;
     const std::string rest = std::regex_replace(m[2].str(), altAttr, "");
-    out += "<figure class=\"image\">\n<img src=\"" + src + "\" alt=\"" + booktool::htmlEscape(alt) + "\"" + rest + "/>\n";
-    if (m[3].matched) out += "<figcaption class=\"caption\">" + m[3].str() + "</figcaption>";
+    // The caption names the figure for a screen reader (aria-labelledby: Chromium does not
+    // take a figcaption as the name by itself).
+    std::string cap = "figcap_";
+    for (char c : src) cap += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+    out += std::string("<figure class=\"image\"") + (m[3].matched ? " aria-labelledby=\"" + cap + "\"" : "") +
+           ">\n<img src=\"" + src + "\" alt=\"" + booktool::htmlEscape(alt) + "\"" + rest + "/>\n";
+    if (m[3].matched) out += "<figcaption class=\"caption\" id=\"" + cap + "\">" + m[3].str() + "</figcaption>";
     out += "</figure>";
+  }
+  return out + html.substr(last);
+}
+
+/// A link first in the page, shown when focused, to the text: a keyboard reaches the page's
+/// text without passing every link of the menu and the navigation tree (WCAG 2.4.1).
+inline std::string withSkipLink(const std::string& html) {
+  const std::size_t body = html.find("<body>");
+  if (body == std::string::npos || html.find("class=\"skiplink\"") != std::string::npos) return html;
+  const std::string target = html.find("id=\"doc-content\"") != std::string::npos ? "doc-content" : "";
+  if (target.empty()) return html;
+  return html.substr(0, body + 6) + "\n<a class=\"skiplink\" href=\"#" + target + "\">Skip to the text</a>" +
+         html.substr(body + 6);
+}
+
+/// Each Markdown table (class="markdownTable") without a caption gets one: the heading it
+/// stands under ("Claims and their tests"), so a screen reader names the table.
+inline std::string withTableCaptions(const std::string& html) {
+  static const std::regex heading("<h[1-6][^>]*>([\\s\\S]*?)</h[1-6]>");
+  const std::string open = "<table class=\"markdownTable\">";
+  std::string out;
+  std::size_t last = 0;
+  for (std::size_t at = html.find(open); at != std::string::npos; at = html.find(open, at + 1)) {
+    const std::size_t after = at + open.size();
+    const std::size_t next = html.find_first_not_of(" \n\t", after);
+    if (next != std::string::npos && html.compare(next, 8, "<caption") == 0) continue;
+    std::string title;
+    const std::string before = html.substr(0, at);
+    for (auto it = std::sregex_iterator(before.begin(), before.end(), heading); it != std::sregex_iterator(); ++it)
+      title = booktool::squeeze(booktool::decodeEntities(booktool::stripTags((*it)[1].str())));
+    if (title.empty()) continue;
+    out += html.substr(last, after - last) + "<caption>" + booktool::htmlEscape(title) + "</caption>";
+    last = after;
   }
   return out + html.substr(last);
 }
@@ -261,16 +299,18 @@ inline std::string printPage(const std::string& html, const std::set<std::string
       out += "href=\"" + (anchor.empty() ? "#print_" + page : anchor) + "\"";
       continue;
     }
-    // Doxygen's file names: "_8" is '.', "__" is '_'; a source view ends in "_source".
+    // Doxygen's file names: "_8" is '.', "__" is '_'; a source view ends in "_source". Only
+    // those get a printed target (a test's line); a link of code to the API stays as it is.
     std::string name = page, label;
     const bool source = name.size() > 7 && name.compare(name.size() - 7, 7, "_source") == 0;
-    if (source) name.erase(name.size() - 7);
+    if (!source) { out += m.str(); continue; }
+    name.erase(name.size() - 7);
     for (std::size_t i = 0; i < name.size(); ++i) {
       if (name.compare(i, 2, "__") == 0) { label += '_'; ++i; }
       else if (name.compare(i, 2, "_8") == 0) { label += '.'; ++i; }
       else label += name[i];
     }
-    if (source && anchor.size() > 2 && anchor[1] == 'l')
+    if (anchor.size() > 2 && anchor[1] == 'l')
       label += ", line " + std::to_string(std::atoi(anchor.c_str() + 2));
     out += m.str() + " data-print=\"" + booktool::htmlEscape(label) + "\"";
   }

@@ -331,9 +331,9 @@ int access(const std::string& htmlDir, const std::string& altFile) {
   int figures = 0, pages = 0;
   for (const std::string& f : listDir(htmlDir, ".html")) {
     const std::string html = booktool::readFile(htmlDir + "/" + f);
-    std::string out = bookaccess::withSearchLabel(bookaccess::withLang(html));
+    std::string out = bookaccess::withSkipLink(bookaccess::withSearchLabel(bookaccess::withLang(html)));
     if (booktool::isBookPage(out)) {
-      out = bookaccess::withFigures(out, f, alts, errors);
+      out = bookaccess::withTableCaptions(bookaccess::withFigures(out, f, alts, errors));
       for (std::size_t at = out.find("<figure class=\"image\">"); at != std::string::npos;
            at = out.find("<figure class=\"image\">", at + 1))
         ++figures;

@@ -91,3 +91,17 @@ TEST_CASE("book access the printed book links inside itself and prints where oth
   CHECK(p.find("<script") == std::string::npos);
   CHECK(p.find("footer") == std::string::npos);
 }
+
+TEST_CASE("book access a keyboard can skip to the text and every table of a page is named") {
+  const std::string page = "<html><body>\n<div id=\"top\">menu</div><div id=\"doc-content\"><h2 class=\"groupheader\">"
+                           "<a class=\"anchor\" id=\"c\"></a>Claims &amp; tests</h2>\n<table class=\"markdownTable\">\n"
+                           "<tr><th>a</th></tr></table><table class=\"markdownTable\"><caption>Own</caption></table></div></body></html>";
+  const std::string s = bookaccess::withSkipLink(page);
+  CHECK(s.find("<body>\n<a class=\"skiplink\" href=\"#doc-content\">Skip to the text</a>") != std::string::npos);
+  CHECK(bookaccess::withSkipLink(s) == s);
+  const std::string t = bookaccess::withTableCaptions(page);
+  CHECK(t.find("<table class=\"markdownTable\"><caption>Claims &amp; tests</caption>\n<tr>") != std::string::npos);
+  CHECK(t.find("<caption>Own</caption>") != std::string::npos);
+  CHECK(t.find("<caption>Claims &amp; tests</caption><caption>") == std::string::npos);
+  CHECK(bookaccess::withTableCaptions(t) == t);
+}
