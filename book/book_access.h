@@ -159,6 +159,13 @@ inline std::string withTableCaptions(const std::string& html) {
   return out + html.substr(last);
 }
 
+/// A listing of a book page without the marker lines of a snippet nested in the one it quotes
+/// (Doxygen drops only the quoted snippet's own "//! [name]" lines).
+inline std::string withoutNestedMarkers(const std::string& html) {
+  static const std::regex marker("<div class=\"line\">(?:<a [^>]*></a>)?\\s*<span class=\"comment\">//! \\[[A-Za-z0-9_]+\\]</span></div>\n?");
+  return std::regex_replace(html, marker, "");
+}
+
 /// The student's copy of a table written by a chapter program: every row whose text names an
 /// exercise ("... (exercise 1)") is the exercise's answer and is left out.
 inline std::string studentTable(const std::string& html) {

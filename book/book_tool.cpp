@@ -333,9 +333,9 @@ int access(const std::string& htmlDir, const std::string& altFile) {
     const std::string html = booktool::readFile(htmlDir + "/" + f);
     std::string out = bookaccess::withSkipLink(bookaccess::withSearchLabel(bookaccess::withLang(html)));
     if (booktool::isBookPage(out)) {
-      out = bookaccess::withTableCaptions(bookaccess::withFigures(out, f, alts, errors));
-      for (std::size_t at = out.find("<figure class=\"image\">"); at != std::string::npos;
-           at = out.find("<figure class=\"image\">", at + 1))
+      out = bookaccess::withoutNestedMarkers(bookaccess::withTableCaptions(bookaccess::withFigures(out, f, alts, errors)));
+      for (std::size_t at = out.find("<figure class=\"image\""); at != std::string::npos;
+           at = out.find("<figure class=\"image\"", at + 1))
         ++figures;
     }
     if (out != html) { writeFile(htmlDir + "/" + f, out); ++pages; }

@@ -29,12 +29,12 @@ pages=$(pdfinfo "$pdf" | awk '/^Pages:/ { print $2 }')
 [ "$pages" -le "$max" ] || defect "$pages pages, more than the bound of $max"
 
 # Figures: the printed HTML's <figure> elements against the PDF's images and text.
-figures=$(grep -o '<figure class="image">' "$html" | wc -l)
+figures=$( (grep -o '<figure class="image"' "$html" || true) | wc -l)
 images=$(pdfimages -list "$pdf" | awk 'NR > 2 && $3 == "image"' | wc -l)
 [ "$images" -ge "$figures" ] || defect "$images images for $figures figures"
 pdftotext -enc UTF-8 "$pdf" - | tr -s ' \n\t' '   ' > "$work/text"
 # Each caption's first five words (when they are plain words: no formula) must be printed.
-tr '\n' ' ' < "$html" | grep -o '<figcaption[^>]*>[^<]*' | sed 's/<figcaption[^>]*>//' |
+tr '\n' ' ' < "$html" | { grep -o '<figcaption[^>]*>[^<]*' || true; } | sed 's/<figcaption[^>]*>//' |
   while IFS= read -r cap; do
     words=$(tr -s ' \t' '  ' <<< "$cap" | sed 's/^ //' | cut -d' ' -f1-5)
     case $words in *\\*|*\$*|*\&*|'') continue ;; esac
@@ -44,7 +44,7 @@ if [ -s "$work/captions" ]; then cat "$work/captions" >&2; bad=$((bad + $(wc -l 
 
 # Half-empty pages. The first line of the next page tells whether a chapter starts there: the
 # titles are the contents list's entries.
-tr '\n' ' ' < "$html" | grep -o '<nav class="printtoc".*</nav>' | grep -o '<li><a [^>]*>[^<]*' |
+tr '\n' ' ' < "$html" | { grep -o '<nav class="printtoc".*</nav>' || true; } | { grep -o '<li><a [^>]*>[^<]*' || true; } |
   sed 's/<li><a [^>]*>//' | tr -s ' ' ' ' > "$work/titles"
 pdftoppm -gray -r 12 "$pdf" "$work/page"
 "$tool" pagefill "$work"/page-*.pgm | sort -t- -k2 -n > "$work/fill"
@@ -53,7 +53,8 @@ while read -r file share; do
   k=$((k + 1))
   [ "$k" -lt "$pages" ] || continue
   awk -v s="$share" 'BEGIN { exit !(s < 0.5) }' || continue
-  first=$(pdftotext -enc UTF-8 -f $((k + 1)) -l $((k + 1)) "$pdf" - | awk 'NF { print; exit }' | tr -s ' ' ' ')
+  # (awk stops reading at the first line: pdftotext may then die of SIGPIPE, which is fine.)
+  first=$( { pdftotext -enc UTF-8 -f $((k + 1)) -l $((k + 1)) "$pdf" - || true; } | awk 'NF { print; exit }' | tr -s ' ' ' ')
   chapter=0
   while IFS= read -r t; do
     [ -n "$first" ] && [ "${t#"$first"}" != "$t" ] && chapter=1 && break

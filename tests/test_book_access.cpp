@@ -39,8 +39,8 @@ TEST_CASE("book access a figure without its alt line stops the build and one wit
       "<div class=\"image\">\n<img src=\"a.png\" alt=\"\"/>\n<div class=\"caption\">\nFigure 1: a</div></div>\n"
       "<div class=\"image\">\n<img src=\"c.png\" alt=\"\"/>\n</div>\n";
   const std::string out = bookaccess::withFigures(html, "p.html", {{"a.png", "5 triangles \"orange\""}}, errors);
-  CHECK(out.find("<figure class=\"image\">\n<img src=\"a.png\" alt=\"5 triangles &quot;orange&quot;\"/>\n"
-                 "<figcaption class=\"caption\">\nFigure 1: a</figcaption></figure>") != std::string::npos);
+  CHECK(out.find("<figure class=\"image\" aria-labelledby=\"figcap_a_png\">\n<img src=\"a.png\" alt=\"5 triangles &quot;orange&quot;\"/>\n"
+                 "<figcaption class=\"caption\" id=\"figcap_a_png\">\nFigure 1: a</figcaption></figure>") != std::string::npos);
   CHECK(out.find("<div class=\"image\">") == std::string::npos);
   REQUIRE(errors.size() == 1);
   CHECK(errors[0] == "p.html: the figure c.png has no alt text");
@@ -61,21 +61,26 @@ TEST_CASE("book access a number typed in prose or a formula that a value holds i
   const std::map<std::string, std::pair<std::string, std::string>> values = {
       {"s236.test_factor_lo", {"1.0001", "tests/test_2_3_6_flips.cpp:261"}},
       {"s236.test_factor_hi", {"10000.0", "tests/test_2_3_6_flips.cpp:262"}},
-      {"s231.cells", {"53,980 / 65,536", "values_sec2_3_1_predicates.txt"}},
-      {"s9.small", {"3 of 7", "values_x.txt"}}};
+      {"s231.cells", {"53,980", "values_sec2_3_1_predicates.txt"}},
+      {"s231.grid", {"256", "values_sec2_3_1_predicates.txt"}},
+      {"s9.small", {"3 of 7", "values_x.txt"}},
+      {"s9.other", {"12.5", "values_other_program.txt"}}};
+  const std::vector<std::string> programs = {"sec2_3_1_predicates"};
   // The claims row as it once was: both ends typed, in formulas.
   const std::string page =
       "\\page p P\n| recovery | exact for super-triangles \\f$1.0001\\f$ to \\f$10^4\\f$ times the box |\n"
-      "The table counts 53,980 cells; a triangle has 3 vertices and 7 is small.\n"
+      "The table counts 53,980 cells on a grid of 256; a triangle has 3 vertices and 7 is small; 12.5 is another page's.\n"
       "Section 2.3.4 and Listing 2.5; `1.0001` in code; @{s236.test_factor_lo} cited.\n"
       "<!-- 1.0001 in a comment -->\n";
-  const auto d = bookaccess::typedValues(page, "book/p.md", values);
+  const auto d = bookaccess::typedValues(page, "book/p.md", values, programs);
   REQUIRE(d.size() == 3);
   CHECK(d[0].find("book/p.md:2: '1.0001' typed, a value of s236.test_factor_lo") == 0);
-  CHECK(d[1].find("book/p.md:2: '10^4' typed, a value of s236.test_factor_hi") == 0);
-  CHECK(d[2].find("book/p.md:3: '53,980' typed, a value of s231.cells") == 0);
-  // Other spellings of the same numbers.
-  CHECK(bookaccess::typedValues("10⁴ and 1e4 and 10^{4}\n", "f", values).size() == 3);
+  CHECK(d[1].find("book/p.md:3: '53,980' typed, a value of s231.cells") == 0);
+  CHECK(d[2].find("book/p.md:3: '256' typed, a value of s231.grid") == 0);
+  // A round number (10^4) is a size, not a measurement; another program's value is a
+  // coincidence. Other spellings of a measured number are found.
+  CHECK(bookaccess::typedValues("53980 and 5.398e4 and 10^4\n", "f", values, programs).size() == 2);
+  CHECK(bookaccess::typedValues("12.5\n", "f", values, programs).empty());
 }
 
 TEST_CASE("book access the printed book links inside itself and prints where other links go") {
@@ -104,4 +109,14 @@ TEST_CASE("book access a keyboard can skip to the text and every table of a page
   CHECK(t.find("<caption>Own</caption>") != std::string::npos);
   CHECK(t.find("<caption>Claims &amp; tests</caption><caption>") == std::string::npos);
   CHECK(bookaccess::withTableCaptions(t) == t);
+}
+
+TEST_CASE("book access a listing shows no marker of a snippet nested in the quoted one") {
+  const std::string html = "<div class=\"fragment\"><div class=\"line\">int a;</div>\n"
+                           "<div class=\"line\"><span class=\"comment\">//! [inner]</span></div>\n"
+                           "<div class=\"line\"><span class=\"comment\">// a comment</span></div>\n</div>";
+  const std::string out = bookaccess::withoutNestedMarkers(html);
+  CHECK(out.find("//! [inner]") == std::string::npos);
+  CHECK(out.find("// a comment") != std::string::npos);
+  CHECK(out.find("int a;") != std::string::npos);
 }
