@@ -15,6 +15,14 @@
 //     removes the empty "File Reference" pages Doxygen writes for the page files themselves.
 //   book_tool check HTML_DIR
 //     fails on literal markup in the rendered text and broken local links (layout: book/layout_check.sh).
+//   book_tool printbook HTML_DIR ORDER_FILE OUT_HTML
+//     the pages of ORDER_FILE (written by prepare) as one file to print, with a contents list.
+//   book_tool pagefill PAGE.pgm...
+//     how far down each printed page has ink (book/pdf_check.sh).
+//   book_tool access HTML_DIR ALT_FILE
+//     lang on every page, the search field labelled, every figure of a book page a <figure>
+//     with its caption and the alt text its page gives (ALT_FILE, written by prepare); fails
+//     on a figure without one (axe-core then measures the pages: book/axe_check.sh).
 #include <dirent.h>
 #include <sys/stat.h>
 
@@ -22,6 +30,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "book_access.h"
 #include "book_tool.h"
 
 namespace {
@@ -84,6 +93,34 @@ std::string withReproduceBoxes(const std::string& text, const std::string& file,
   return out;
 }
 
+// The student's edition includes, for each table a chapter program wrote, a copy without the
+// rows an exercise asks for (bookaccess::studentTable), beside its sources (an example path of
+// Doxygen), when there is such a row.
+std::string studentTables(const std::string& text, const std::string& valuesDir, const std::string& outDir) {
+  const std::string src = std::filesystem::absolute(std::filesystem::path(outDir)).parent_path().string() +
+                          "/sources_student/";
+  std::string out;
+  for (const std::string& line : booktool::splitLines(text)) {
+    const std::string lead = "\\htmlinclude ";
+    const std::size_t at = line.find(lead);
+    if (at != std::string::npos) {
+      std::string name = booktool::squeeze(line.substr(at + lead.size()));
+      name = name.substr(0, name.find(' '));
+      if (isFile(valuesDir + "/" + name)) {
+        const std::string table = booktool::readFile(valuesDir + "/" + name);
+        const std::string mine = bookaccess::studentTable(table);
+        if (mine != table) {
+          writeFile(src + "student_" + name, mine);
+          out += line.substr(0, at) + lead + "student_" + name + "\n";
+          continue;
+        }
+      }
+    }
+    out += line + "\n";
+  }
+  return out;
+}
+
 int prepare(const std::string& bookDir, const std::string& valuesDir, const std::string& testsDir,
             const std::string& outDir, booktool::Edition edition) {
   std::vector<std::string> errors;
@@ -129,6 +166,7 @@ int prepare(const std::string& bookDir, const std::string& valuesDir, const std:
       errors.push_back("book/" + f + ": not in book/order.txt (add it where it belongs in the reading order)");
 
   std::vector<booktool::Page> order;
+  std::map<std::string, std::string> alts;  // figure file -> its alt text (book_tool access)
   for (const std::string& f : files) {
     std::string text = booktool::editionPage(booktool::readFile(bookDir + "/" + f), "book/" + f, edition);
     if (edition == booktool::Edition::Student) text = booktool::studentLinks(text);
@@ -148,7 +186,21 @@ int prepare(const std::string& bookDir, const std::string& valuesDir, const std:
         if (text.find(ref) != std::string::npos)
           errors.push_back("book/" + f + ": links to a solution (" + std::string(ref) +
                            ") outside a solution block; the student edition has none");
+    // A number the page types that a program or a test bound holds: cite it instead.
+    {
+      std::vector<std::string> programs;
+      for (const std::string& l : booktool::splitLines(booktool::readFile(bookDir + "/" + f))) {
+        booktool::ReproduceSpec spec;
+        std::string error;
+        if (booktool::parseReproduce(l, spec, error)) programs = spec.programs;
+      }
+      // On the source as written, so that the line numbers are the file's.
+      for (const std::string& e : bookaccess::typedValues(booktool::readFile(bookDir + "/" + f), p.file, values, programs))
+        errors.push_back(e);
+    }
     p.text = booktool::substitute(text, p.file, values, byName, errors);
+    for (const auto& [img, alt] : bookaccess::figureAlts(p.text, p.file, errors)) alts[img] = alt;
+    if (edition == booktool::Edition::Student) p.text = studentTables(p.text, valuesDir, outDir);
     order.push_back(p);
   }
   const std::string claimsTitle = "Claims index: every test, its source line and how to run it";
@@ -177,6 +229,14 @@ int prepare(const std::string& bookDir, const std::string& valuesDir, const std:
     std::snprintf(num, sizeof num, "%02zu_", k);
     name = num + name.substr(0, name.rfind('.')) + ".dox";
     writeFile(outDir + "/" + name, booktool::asDoxComment(booktool::withNavigation(order, k), order[k].file));
+  }
+  {
+    std::string a, ids;
+    for (const auto& [img, alt] : alts) a += img + "\t" + alt + "\n";
+    writeFile(outDir + "/alt.txt", a);
+    // The reading order for the printed book (book_tool printbook).
+    for (const booktool::Page& p : order) ids += p.id + "\t" + p.title + "\n";
+    writeFile(outDir + "/print_order.txt", ids);
   }
   std::cout << "book: " << order.size() << " pages, " << values.size() << " values, "
             << tests.size() << " tests\n";
@@ -258,6 +318,99 @@ int prune(const std::string& htmlDir) {
   return 0;
 }
 
+// Every page of an edition made accessible (book/book_access.h): lang, the search field's
+// label, figures with their alt text (from the pages' "<!-- alt: -->" lines, gathered by
+// prepare into ALT_FILE) and captions.
+int access(const std::string& htmlDir, const std::string& altFile) {
+  std::map<std::string, std::string> alts;
+  for (const std::string& l : booktool::splitLines(booktool::readFile(altFile))) {
+    const std::size_t tab = l.find('\t');
+    if (tab != std::string::npos) alts[l.substr(0, tab)] = l.substr(tab + 1);
+  }
+  std::vector<std::string> errors;
+  int figures = 0, pages = 0;
+  for (const std::string& f : listDir(htmlDir, ".html")) {
+    const std::string html = booktool::readFile(htmlDir + "/" + f);
+    std::string out = bookaccess::withSkipLink(bookaccess::withSearchLabel(bookaccess::withLang(html)));
+    if (booktool::isBookPage(out)) {
+      out = bookaccess::withoutNestedMarkers(bookaccess::withTableCaptions(bookaccess::withFigures(out, f, alts, errors)));
+      for (std::size_t at = out.find("<figure class=\"image\""); at != std::string::npos;
+           at = out.find("<figure class=\"image\"", at + 1))
+        ++figures;
+    }
+    if (out != html) { writeFile(htmlDir + "/" + f, out); ++pages; }
+  }
+  for (const std::string& f : listDir(htmlDir, ".js")) {
+    const std::string js = booktool::readFile(htmlDir + "/" + f);
+    const std::string out = bookaccess::withSearchLabel(js);
+    if (out != js) writeFile(htmlDir + "/" + f, out);
+  }
+  for (const std::string& e : errors) std::cerr << "  " << e << "\n";
+  if (!errors.empty()) {
+    std::cerr << "book: " << errors.size() << " figure(s) without alt text (listed above)\n";
+    return 1;
+  }
+  std::cout << "book: " << pages << " pages given lang and a labelled search field, " << figures
+            << " figures with alt text and caption\n";
+  return 0;
+}
+
+// The printed book: one HTML file, HTML_DIR/print.html, with a contents list and every page of
+// the reading order (ORDER_FILE, written by prepare) as a section that starts a new sheet,
+// links between pages made links inside the file, other links given a printed target
+// (bookaccess::printPage); Chromium prints it (book/print_book.sh).
+int printbook(const std::string& htmlDir, const std::string& orderFile, const std::string& outFile) {
+  std::vector<std::pair<std::string, std::string>> order;
+  for (const std::string& l : booktool::splitLines(booktool::readFile(orderFile))) {
+    const std::size_t tab = l.find('\t');
+    if (tab != std::string::npos && isFile(htmlDir + "/" + l.substr(0, tab) + ".html"))
+      order.push_back({l.substr(0, tab), l.substr(tab + 1)});
+  }
+  if (order.empty()) throw std::runtime_error(orderFile + ": no page of " + htmlDir);
+  std::set<std::string> ids;
+  for (const auto& [id, title] : order) ids.insert(id);
+  const std::string first = booktool::readFile(htmlDir + "/" + order.front().first + ".html");
+  const std::size_t body = first.find("<body>");
+  if (body == std::string::npos) throw std::runtime_error(htmlDir + "/index.html: no <body>");
+  std::string out = first.substr(0, body) + "<body>\n<div id=\"doc-content\">\n";
+  out += "<nav class=\"printtoc\" aria-label=\"Contents\"><h1>Contents</h1>\n<ol>\n";
+  for (const auto& [id, title] : order)
+    out += "<li><a href=\"#print_" + id + "\">" + title + "</a></li>\n";
+  out += "</ol></nav>\n";
+  for (const auto& [id, title] : order)
+    out += "<section class=\"printpage\" id=\"print_" + id + "\">\n" +
+           bookaccess::printPage(booktool::readFile(htmlDir + "/" + id + ".html"), ids) + "\n</section>\n";
+  out += "</div>\n</body>\n</html>\n";
+  writeFile(outFile, out);
+  std::cout << "book: " << outFile << ": " << order.size() << " pages to print\n";
+  return 0;
+}
+
+// How full each printed page is: for each PGM image (a page, pdftoppm -gray), the share of its
+// height from the top of the page down to its last row with ink, the bottom margin (where
+// the page number is) left out. One "FILE SHARE" line each.
+int pagefill(int argc, char** argv) {
+  for (int a = 2; a < argc; ++a) {
+    std::ifstream in(argv[a], std::ios::binary);
+    std::string magic;
+    int w = 0, h = 0, maxval = 0;
+    in >> magic >> w >> h >> maxval;
+    in.get();
+    if (!in || magic != "P5" || w <= 0 || h <= 0 || maxval <= 0 || maxval > 255)
+      throw std::runtime_error(std::string(argv[a]) + ": not an 8-bit binary PGM image");
+    std::vector<unsigned char> px(std::size_t(w) * h);
+    in.read(reinterpret_cast<char*>(px.data()), std::streamsize(px.size()));
+    if (!in) throw std::runtime_error(std::string(argv[a]) + ": image data cut short");
+    const int body = h - h * 18 / 297;  // the bottom margin of the print style (18 mm of A4)
+    int last = 0;
+    for (int y = 0; y < body; ++y)
+      for (int x = 0; x < w; ++x)
+        if (px[std::size_t(y) * w + x] < maxval * 7 / 8) { last = y + 1; break; }
+    std::printf("%s %.3f\n", argv[a], double(last) / body);
+  }
+  return 0;
+}
+
 int check(const std::string& htmlDir) {
   std::map<std::string, std::set<std::string>> anchorCache;
   auto exists = [&](const std::string& f) { return isFile(htmlDir + "/" + f); };
@@ -297,11 +450,17 @@ int main(int argc, char** argv) {
     if (cmd == "check-editions" && argc == 5) return checkEditions(argv[2], argv[3], argv[4]);
     if (cmd == "prune" && argc == 3) return prune(argv[2]);
     if (cmd == "check" && argc == 3) return check(argv[2]);
+    if (cmd == "access" && argc == 4) return access(argv[2], argv[3]);
+    if (cmd == "printbook" && argc == 5) return printbook(argv[2], argv[3], argv[4]);
+    if (cmd == "pagefill" && argc >= 3) return pagefill(argc, argv);
     std::cerr << "usage: book_tool sources SRC_ROOT OUT_ROOT student|teacher\n"
                  "       book_tool prepare BOOK_DIR VALUES_DIR TESTS_DIR OUT_DIR student|teacher\n"
                  "       book_tool check-editions SRC_ROOT STUDENT_HTML TEACHER_HTML\n"
                  "       book_tool prune HTML_DIR\n"
-                 "       book_tool check HTML_DIR\n";
+                 "       book_tool check HTML_DIR\n"
+                 "       book_tool access HTML_DIR ALT_FILE\n"
+                 "       book_tool printbook HTML_DIR ORDER_FILE OUT_HTML\n"
+                 "       book_tool pagefill PAGE.pgm...\n";
     return 2;
   } catch (const std::exception& e) {
     std::cerr << "book_tool: " << e.what() << "\n";

@@ -721,8 +721,10 @@ inline std::vector<SolutionBlock> solutionBlocks(const std::string& text, const 
 }
 
 /// A source file as an edition shows it. Student: a block becomes the one line the student's
-/// stub has (scripts/exercise.sh start), a "(remove)" block nothing, padded with empty lines. Teacher: the lines stay,
-/// the markers become comments that say "answer", so line numbers match the repository.
+/// stub has (scripts/exercise.sh start), a "(remove)" block nothing at all, so a listing shows
+/// no gap where an answer was (the student edition's claims index reads these copies, so its
+/// line links stay right). Teacher: the lines stay, the markers become comments that say
+/// "answer", so line numbers match the repository.
 inline std::string editionCode(const std::string& text, const std::string& file, Edition ed) {
   solutionBlocks(text, file, false);  // balanced, or an error
   std::string out;
@@ -737,19 +739,14 @@ inline std::string editionCode(const std::string& text, const std::string& file,
         out += indent + "// Answer to exercise " + id + " (teacher's edition) from here" + (rm ? ": a helper" : "") + "\n";
       else if (!rm)
         out += indent + "throw std::logic_error(\"exercise " + id + ": not implemented yet\");\n";
-      else
-        out += "\n";
       continue;
     }
     if (solutionMarker(line, "END", false, id, rm)) {
       inside = false;
-      // Student: an empty line for every line dropped, so that line numbers (the claims index's
-      // links into the source browser) are the repository's in both editions.
-      out += ed == Edition::Teacher ? indent + "// End of the answer to exercise " + id + "\n" : "\n";
+      if (ed == Edition::Teacher) out += indent + "// End of the answer to exercise " + id + "\n";
       continue;
     }
     if (!inside || ed == Edition::Teacher) out += line + "\n";
-    else out += "\n";
   }
   return out;
 }
@@ -795,7 +792,7 @@ inline std::string editionPage(const std::string& text, const std::string& file,
       if (ed == Edition::Teacher) out += "\\htmlonly[block]</div>\\endhtmlonly\n";
       continue;
     }
-    if (inside && line.find("<!-- values:") != std::string::npos) continue;
+    if (inside && (line.find("<!-- values:") != std::string::npos || line.find("<!-- phrases:") != std::string::npos)) continue;
     if (!inside || ed == Edition::Teacher) out += line + "\n";
   }
   return out;
@@ -817,13 +814,16 @@ inline std::string studentLinks(const std::string& page) {
   return out;
 }
 
-/// The distinctive values an answer block lists ("<!-- values: 36n | 16n -->").
-inline std::vector<std::string> blockValues(const SolutionBlock& b) {
+/// The distinctive values an answer block lists ("<!-- values: 36n | 16n -->"), or with
+/// `what` = "phrases", its key phrases ("<!-- phrases: away from the apex -->"): the words a
+/// paraphrase of the answer would keep.
+inline std::vector<std::string> blockValues(const SolutionBlock& b, const std::string& what = "values") {
   std::vector<std::string> out;
+  const std::string lead = "<!-- " + what + ":";
   for (const std::string& l : b.lines) {
-    const std::size_t at = l.find("<!-- values:");
+    const std::size_t at = l.find(lead);
     if (at == std::string::npos) continue;
-    std::string v = l.substr(at + 12, l.find("-->", at) - at - 12);
+    std::string v = l.substr(at + lead.size(), l.find("-->", at) - at - lead.size());
     std::size_t s = 0;
     while (s <= v.size()) {
       std::size_t bar = v.find('|', s);
@@ -874,6 +874,7 @@ inline std::vector<std::string> snippetLines(const std::string& text, const std:
 struct AnswerKey {
   std::set<std::string> lines;   // squeezed
   std::set<std::string> values;
+  std::set<std::string> phrases;  // lower case, looked for case-insensitively
   std::set<std::pair<std::string, std::string>> snippets;  // (file, name) its blocks quote
 };
 
@@ -915,6 +916,7 @@ inline std::map<std::string, AnswerKey> answerKeys(const std::map<std::string, s
     for (const SolutionBlock& b : solutionBlocks(pt, pf, true)) {
       AnswerKey& key = keys[b.id];
       for (const std::string& v : blockValues(b)) key.values.insert(v);
+      for (const std::string& v : blockValues(b, "phrases")) key.phrases.insert(lower(squeeze(v)));
       for (const std::string& l : b.lines) {
         if (plainProse(l)) {
           std::string t = squeeze(l);
@@ -988,6 +990,7 @@ inline std::vector<std::string> editionLeaks(const std::map<std::string, AnswerK
     return o;
   };
   const std::string studentBare = bare(student), teacherBare = bare(teacher);
+  const std::string studentLower = lower(student), teacherLower = lower(teacher);
   // A value is found as a whole: not inside a longer word ("16n" is not in "16namespace", the
   // line number 16 of a source listing before its code).
   auto contains = [](const std::string& text, const std::string& v) {
@@ -1014,6 +1017,7 @@ inline std::vector<std::string> editionLeaks(const std::map<std::string, AnswerK
         out.push_back(id + ": the teacher edition lacks the answer's " + kind + " '" + item + "'");
     };
     for (const std::string& l : it->second.lines) look(l, l, student, teacher, "line");
+    for (const std::string& p : it->second.phrases) look(p, p, studentLower, teacherLower, "key phrase");
     for (const std::string& v : it->second.values) look(v, bare(v), studentBare, teacherBare, "value");
   }
   return out;

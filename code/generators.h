@@ -54,7 +54,7 @@ XY parabolaPoints(std::size_t n, std::uint64_t seed);
 
 /// n - 1 points uniform in [0, 1)^2 and, at a seeded random position of the input, one far
 /// outlier (far, far): the case that leaves a fixed-grid Hilbert order with one crowded cell
-/// (issue 19, section 2.3.5).
+/// (section 2.3.5: the adaptive order's reason to exist).
 XY outlierPoints(std::size_t n, std::uint64_t seed, double far = 1e12);
 
 /// n points: 90 % uniform in [0, 1)^2, 10 % uniform in a square of side `width` about

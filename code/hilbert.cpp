@@ -81,10 +81,11 @@ std::uint64_t hilbertPack(const int bits[], int d) {
 //! [hilbertIndex]
 namespace {
 
-// Listing 2.8 on integers: a state s = 2 neg + swapped of the frame (red, blue) and the two
-// bits of the cell at one level give the quadrant q and the next state: a 16-entry table, built
-// here from the listing's rules, replaces its branches.
+// Listing 2.8 on integers: the frame's state and the two bits of the cell at one level give
+// the quadrant q and the next state; a table, built here from the listing's rules, replaces its
+// branches.
 // BEGIN SOLUTION 2.3.5-1 (remove)
+// The state is s = 2 neg + swapped of the frame (red, blue): a 16-entry table.
 // Why four states are enough (exercise 2.3.5-1): from the root (+x, +y) the frames take only
 // four values, swapped or not, negated or not (quadrant 0 swaps, quadrant 3 swaps and negates,
 // and both vectors always share a sign).

@@ -49,7 +49,7 @@ bool sameFile(const std::string& a, const std::string& b);
 /// leaves no partial file. Throws std::runtime_error naming the path and the system's reason.
 void writeFileAtomic(const std::string& path, const std::string& content);
 
-/// A set of outputs written all or nothing, as far as the kind of each allows (issues 19, 30):
+/// A set of outputs written all or nothing, as far as the kind of each allows:
 /// - a File is written to a temporary beside its target, named "<target>.dttmp-<pid>-<k>";
 ///   commit() renames them all into place only when all are written, holding flock() on the
 ///   directories of the targets so that two processes' sets never mix, and puts back the files

@@ -69,6 +69,10 @@ shellcheck   shellcheck         CMakeLists.txt (the ctest entry shellcheck: ever
 tar          base               scripts/mutants.sh
 touch        base               scripts/mutants.sh
 mv           base               scripts
+pdfinfo      poppler-utils      book/pdf_check.sh (the printed book: its pages)
+pdfimages    poppler-utils      book/pdf_check.sh (the printed book: its figures)
+pdftotext    poppler-utils      book/pdf_check.sh (the printed book: captions, chapter starts)
+pdftoppm     poppler-utils      book/pdf_check.sh (the printed book: how full each page is)
 date         base               scripts
 sleep        base               scripts
 timeout      base               scripts

@@ -1,4 +1,4 @@
-// Generators of degenerate point sets (issue 10): the inputs on which naive predicates, walks
+// Generators of degenerate point sets: the inputs on which naive predicates, walks
 // and super-triangles break. Every generator is deterministic (fixed seeds). Used by
 // test_degenerate.cpp, test_regressions.cpp and the fuzz harnesses' seed corpus.
 #pragma once
@@ -201,7 +201,7 @@ inline std::vector<Family> families(bool small = false) {
   f.push_back({"integer grid times 1e-300", shuffled(scaledGrid(g, g, 1e-300), 12)});
   f.push_back({"1e300 and 1e-300 mixed", shuffled(mixedExtremes(small ? 80 : 700, 13), 13)});
   f.push_back({"few distinct points, many copies", fewDistinct(small ? 2000 : 20000, 14)});
-  // Issue 19 (the adaptive Hilbert order) and issue 18 (the extended-exponent stage). The
+  // For the adaptive Hilbert order (one crowded cell) and the extended-exponent stage. The
   // exponents stop at 2^1000 so that super-triangles (10x the box) still fit in doubles.
   const std::size_t m = small ? 150 : 1500;
   f.push_back({"uniform and one far outlier (1e12, 1e12)", dt::outlierPoints(m, 15, 1e12)});

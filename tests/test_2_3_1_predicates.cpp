@@ -305,8 +305,10 @@ TEST_CASE("2.3.1 exercise 1: orient2dNaiveCanonical under the six orders and aga
   const SignMap bca = orientMap(orient2dNaiveCanonical, OrientOrder::BCA);
   CHECK(agreeingCells(cba, abc, -1) == 65536);
   CHECK(agreeingCells(bca, abc, 1) == 65536);
+  // BEGIN SOLUTION 2.3.1-1 (remove)
   // Consistent, and as wrong as before: the count is fixed (the map is deterministic, with
   // contraction off); 11492 of the 65536 cells have the wrong sign.
+  // END SOLUTION 2.3.1-1
   CHECK(compareMaps(abc, ex).wrong == 11492);
 }
 

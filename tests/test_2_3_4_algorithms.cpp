@@ -196,9 +196,12 @@ TEST_CASE("2.3.4 N_search counts the faces lineSearch visits including the face 
 }
 
 TEST_CASE("2.3.4 worst case: one insertion order of points on a parabola gives cavities of O(i) faces") {
-  // x = -n..-1 in increasing x: each point is inside every circle through three earlier ones (a
-  // circle cuts the parabola at 4 points with x summing to 0), so in DT(S) the cavity of the i-th
-  // point is all i - 3 triangles plus the ghosts it sees: sum ~ n^2 / 2.
+  // x = -n..-1 in increasing x: in DT(S) the cavity of the i-th point is all i - 3 triangles
+  // plus the ghosts it sees: sum ~ n^2 / 2.
+  // BEGIN SOLUTION 2.3.4-3 (remove)
+  // Why (exercise 2.3.4-3): each point is inside every circle through three earlier ones (a
+  // circle cuts the parabola at 4 points with x summing to 0).
+  // END SOLUTION 2.3.4-3
   const long n = 1000;
   dt::Triangulation T;
   const std::vector<dt::Vertex*> S = parabola(T, n, -n, 1);
@@ -206,6 +209,7 @@ TEST_CASE("2.3.4 worst case: one insertion order of points on a parabola gives c
   dt::delaunayTrglHull(T, S, dt::StartRule::LastCavity, &st);
   REQUIRE(dt::checkTriangulation(T).ok);
   CHECK(double(st.cavityFaces) > 0.45 * double(n) * double(n));
+  // BEGIN SOLUTION 2.3.4-3 (remove)
   // The other direction (x = 1..n) keeps every cavity small.
   dt::Triangulation U;
   const std::vector<dt::Vertex*> R = parabola(U, n, 1, 1);
@@ -213,10 +217,11 @@ TEST_CASE("2.3.4 worst case: one insertion order of points on a parabola gives c
   dt::delaunayTrglHull(U, R, dt::StartRule::LastCavity, &su);
   REQUIRE(dt::checkTriangulation(U).ok);
   CHECK(su.meanCavity() < 4);
+  // END SOLUTION 2.3.4-3
 }
 
 TEST_CASE("2.3.4 Listing 2.5 without recursion: a cavity of 10^5 faces") {
-  // DT of 10^5 parabola points built away from the apex (cheap), then one point near the apex:
+  // DT of 10^5 parabola points built in an order with small cavities, then one point near the apex:
   // inside every circle, so its cavity is the whole mesh. Listing 2.5 recursed once per face;
   // delaunayCavity uses an explicit stack, so the depth of the C++ stack does not grow.
   const long n = 100000;

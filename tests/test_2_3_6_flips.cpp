@@ -126,7 +126,7 @@ TEST_CASE("2.3.6 a flip changes the degrees of its four vertices by -1 -1 +1 +1 
   REQUIRE(dt::checkTriangulation(T).ok);
   int flipped = 0, refused = 0;
   std::mt19937 rng(7);
-  for (int trial = 0; trial < 400; ++trial) {
+  for (int trial = 0; trial < 400; ++trial) {  // book: s236.test_flip_trials
     std::vector<dt::Face*> live;
     for (dt::Face& f : T.faces())
       if (!f.isGhost()) live.push_back(&f);
@@ -257,7 +257,9 @@ TEST_CASE("2.3.6 the recovery from DT(S0 ∪ S) gives DT(S) for super-triangles 
       {"huge circle arc", huge, true},
   };
   // Factors from "barely enclosing" to "far": 2.2.1 says no size is right a priori.
-  for (double factor : {1.0001, 1.01, 1.5, 10.0, 1e4}) {
+  // The smallest and the largest size are named for the book's claims table.
+  for (double factor : {1.0001,  // book: s236.test_factor_lo
+                        1.01, 1.5, 10.0, 10000.0}) {  // book: s236.test_factor_hi
     for (const Family& fam : fams) {
       CAPTURE(fam.name);
       CAPTURE(factor);

@@ -356,7 +356,7 @@ std::vector<std::string> defectsOf(const std::string& body) {
 }  // namespace
 
 TEST_CASE("book the rendered check finds every kind of raw markup a reader saw") {
-  // Each body reproduces one defect of issue 14 as Doxygen rendered it (the formula survives
+  // Each body reproduces one defect a reader once saw, as Doxygen rendered it (the formula survives
   // as MathJax source, the markup around it as typed).
   const std::vector<std::pair<std::string, std::string>> broken = {
       {"bold around a formula (2.1 corollary)",
@@ -705,4 +705,53 @@ TEST_CASE("book a bound named in a test is the number that test compares with") 
   CHECK(v.at("s.tol").first == "0.08");  // the last number: not the 4 of "c4 - 4"
   CHECK_THROWS(booktool::testBounds("CHECK(ok);  // book: s.none\n", "tests/t.cpp", v));
   CHECK_THROWS(booktool::testBounds("CHECK(a > 1);  // book: s.lo\n", "tests/t.cpp", v));  // twice
+}
+
+// Each leak a reader of the student edition once found, planted again in the sources: the
+// edition check (the same one the book build runs on the HTML, source views included) must
+// name its exercise.
+TEST_CASE("book the edition check finds each answer a student once read in a test source or a table or a comment") {
+  std::map<std::string, std::string> code, pages;
+  readSources(code, pages);
+  REQUIRE(code.count("tests/test_2_3_4_algorithms.cpp"));
+  SUBCASE("2.3.4-3 stated by the parabola test's comment and its second order") {
+    auto bad = code;
+    bad["tests/test_2_3_4_algorithms.cpp"] = unmark(bad["tests/test_2_3_4_algorithms.cpp"], "2.3.4-3", false);
+    CHECK(mentions(editionDefects(bad, pages), "2.3.4-3: the student edition shows"));
+  }
+  SUBCASE("2.2-2's point set built by the super-triangle test") {
+    auto bad = code;
+    bad["tests/test_2_2_bowyer_watson.cpp"] = unmark(bad["tests/test_2_2_bowyer_watson.cpp"], "2.2-2", false);
+    CHECK(mentions(editionDefects(bad, pages), "2.2-2: the student edition shows"));
+  }
+  SUBCASE("2.3.1-1's verdict in the exercise test's comment") {
+    auto bad = code;
+    bad["tests/test_2_3_1_predicates.cpp"] = unmark(bad["tests/test_2_3_1_predicates.cpp"], "2.3.1-1", false);
+    CHECK(mentions(editionDefects(bad, pages), "2.3.1-1: the student edition shows"));
+  }
+  SUBCASE("2.3.1-1's table rows marked with their exercise") {
+    auto bad = pages;
+    // As a program's table shows them, in a paraphrase with other capitals.
+    // (Split literals: this file's own source page must not show the phrase.)
+    bad["book/sec2_3_1.md"] += "\n| Canonical-order" " naive O(a,b,c) (exercise 1) | 11,492 |\n";
+    CHECK(mentions(editionDefects(code, bad), "2.3.1-1: the student edition shows the answer's key phrase 'canonical-order" " naive'"));
+  }
+  SUBCASE("2.3.5-1's claim in the comment of the Hilbert table") {
+    auto bad = code;
+    bad["code/hilbert.cpp"] = unmark(bad["code/hilbert.cpp"], "2.3.5-1", false);
+    CHECK(mentions(editionDefects(bad, pages), "2.3.5-1: the student edition shows"));
+  }
+  SUBCASE("2.3.2-1's hull count typed in the prose of 2.3.2") {
+    auto bad = pages;
+    bad["book/sec2_3_2.md"] += "\nOn a grid \\f$n_h = 2(n_x" "+n_y)-4\\f$.\n";
+    CHECK(mentions(editionDefects(code, bad), "2.3.2-1: the student edition shows the answer's key phrase"));
+  }
+}
+
+TEST_CASE("book the student's listing of a stub is one line and a removed comment leaves no gap") {
+  const std::string src = "int f() {\n  // " "BEGIN SOLUTION 9.9-1\n  int a = 1;\n  int b = 2;\n  return a + b;\n  // "
+                          "END SOLUTION 9.9-1\n}\n// " "BEGIN SOLUTION 9.9-2 (remove)\n// why: 42\n// " "END SOLUTION 9.9-2\nint g();\n";
+  const std::string cs = booktool::editionCode(src, "code/x.cpp", booktool::Edition::Student);
+  CHECK(cs == "int f() {\n  throw std::logic_error(\"exercise 9.9-1: not implemented yet\");\n}\nint g();\n");
+  CHECK(cs.find("\n\n") == std::string::npos);
 }

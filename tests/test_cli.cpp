@@ -339,7 +339,7 @@ TEST_CASE("cli one line per error with the error first") {
   CHECK(r.err.find("none/o.ele: cannot open for writing: No such file or directory") != std::string::npos);
 }
 
-// ---- what an output is: a file, a symlink, a pipe, a device, standard output (issue 30) ----
+// ---- what an output is: a file, a symlink, a pipe, a device, standard output ----------
 
 namespace {
 
@@ -650,7 +650,7 @@ TEST_CASE("cli outputs that reach one file through symlinks are refused") {
   CHECK(dttest::readText(in) == kSquare);
 }
 
-// ---- signals, concurrent runs, limits, leftovers, permissions (issue 30) --------------------
+// ---- signals, concurrent runs, limits, leftovers, permissions -------------------------------
 
 TEST_CASE("cli a signal after the first rename leaves the new outputs and exit status 0 and --stats") {
   const std::string d = freshDir("final");
@@ -835,7 +835,7 @@ TEST_CASE("cli replacing an output keeps its mode and refuses one the user could
   CHECK((st.st_mode & 0777) == 0604);
   if (::geteuid() != 0) return;  // the rest needs a second user
   // A world-writable directory (rename allowed to anyone) holding root's read-only-for-others
-  // file: nobody's run must not replace it (issue 30: owner and mode changed).
+  // file: nobody's run must not replace it (its owner and mode would change).
   const std::string w = freshDir("perm_shared");
   ::chmod(w.c_str(), 0777);
   ::chmod(d.c_str(), 0755);

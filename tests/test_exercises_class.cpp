@@ -1,4 +1,4 @@
-/// \file test_exercises_class.cpp The teacher's path of the classroom (scripts/exercise.sh): a release holds no solution line of any exercise, a release inside the repository is refused, and a scripted class of 30 workspaces (correct ones, the planted bugs of issue 27, an edited test, an endless loop, a forbidden call) is graded in one command into a TSV that is right for every row; prove answers are collected beside the teacher's sheet.
+/// \file test_exercises_class.cpp The teacher's path of the classroom (scripts/exercise.sh): a release holds no solution line of any exercise, a release inside the repository is refused, and a scripted class of 30 workspaces (correct ones, planted bugs, an edited test, an endless loop, a forbidden call) is graded in one command into a TSV that is right for every row; prove answers are collected beside the teacher's sheet.
 #include <doctest/doctest.h>
 
 #include <chrono>
@@ -196,7 +196,7 @@ TEST_CASE("exercises class 30 workspaces are graded in one command into a TSV ri
   const std::string teacher = dttest::readText(std::string(DT_SOURCE_DIR) + "/code/stats.cpp");
   const std::string solution = region(teacher, "2.3.4-1", 0);
   const std::string released = dttest::readText(root + "/release/code/stats.cpp");
-  // The planted bugs of issue 27, made from the teacher's own solution.
+  // Planted bugs (no orientation test, null links, ...), made from the teacher's own solution.
   const std::string noOrientation = replaced(solution, "if (s.forward == t.forward)", "if (false)");
   const std::string nulls = "  for (Face* f : faces) f->F[0] = f->F[1] = f->F[2] = nullptr;\n" + solution;
   // A different correct solution: directed edges sorted, the reverse found by binary search

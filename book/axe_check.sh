@@ -1,0 +1,88 @@
+#!/usr/bin/env bash
+# The book's accessibility, checked by axe-core (node_modules/axe-core, pinned by
+# package-lock.json) in headless Chromium with the WCAG 2.0 and 2.1 A and AA rules: every page
+# of the book (the pages with the book's previous/next bar; or the pages given) is loaded at
+# 1280 px, its formulas typeset, and every failing element printed, one line each, naming the
+# page, the rule and the element (book/axe_probe.js does the running).
+# What axe cannot judge (focus order, whether an alt text says what a figure shows) is checked
+# by hand: book/ACCESSIBILITY.md.
+# Exit status: 0 when there is none, 1 when there is one, 2 on bad usage.
+#
+#   bash book/axe_check.sh HTML_DIR [PAGE.html ...]
+#   bash book/axe_check.sh --editions BOOK_DIR   both editions (BOOK_DIR/student, /teacher);
+#                                                 exit 77 when the book is not built
+set -euo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
+if [ "${1:-}" = --editions ]; then
+  [ $# -eq 2 ] || { echo "usage: axe_check.sh --editions BOOK_DIR" >&2; exit 2; }
+  for e in student teacher; do
+    [ -f "$2/$e/index.html" ] || { echo "axe_check: no book in $2/$e (bash scripts/main.sh builds it)"; exit 77; }
+  done
+  status=0
+  for e in student teacher; do bash "$0" "$2/$e" || status=1; done
+  exit $status
+fi
+axe="$here/../node_modules/axe-core/axe.min.js"
+[ -f "$axe" ] || { echo "axe_check: no $axe (bash scripts/deps.sh installs it: npm ci)" >&2; exit 2; }
+axe=$(cd "$(dirname "$axe")" && pwd)/axe.min.js
+[ $# -ge 1 ] || { echo "usage: axe_check.sh HTML_DIR [PAGE.html ...]" >&2; exit 2; }
+dir=$(cd "$1" && pwd) || { echo "axe_check: no directory '$1'" >&2; exit 2; }
+shift
+pages=()
+if [ $# -gt 0 ]; then
+  pages=("$@")
+else
+  while IFS= read -r -d '' f; do
+    # print.html (the printed book) repeats the pages; it is checked as a PDF.
+    [ "$(basename "$f")" != print.html ] && grep -q 'class="booknav"' "$f" && pages+=("$(basename "$f")")
+  done < <(find "$dir" -maxdepth 1 -name '*.html' -print0 | sort -z)
+fi
+[ ${#pages[@]} -gt 0 ] || { echo "axe_check: no book page in $dir" >&2; exit 2; }
+
+# A path as a JavaScript string literal (turned into a file:// URL by the harness).
+js_string() {
+  local s=$1
+  case $s in *$'\n'*|*$'\r'*) echo "axe_check: a path with a line break: '$s'" >&2; exit 2 ;; esac
+  s=${s//\\/\\\\}; s=${s//\"/\\\"}
+  printf '"%s"' "$s"
+}
+url='function (p) { return "file://" + p.split("/").map(encodeURIComponent).join("/"); }'
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+list=""
+for p in "${pages[@]}"; do
+  [ -f "$dir/$p" ] || { echo "axe_check: no page '$p' in $dir" >&2; exit 2; }
+  list+="${list:+,}$(js_string "$dir/$p")"
+done
+cp "$here/axe_probe.js" "$work/axe_probe.js"
+{
+  echo '<!DOCTYPE html><html lang="en"><head><meta charset="utf-8"><title>axe</title></head><body>'
+  echo '<iframe id="axe-frame" title="page under test" style="border:0"></iframe><pre id="axe-result">pending</pre>'
+  echo "<script>var u = $url;"
+  echo "window.AXE_CHECK = {pages: [$list].map(u), axe: u($(js_string "$axe")), width: 1280, timeoutMs: 90000};</script>"
+  echo '<script src="axe_probe.js"></script></body></html>'
+} > "$work/harness.html"
+
+budget=$(( ${#pages[@]} * 90000 + 10000 ))
+chromium --headless --no-sandbox --disable-gpu --disable-background-networking \
+  --disable-component-update --disable-sync --no-first-run --mute-audio \
+  --user-data-dir="$work/profile" --allow-file-access-from-files --window-size=1600,1000 \
+  --virtual-time-budget="$budget" --dump-dom "file://$work/harness.html" \
+  > "$work/dom.html" 2> "$work/chromium.log" || true
+result=$(awk '{ buf = buf $0 "\n" } END {
+                 i = index(buf, "<pre id=\"axe-result\">"); if (!i) exit
+                 buf = substr(buf, i + 21); j = index(buf, "</pre>"); printf "%s", substr(buf, 1, j - 1) }' \
+           "$work/dom.html" | sed -e 's/&lt;/</g' -e 's/&gt;/>/g' -e 's/&quot;/"/g' -e 's/&amp;/\&/g')
+last=$(tail -n 1 <<< "$result")
+if [[ ! "$last" =~ ^AXE\ ([0-9]+)\ violations\ in\ ([0-9]+)\ pages ]]; then
+  echo "axe_check: the browser gave no verdict (Chromium's log):" >&2
+  tail -n 5 "$work/chromium.log" >&2 || true
+  exit 1
+fi
+n=${BASH_REMATCH[1]} checked=${BASH_REMATCH[2]}
+if [ "$n" -gt 0 ] || [ "$checked" -ne ${#pages[@]} ]; then
+  head -n -1 <<< "$result" | sed 's/^/axe: /' >&2
+  echo "axe_check: $n violations (WCAG 2.1 A/AA) in $checked of ${#pages[@]} pages" >&2
+  exit 1
+fi
+echo "axe_check: ${#pages[@]} pages, no WCAG 2.1 A/AA violation"
