@@ -259,7 +259,7 @@ std::vector<int> parseList(const std::string& s) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const ch::Program p{"bench_parallel",
+  ch::Program p{"bench_parallel",
                       "The parallel kernel against threads, and time per point (--max-n 100000000: up to 10^8).",
                       1000, 100000000, {"fig_time_per_point"},
                       {{"--reps", "N", "alternating runs, the best kept (default 3, 1 with --quick)", 1, 1000},
@@ -267,13 +267,17 @@ int main(int argc, char** argv) {
                        {"--cache-dir", "DIR",
                         "read the cache sizes the chart marks from DIR (index*/level, type, size, as Linux "
                         "writes them) instead of " + std::string(kSysCacheDir)}}};
+  // The values of its own options are checked before --out is created.
+  p.check = [](const ch::Options& o) {
+    if (o.has("--cache-dir") && !std::filesystem::is_directory(o.extra.at("--cache-dir")))
+      throw ch::UsageError("--cache-dir: '" + o.extra.at("--cache-dir") + "' is not a directory");
+    if (o.has("--threads")) parseList(o.extra.at("--threads"));
+  };
   return ch::runMain(argc, argv, p, [&](const ch::Options& o) -> int {
     // Where the cache sizes come from: this machine's, or a directory in the same format (the
     // figure test plants one whose caches all fall within its small run's sizes).
     const bool ownCaches = !o.has("--cache-dir");
     const std::string cacheDir = ownCaches ? std::string(kSysCacheDir) : o.extra.at("--cache-dir");
-    if (!ownCaches && !std::filesystem::is_directory(cacheDir))
-      throw ch::UsageError("--cache-dir: '" + cacheDir + "' is not a directory");
     const int reps = int(o.number("--reps", o.quick ? 1 : 3));
     const int hw = dt::defaultThreadCount();
     std::vector<int> threadList = {1, 2};
