@@ -245,7 +245,10 @@ void lockExclusive(int fd) {
 
 // The error of a lock that cannot be taken: the output named, with what the user can do.
 [[noreturn]] void lockFailed(const std::string& path, const std::string& dir, int err) {
-  if (err == ENOENT || err == ENOTDIR || err == EROFS)  // no directory to write into at all
+  // No directory to write into at all, or one the user may not write into: said as for the
+  // file itself, since no lock is the matter.
+  if (err == ENOENT || err == ENOTDIR || err == EROFS ||
+      ::faccessat(AT_FDCWD, dir.c_str(), W_OK | X_OK, AT_EACCESS) != 0)
     throw std::runtime_error(path + ": cannot open for writing: " + std::strerror(err));
   throw std::runtime_error(path + ": cannot lock its directory through " + dir + "/" + kLockName +
                            ": " + std::strerror(err) +

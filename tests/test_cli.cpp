@@ -736,35 +736,53 @@ TEST_CASE("cli signals at every 10 ms of a run give the old set or the new one w
   CHECK(oldSets > 0);
 }
 
-TEST_CASE("cli two runs on the same outputs started together never mix their files") {
-  const std::string d = freshDir("concurrent");
-  // Inputs with different triangle counts: a set is one run's when its three counts agree.
-  dttest::writeText(d + "/a.node", dttest::nodeText(dt::uniformPoints(200, 1)));
-  dttest::writeText(d + "/b.node", dttest::nodeText(dt::uniformPoints(260, 2)));
-  const std::string args = " -o '" + d + "/o' --svg '" + d + "/o.svg' --msh '" + d + "/o.msh'";
-  // One of the two (a in odd rounds, b in even ones) pauses 40 ms after each of its renames, the
-  // other does not: without a lock, the quick one's three renames fall inside the slow one's
-  // commit, which then puts its last two files over them.
-  const int pairs = 40;
-  const int rc = runScript(d, "pairs",
-      "for i in $(seq " + std::to_string(pairs) + "); do\n"
-      "pa=$((i % 2 * 40)); pb=$((40 - pa))\n"
-      "DELAUNAY2D_TEST_COMMIT_PAUSE_MS=$pa " + cli() + " '" + d + "/a.node'" + args +
-      " 2> /dev/null & a=$!\n"
-      "DELAUNAY2D_TEST_COMMIT_PAUSE_MS=$pb " + cli() + " '" + d + "/b.node'" + args +
-      " 2> /dev/null & b=$!\n"
-      "wait $a || exit 1; wait $b || exit 1\n"
-      "{ head -1 '" + d + "/o.ele'; grep -c '<polygon' '" + d + "/o.svg'; sed -n '/^\\$Elements/{n;p;}' '" +
-      d + "/o.msh'; } | tr '\\n' ' ' >> '" + d + "/sets'; echo >> '" + d + "/sets'\n"
-      "done");
-  REQUIRE(rc == 0);
-  std::istringstream sets(dttest::readText(d + "/sets"));
+namespace {
+
+// The script of the concurrent-runs tests: `pairs` times, a run on IN/a.node and one on
+// IN/b.node (inputs with different triangle counts) write OUT/o.ele, o.svg and o.msh at once,
+// then the three counts of the set left go as one line into OUT/sets. One of the two (a in odd
+// rounds, b in even ones) pauses 40 ms after each of its renames, the other does not: without
+// a lock, the quick one's three renames fall inside the slow one's commit, which then puts its
+// last two files over them.
+std::string pairsScript(const std::string& in, const std::string& out, int pairs) {
+  const std::string args = " -o '" + out + "/o' --svg '" + out + "/o.svg' --msh '" + out + "/o.msh'";
+  return "for i in $(seq " + std::to_string(pairs) + "); do\n"
+         "pa=$((i % 2 * 40)); pb=$((40 - pa))\n"
+         "DELAUNAY2D_TEST_COMMIT_PAUSE_MS=$pa " + cli() + " '" + in + "/a.node'" + args +
+         " 2> /dev/null & a=$!\n"
+         "DELAUNAY2D_TEST_COMMIT_PAUSE_MS=$pb " + cli() + " '" + in + "/b.node'" + args +
+         " 2> /dev/null & b=$!\n"
+         "wait $a || exit 1; wait $b || exit 1\n"
+         "{ head -1 '" + out + "/o.ele'; grep -c '<polygon' '" + out + "/o.svg'; sed -n '/^\\$Elements/{n;p;}' '" +
+         out + "/o.msh'; } | tr '\\n' ' ' >> '" + out + "/sets'; echo >> '" + out + "/sets'\n"
+         "done";
+}
+
+// Writes the two inputs of pairsScript into `dir`, readable by all.
+void writePairInputs(const std::string& dir) {
+  dttest::writeText(dir + "/a.node", dttest::nodeText(dt::uniformPoints(200, 1)));
+  dttest::writeText(dir + "/b.node", dttest::nodeText(dt::uniformPoints(260, 2)));
+  for (const char* f : {"/a.node", "/b.node"}) ::chmod((dir + f).c_str(), 0644);
+}
+
+// Checks the sets pairsScript left in OUT/sets: `pairs` lines, each one run's (counts agree).
+void checkNoMixedSet(const std::string& out, int pairs) {
+  std::istringstream sets(dttest::readText(out + "/sets"));
   int n = 0, mixed = 0;
   for (long ele, three, zero, svg, msh; sets >> ele >> three >> zero >> svg >> msh; ++n)
     mixed += !(ele == svg && svg == msh);
   CHECK(n == pairs);
   CHECK_MESSAGE(mixed == 0, mixed << " of " << n << " pairs left a mixed set");
-  CHECK(temporariesIn(d).empty());
+  CHECK(temporariesIn(out).empty());
+}
+
+}  // namespace
+
+TEST_CASE("cli two runs on the same outputs started together never mix their files") {
+  const std::string d = freshDir("concurrent");
+  writePairInputs(d);
+  REQUIRE(runScript(d, "pairs", pairsScript(d, d, 40)) == 0);
+  checkNoMixedSet(d, 40);
 }
 
 TEST_CASE("cli a file size limit fails the run with one line and no temporary and the old files kept") {
@@ -1021,9 +1039,7 @@ TEST_CASE("cli in a sticky directory another user's file is refused with what to
 
 TEST_CASE("cli two runs into a directory they may write but not read never mix their sets") {
   const std::string d = freshDir("unreadable");
-  dttest::writeText(d + "/a.node", dttest::nodeText(dt::uniformPoints(200, 1)));
-  dttest::writeText(d + "/b.node", dttest::nodeText(dt::uniformPoints(260, 2)));
-  for (const char* f : {"/a.node", "/b.node"}) ::chmod((d + f).c_str(), 0644);
+  writePairInputs(d);
   if (!nobodyCanRun(d)) {
     MESSAGE("cannot run as nobody here: skipped");
     return;
@@ -1031,27 +1047,8 @@ TEST_CASE("cli two runs into a directory they may write but not read never mix t
   // Write and search for others, no read: nobody cannot open the directory to lock it.
   const std::string w = freshDir("unreadable_out");
   ::chmod(w.c_str(), 0733);
-  const std::string args = " -o '" + w + "/o' --svg '" + w + "/o.svg' --msh '" + w + "/o.msh'";
-  const int pairs = 20;
-  const int rc = runScriptAsNobody(w, "pairs",
-      "for i in $(seq " + std::to_string(pairs) + "); do\n"
-      "pa=$((i % 2 * 40)); pb=$((40 - pa))\n"
-      "DELAUNAY2D_TEST_COMMIT_PAUSE_MS=$pa " + cli() + " '" + d + "/a.node'" + args +
-      " 2> /dev/null & a=$!\n"
-      "DELAUNAY2D_TEST_COMMIT_PAUSE_MS=$pb " + cli() + " '" + d + "/b.node'" + args +
-      " 2> /dev/null & b=$!\n"
-      "wait $a || exit 1; wait $b || exit 1\n"
-      "{ head -1 '" + w + "/o.ele'; grep -c '<polygon' '" + w + "/o.svg'; sed -n '/^\\$Elements/{n;p;}' '" +
-      w + "/o.msh'; } | tr '\\n' ' ' >> '" + w + "/sets'; echo >> '" + w + "/sets'\n"
-      "done");
-  REQUIRE(rc == 0);
-  std::istringstream sets(dttest::readText(w + "/sets"));
-  int n = 0, mixed = 0;
-  for (long ele, three, zero, svg, msh; sets >> ele >> three >> zero >> svg >> msh; ++n)
-    mixed += !(ele == svg && svg == msh);
-  CHECK(n == pairs);
-  CHECK_MESSAGE(mixed == 0, mixed << " of " << n << " pairs left a mixed set");
-  CHECK(temporariesIn(w).empty());
+  REQUIRE(runScriptAsNobody(w, "pairs", pairsScript(d, w, 20)) == 0);
+  checkNoMixedSet(w, 20);
 }
 
 TEST_CASE("cli a thread that cannot start is one line and exit 1 and more threads than CPUs are capped") {
