@@ -966,7 +966,7 @@ int runWithFds(const std::vector<std::string>& args, int out, int err) {
 TEST_CASE("cli base names of 234 to 251 bytes are written and a failed commit puts the old file back byte for byte") {
   const std::string d = freshDir("longnames");
   dttest::writeText(d + "/in.xy", kSquare);
-  for (const int len : {234, 236, 237, 240, 245, 251}) {
+  for (const int len : {234, 237, 245, 251}) {
     CAPTURE(len);
     const std::string base(std::size_t(len), 'K');
     // Every name the shell's > can write (base.ele: up to 255 bytes), a run writes and replaces.
@@ -976,14 +976,15 @@ TEST_CASE("cli base names of 234 to 251 bytes are written and a failed commit pu
       CHECK(dttest::readText(d + "/" + base + ".ele").rfind("2 3 0\n", 0) == 0);
     }
     // The data-loss case: an existing .ele, and a second output that turns into a directory
-    // after the .ele is in place (DELAUNAY2D_TEST_COMMIT_PAUSE_MS pauses after each rename).
+    // after the .ele is in place (DELAUNAY2D_TEST_COMMIT_PAUSE_MS pauses after each rename: long
+    // enough for the script's rm and mkdir on a loaded machine).
     const std::string precious = "precious\n\x01\xff bytes " + std::to_string(len) + "\n";
     dttest::writeText(d + "/" + base + ".ele", precious);
     std::filesystem::remove_all(d + "/app.svg");
     dttest::writeText(d + "/app.svg", "OLD SVG\n");
     dttest::writeText(d + "/err", "");
     const int rc = runScript(d, "turn",
-        "DELAUNAY2D_TEST_COMMIT_PAUSE_MS=300 " + cli() + " '" + d + "/in.xy' -o '" + d + "/" + base +
+        "DELAUNAY2D_TEST_COMMIT_PAUSE_MS=1500 " + cli() + " '" + d + "/in.xy' -o '" + d + "/" + base +
         "' --svg '" + d + "/app.svg' 2> '" + d + "/err' & pid=$!\n"
         "for i in $(seq 300); do grep -q 'committing 1' '" + d + "/err' && break; sleep 0.02; done\n"
         "rm '" + d + "/app.svg'; mkdir '" + d + "/app.svg'\n"
