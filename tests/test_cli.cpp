@@ -831,6 +831,15 @@ TEST_CASE("cli a run removes the temporaries no live run holds whatever their pi
 
 namespace {
 
+// In a forked child: becomes the triangulator with these arguments (status 122 if it cannot).
+[[noreturn]] void execCli(const std::vector<std::string>& args) {
+  std::vector<char*> argv{const_cast<char*>(DT_CLI)};
+  for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  ::execv(DT_CLI, argv.data());
+  ::_exit(122);
+}
+
 // Runs the CLI as user and group 65534 (nobody) with the given arguments; returns its exit
 // status and stderr.
 dttest::CliResult runCliAsNobody(const std::vector<std::string>& args, const std::string& errFile) {
@@ -842,11 +851,7 @@ dttest::CliResult runCliAsNobody(const std::vector<std::string>& args, const std
     if (::setgroups(0, nullptr) != 0 || ::setresgid(65534, 65534, 65534) != 0 ||
         ::setresuid(65534, 65534, 65534) != 0)
       ::_exit(121);
-    std::vector<char*> argv{const_cast<char*>(DT_CLI)};
-    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    ::execv(DT_CLI, argv.data());
-    ::_exit(122);
+    execCli(args);
   }
   int st = 0;
   ::waitpid(pid, &st, 0);
@@ -950,11 +955,7 @@ int runWithFds(const std::vector<std::string>& args, int out, int err) {
     ::dup2(out >= 0 ? out : null, 1);
     ::dup2(err >= 0 ? err : null, 2);
     ::signal(SIGPIPE, SIG_DFL);
-    std::vector<char*> argv{const_cast<char*>(DT_CLI)};
-    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    ::execv(DT_CLI, argv.data());
-    ::_exit(122);
+    execCli(args);
   }
   int st = 0;
   ::waitpid(pid, &st, 0);
