@@ -37,8 +37,6 @@ struct ExtraOption {
   long lo = 0, hi = 0;
 };
 
-struct Options;
-
 /// What a chapter program declares about itself, so that every program reads its options the
 /// same way and --help lists them the same way.
 struct Program {
@@ -47,9 +45,6 @@ struct Program {
   long minN = 1000, maxN = 10000000;  ///< what --max-n may be, checked before anything is written
   std::vector<std::string> figures;   ///< what --only accepts: the stems of its gnuplot scripts
   std::vector<ExtraOption> extras;    ///< options of this program only
-  /// Checks the program's own option values (throws UsageError) before anything is written:
-  /// runMain calls it before it creates the output directory. Empty: none.
-  std::function<void(const Options&)> check;
 };
 
 /// A usage error found after the options were read (e.g. a bad --threads list): runMain
@@ -252,12 +247,15 @@ inline Options parseOptions(int argc, char** argv, const Program& p, bool create
 /// The main() of a chapter program: reads the options (parseOptions), runs `body(options)`,
 /// and reports an exception on stderr (prefixed with the program's name) with exit status 1,
 /// a UsageError with status 2. A body that returns an int gives the exit status itself.
+/// `check`, if given, checks the program's own option values (throws UsageError) before the
+/// output directory is created: a bad value leaves nothing behind.
 template <class Body>
-int runMain(int argc, char** argv, const Program& p, Body&& body) {
+int runMain(int argc, char** argv, const Program& p, Body&& body,
+            const std::function<void(const Options&)>& check = {}) {
   Options o = parseOptions(argc, argv, p, false);
-  if (p.check) {
+  if (check) {
     try {
-      p.check(o);
+      check(o);
     } catch (const UsageError& e) {  // nothing created yet
       std::cerr << p.name << ": " << e.what() << "; usage: " << usageLine(p) << "\n";
       return 2;

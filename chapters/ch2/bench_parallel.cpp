@@ -259,7 +259,7 @@ std::vector<int> parseList(const std::string& s) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  ch::Program p{"bench_parallel",
+  const ch::Program p{"bench_parallel",
                       "The parallel kernel against threads, and time per point (--max-n 100000000: up to 10^8).",
                       1000, 100000000, {"fig_time_per_point"},
                       {{"--reps", "N", "alternating runs, the best kept (default 3, 1 with --quick)", 1, 1000},
@@ -267,8 +267,8 @@ int main(int argc, char** argv) {
                        {"--cache-dir", "DIR",
                         "read the cache sizes the chart marks from DIR (index*/level, type, size, as Linux "
                         "writes them) instead of " + std::string(kSysCacheDir)}}};
-  // The values of its own options are checked before --out is created.
-  p.check = [](const ch::Options& o) {
+  // The values of its own options, checked before --out is created.
+  const auto check = [](const ch::Options& o) {
     if (o.has("--cache-dir") && !std::filesystem::is_directory(o.extra.at("--cache-dir")))
       throw ch::UsageError("--cache-dir: '" + o.extra.at("--cache-dir") + "' is not a directory");
     if (o.has("--threads")) parseList(o.extra.at("--threads"));
@@ -737,5 +737,5 @@ int main(int argc, char** argv) {
     ch::writeOut(o, "time_per_point_verdict.html", v.str());
     ch::runGnuplot(o, "fig_time_per_point.gp");
     return 0;
-  });
+  }, check);
 }
