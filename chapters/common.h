@@ -13,8 +13,10 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <map>
+#include <new>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -50,6 +52,14 @@ struct Program {
 struct UsageError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
+
+/// What a chapter program is doing, for the message when memory runs out: "computing" (set by
+/// runMain), "writing FILE" (writeOut) or "drawing SCRIPT" (runGnuplot); a program may set its
+/// own ("measuring 10^7 points").
+inline std::string& phase() {
+  static std::string what = "reading the options";
+  return what;
+}
 
 /// The options of a chapter program (ch::parseOptions reads them; `--help` lists them):
 ///   --out DIR    where to write (default: DT_OUTPUT_DIR/ch2, i.e. build/output/ch2)
@@ -143,8 +153,9 @@ inline std::optional<long> parseWhole(const std::string& text) {
 /// Reads the options of program `p` (see Options). A usage error (an unknown option, a missing
 /// or malformed value, an option given twice, an extra argument, a --max-n outside what the
 /// program can do) is one line on stderr and exit status 2, before anything is written.
-/// --help prints helpText and exits 0. Creates the output directory (exit 1 if it cannot).
-inline Options parseOptions(int argc, char** argv, const Program& p) {
+/// --help prints helpText and exits 0. Creates the output directory (exit 1 if it cannot)
+/// unless `createOut` is false.
+inline Options parseOptions(int argc, char** argv, const Program& p, bool createOut = true) {
   Options o;
   auto refuse = [&](const std::string& what) {
     std::cerr << p.name << ": " << what << "; usage: " << usageLine(p) << "\n";
@@ -225,7 +236,7 @@ inline Options parseOptions(int argc, char** argv, const Program& p) {
   }
   std::error_code ec;
   o.out = std::filesystem::absolute(o.out, ec).lexically_normal().string();
-  if (!ec) std::filesystem::create_directories(o.out, ec);
+  if (!ec && createOut) std::filesystem::create_directories(o.out, ec);
   if (ec) {
     std::cerr << p.name << ": cannot create the output directory '" << o.out << "': " << ec.message() << "\n";
     std::exit(1);
@@ -236,9 +247,27 @@ inline Options parseOptions(int argc, char** argv, const Program& p) {
 /// The main() of a chapter program: reads the options (parseOptions), runs `body(options)`,
 /// and reports an exception on stderr (prefixed with the program's name) with exit status 1,
 /// a UsageError with status 2. A body that returns an int gives the exit status itself.
+/// `check`, if given, checks the program's own option values (throws UsageError) before the
+/// output directory is created: a bad value leaves nothing behind.
 template <class Body>
-int runMain(int argc, char** argv, const Program& p, Body&& body) {
-  const Options o = parseOptions(argc, argv, p);
+int runMain(int argc, char** argv, const Program& p, Body&& body,
+            const std::function<void(const Options&)>& check = {}) {
+  Options o = parseOptions(argc, argv, p, false);
+  if (check) {
+    try {
+      check(o);
+    } catch (const UsageError& e) {  // nothing created yet
+      std::cerr << p.name << ": " << e.what() << "; usage: " << usageLine(p) << "\n";
+      return 2;
+    }
+  }
+  std::error_code ec;
+  std::filesystem::create_directories(o.out, ec);
+  if (ec) {
+    std::cerr << p.name << ": cannot create the output directory '" << o.out << "': " << ec.message() << "\n";
+    return 1;
+  }
+  phase() = "computing";
   try {
     if constexpr (std::is_void_v<decltype(body(o))>) {
       body(o);
@@ -248,6 +277,9 @@ int runMain(int argc, char** argv, const Program& p, Body&& body) {
   } catch (const UsageError& e) {
     std::cerr << p.name << ": " << e.what() << "; usage: " << usageLine(p) << "\n";
     return 2;
+  } catch (const std::bad_alloc&) {
+    std::cerr << p.name << ": out of memory while " << phase() << "\n";
+    return 1;
   } catch (const std::exception& e) {
     std::cerr << p.name << ": " << e.what() << "\n";
     return 1;
@@ -258,7 +290,10 @@ int runMain(int argc, char** argv, const Program& p, Body&& body) {
 /// Writes a file into the output directory and says so.
 inline std::string writeOut(const Options& o, const std::string& name, const std::string& text) {
   const std::string path = o.out + "/" + name;
+  const std::string was = phase();
+  phase() = "writing " + path;
   dt::writeFileAtomic(path, text);
+  phase() = was;
   std::cout << "wrote " << path << "\n";
   return path;
 }
@@ -279,6 +314,28 @@ inline std::vector<std::string> gnuplotOutputs(const std::string& scriptPath) {
     if (close != std::string::npos) names.push_back(s.substr(q + 2, close - q - 2));
   }
   return names;
+}
+
+/// Why a figure file is cut short, or "" if it looks whole: a PNG must end with its IEND chunk,
+/// an SVG with its closing tag (gnuplot writing into a full disk stops anywhere). Other kinds
+/// are not judged.
+inline std::string figureTruncated(const std::string& path) {
+  auto endsWith = [](const std::string& s, const std::string& tail) {
+    return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
+  };
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string s = text.str();
+  if (endsWith(path, ".png")) {
+    static const std::string iend("\0\0\0\0IEND\xae\x42\x60\x82", 12);
+    if (s.compare(0, 8, "\x89PNG\r\n\x1a\n") != 0) return "no PNG signature";
+    if (!endsWith(s, iend)) return "no IEND chunk at its end";
+  } else if (endsWith(path, ".svg")) {
+    std::size_t end = s.find_last_not_of(" \t\r\n");
+    if (end == std::string::npos || !endsWith(s.substr(0, end + 1), "</svg>")) return "no closing </svg>";
+  }
+  return "";
 }
 
 /// `text` as a gnuplot single-quoted string: gnuplot reads nothing inside one but '' (one
@@ -312,7 +369,10 @@ inline void runGnuplot(const Options& o, const std::string& script) {
   ProcessIo io;
   io.cwd = dir;
   io.env = {{"DT_DATADIR", o.out}};
+  const std::string was = phase();
+  phase() = "drawing " + path;
   const int rc = runProgram({"gnuplot", "-e", vars, script}, io);
+  phase() = was;
   if (rc == 127)
     throw std::runtime_error("could not run gnuplot on " + path +
                              ": its figures were not drawn (is gnuplot installed? bash scripts/deps.sh)");
@@ -323,6 +383,12 @@ inline void runGnuplot(const Options& o, const std::string& script) {
     struct stat st;
     if (stat((o.out + "/" + name).c_str(), &st) != 0 || st.st_size == 0)
       throw std::runtime_error(path + " ran but did not write " + o.out + "/" + name);
+    const std::string cut = figureTruncated(o.out + "/" + name);
+    if (!cut.empty()) {
+      std::remove((o.out + "/" + name).c_str());  // no half figure left for the book to embed
+      throw std::runtime_error(path + " ran but " + o.out + "/" + name + " is cut short (" + cut +
+                               "; a full disk?): removed");
+    }
   }
   std::cout << "plotted " << path << " into " << o.out << "\n";
 }

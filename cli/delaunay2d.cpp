@@ -9,7 +9,9 @@
 // output that cannot be written. Outputs are all or nothing, and a failure leaves the files
 // that were there before as they were (dt::OutputFiles).
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -22,6 +24,8 @@
 #include <string>
 #include <vector>
 
+#include <fcntl.h>
+#include <sched.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -37,7 +41,8 @@ const char* kUsage =
     "  INPUT          Triangle .node file, or a text file of 'x y' lines; '-' reads\n"
     "                 standard input (a .node file if its first line has 4 fields)\n"
     "  -o OUT         write OUT.ele (OUT may also end in .ele); '-o -' writes the .ele to\n"
-    "                 standard output\n"
+    "                 standard output, and OUT naming a named pipe or a character device\n"
+    "                 (-o /dev/null: no .ele) gets the .ele itself\n"
     "  --stats        print points, triangles, triangulation_seconds (and of it the\n"
     "                 system's time, triangulation_system_seconds), mean walk steps,\n"
     "                 mean cavity size, threads used and why, and peak memory, one per\n"
@@ -54,24 +59,28 @@ const char* kUsage =
     "                 Hilbert-sorted), 'hilbert' (one Hilbert sort: as\n"
     "                 fast on spread-out points, quadratic on points along a curve) or\n"
     "                 'input' (file order: walks grow like sqrt(n), like n on sorted input);\n"
-    "                 when an order turns quadratic, a warning on stderr says so once\n"
+    "                 when a run turns quadratic (any order, either kernel), a warning on\n"
+    "                 stderr says so once and what to try instead\n"
     "  --kernel K     'fast' (default: code/fast_delaunay.h, index arrays, inlined filters,\n"
     "                 its own Hilbert sort) or 'listings' (the corrected Listings 2.4-2.7);\n"
     "                 both give the exact DT(S); --method super always uses the listings\n"
     "  --threads N    at most N threads for the fast kernel with --order brio ('auto': the\n"
     "                 machine's cores; default 1: the sequential kernel, one output per\n"
     "                 input); more than one only where the parallel page's cost model says\n"
-    "                 they pay (--stats prints threads_used and threads_reason); a Delaunay\n"
-    "                 DT(S), on cocircular points possibly another of them from run to run\n"
+    "                 they pay (--stats prints threads_used and threads_reason), and never\n"
+    "                 more than the CPUs the process may run on (capped, with a note); a\n"
+    "                 Delaunay DT(S), on cocircular points possibly another from run to run\n"
     "  --progress     report progress on stderr (default: only when stderr is a terminal)\n"
     "  --no-progress  never report progress\n"
     "  -h, --help     this help\n"
     "outputs: a file is written beside its target and renamed into place when all are\n"
     "written (through a symlink: beside the file it points to); a named pipe, a device or\n"
     "standard output is written straight into; a directory, socket or block device is refused\n"
-    "exit status: 0 success; 1 internal error or output not writable; 2 bad usage or bad\n"
-    "input (one line naming file, line and value); on failure no file output is written and\n"
-    "files that were there before are left as they were\n";
+    "exit status: 0 success; 1 internal error, output not writable, threads that cannot\n"
+    "start, or --stats lost (a closed or full standard output: the outputs are then written);\n"
+    "2 bad usage or bad input (one line naming file, line and value, control characters\n"
+    "written as \\n or \\xHH); on failure no file output is written and files that were there\n"
+    "before are left as they were\n";
 
 struct Options {
   std::string input, out, svg, msh;
@@ -83,14 +92,41 @@ struct Options {
   std::string order = "brio";
   int progress = -1;         // --progress 1, --no-progress 0, default -1: if stderr is a tty
   bool statsOnStderr = false;  // an output goes to standard output: it carries only data
+  // -o names a stream ('-', /dev/null, a named pipe, /dev/stdout): the .ele is written into it.
+  bool eleIntoOut = false;
   // --threads N (fast kernel, BRIO order). Default 1: on cocircular points two threads may
   // return another Delaunay triangulation from run to run, the sequential kernel always the
   // same one (the book's "parallel" page); more threads are used only where they pay.
   int threads = 1;
 };
 
+// A message as one line: a control character (a newline or an escape sequence in a path) is
+// written as \n, \t, \r or \xHH, so that it can neither split the line nor drive the terminal.
+std::string oneLine(const std::string& text) {
+  std::string s;
+  for (const char c : text) {
+    const unsigned char u = static_cast<unsigned char>(c);
+    if (u >= 0x20 && u != 0x7f) {
+      s += c;
+    } else if (c == '\n') {
+      s += "\\n";
+    } else if (c == '\t') {
+      s += "\\t";
+    } else if (c == '\r') {
+      s += "\\r";
+    } else {
+      const char* hex = "0123456789abcdef";
+      s += std::string("\\x") + hex[u >> 4] + hex[u & 15];
+    }
+  }
+  return s;
+}
+
+// One error line on stderr: "delaunay2d: " and the text, escaped (oneLine).
+void errorLine(const std::string& text) { std::cerr << "delaunay2d: " << oneLine(text) << "\n"; }
+
 [[noreturn]] void usageError(const std::string& why) {
-  std::cerr << "delaunay2d: " << why
+  std::cerr << "delaunay2d: " << oneLine(why)
             << " (usage: delaunay2d INPUT -o OUT [options]; delaunay2d --help for more)\n";
   std::exit(2);
 }
@@ -134,9 +170,11 @@ const OptionSpec kOptions[] = {
      [](Options& o, const std::string&) { o.progress = 0; }},
     {"--threads", nullptr, true, "--threads",
      [](Options& o, const std::string& v) {
-       char* end = nullptr;
-       const long t = v == "auto" ? dt::defaultThreadCount() : std::strtol(v.c_str(), &end, 10);
-       if (v.empty() || (end && *end != '\0') || t < 1 || t > 1024)
+       // 'auto' or digits only: strtol alone would also take " 2", "+2" and "2 ".
+       const bool digits = !v.empty() && v.size() <= 4 &&
+                           v.find_first_not_of("0123456789") == std::string::npos;
+       const long t = v == "auto" ? dt::defaultThreadCount() : digits ? std::atol(v.c_str()) : 0;
+       if (t < 1 || t > 1024)
          usageError("--threads must be 'auto' or an integer from 1 to 1024, not '" + v + "'");
        o.threads = int(t);
      }},
@@ -215,41 +253,60 @@ struct UnsupportedInput : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// Issue 19: an order that makes the walks (or the cavities) grow like the number of points
-// inserted makes the run quadratic. Watched between chunks of insertions; one warning.
+// An order (any of them, in either kernel) that makes the walks or the cavities grow like the
+// number of points inserted makes the run quadratic. Watched between chunks of insertions; one
+// warning, which says what to try instead.
 class WalkWatch {
  public:
-  WalkWatch(bool on, std::string order, Progress& progress)
-      : on_(on), order_(std::move(order)), progress_(progress) {}
+  WalkWatch(std::string order, bool fastKernel, Progress& progress)
+      : order_(std::move(order)), fast_(fastKernel), progress_(progress) {}
   // `done` of `total` points inserted, with the running sums of walk steps and cavity faces.
   void update(std::size_t done, std::size_t total, std::uint64_t walk, std::uint64_t cavity,
               double seconds) {
-    if (!on_ || warned_ || done <= lastDone_) return;
+    if (warned_ || done <= lastDone_) return;
     const double k = double(done - lastDone_);
     const double w = double(walk - lastWalk_) / k, c = double(cavity - lastCavity_) / k;
     lastDone_ = done, lastWalk_ = walk, lastCavity_ = cavity;
+    // A chunk of a few points (the last one) may hold one point's O(n) cavity: not a trend.
+    if (done < 2048 || k < 512) return;
     // In a good order both stay O(1); in file order on spread-out points the walks grow like
     // sqrt(n) (about sqrt(done) steps at most): a cost per point far above that is linear.
     const double limit = 4 * std::sqrt(double(done)) + 64;
-    if (done < 2048 || (w < limit && c < limit)) return;
+    bool linear = w >= limit || c >= limit;
+    // A slower linear growth (BRIO's last round of collinear points with the listings: about
+    // one step more per thousand points) stays under that limit for millions of points: the
+    // cost of a chunk is compared with the cost at a quarter as many points. Linear growth
+    // multiplies it by 4, sqrt(n) (spread-out points in file order, not flagged) by 2, a good
+    // order by 1.
+    const double cost = std::max(w, c);
+    const auto quarter = std::upper_bound(history_.begin(), history_.end(),
+                                          std::make_pair(done / 4, HUGE_VAL));
+    if (quarter != history_.begin())
+      linear = linear || (cost >= 32 && cost >= 3 * std::max(std::prev(quarter)->second, 1.0));
+    history_.emplace_back(done, cost);
+    if (!linear) return;
     warned_ = true;
     progress_.setQuadratic();
     // A cost per point growing linearly: the remaining time grows like total^2 - done^2.
     const double r = double(total) / double(done);
+    std::string instead = order_ != "brio" ? "--order brio avoids it"
+                          : fast_          ? "--kernel listings may avoid it"
+                                           : "--kernel fast may avoid it";
     std::fprintf(stderr,
                  "delaunay2d: warning: %s average %.0f triangles per point after %zu of %zu "
                  "points: --order %s on this input (sorted, along a curve, or cocircular) takes "
-                 "quadratic time, about %.0f s in all at this rate; --order brio avoids it\n",
-                 w >= limit ? "walks" : "cavities", w >= limit ? w : c, done, total, order_.c_str(),
-                 seconds * r * r);
+                 "quadratic time, about %.0f s in all at this rate; %s\n",
+                 w >= c ? "walks" : "cavities", cost, done, total, order_.c_str(),
+                 seconds * r * r, instead.c_str());
   }
 
  private:
-  bool on_, warned_ = false;
   std::string order_;
+  bool fast_, warned_ = false;
   Progress& progress_;
   std::size_t lastDone_ = 0;
   std::uint64_t lastWalk_ = 0, lastCavity_ = 0;
+  std::vector<std::pair<std::size_t, double>> history_;  // (points done, cost of that chunk)
 };
 
 Options parse(int argc, char** argv) {
@@ -291,6 +348,12 @@ Options parse(int argc, char** argv) {
     usageError("-o " + o.out + " names a directory; -o takes a base name (-o " + dir +
                "mesh writes " + dir + "mesh.ele)");
   }
+  // "-o /dev/null" discards the .ele rather than create /dev/null.ele; a pipe or a device is
+  // written into like "-o -" (outputsOf reports a path that cannot be classified).
+  try {
+    o.eleIntoOut = o.out == "-" || dt::classifyOutput(o.out).kind == dt::OutputTarget::Stream;
+  } catch (const std::exception&) {
+  }
   return o;
 }
 
@@ -298,21 +361,33 @@ Options parse(int argc, char** argv) {
 // a directory, a socket or a block device (dt::classifyOutput), two outputs on '-', one that is
 // the input file, and two that are the same file (dt::sameFile: device and inode, through
 // symlinks). Sets opt.statsOnStderr when an output is standard output.
-std::vector<std::pair<std::string, std::string>> outputsOf(Options& opt) {
+std::vector<std::pair<std::string, std::string>> outputsOf(Options& opt, const bool closedAtStart[3]) {
   std::vector<std::pair<std::string, std::string>> out = {
-      {"-o " + opt.out, opt.out == "-" ? "-" : opt.out + ".ele"}};
+      {"-o " + opt.out, opt.eleIntoOut ? opt.out : opt.out + ".ele"}};
   if (!opt.svg.empty()) out.emplace_back("--svg", opt.svg);
   if (!opt.msh.empty()) out.emplace_back("--msh", opt.msh);
   const std::string input = opt.input == "-" ? "/dev/stdin" : opt.input;
   for (std::size_t i = 0; i < out.size(); ++i) {
     const std::string option = out[i].first.substr(0, out[i].first.find(' '));
+    // Standard output or error closed by the caller (held by /dev/null since): not a sink.
+    const std::string& p = out[i].second;
+    for (int fd : {1, 2}) {
+      const std::string n = std::to_string(fd);
+      if (closedAtStart[fd] && ((fd == 1 && (p == "-" || p == "/dev/stdout")) ||
+                                (fd == 2 && p == "/dev/stderr") || p == "/dev/fd/" + n ||
+                                p == "/proc/self/fd/" + n)) {
+        errorLine(option + " " + p + ": cannot write to descriptor " + n + ": " +
+                  std::strerror(EBADF));
+        std::exit(1);
+      }
+    }
     try {
       dt::classifyOutput(out[i].second);
     } catch (const dt::OutputRefused& e) {
-      std::cerr << "delaunay2d: " << option << " " << e.what() << "\n";
+      errorLine(option + " " + e.what());
       std::exit(2);
     } catch (const std::exception& e) {
-      std::cerr << "delaunay2d: " << option << " " << e.what() << "\n";
+      errorLine(option + " " + e.what());
       std::exit(1);
     }
     if (out[i].second == "-")
@@ -321,14 +396,12 @@ std::vector<std::pair<std::string, std::string>> outputsOf(Options& opt) {
           usageError(out[j].first + " and " + out[i].first + " both write to standard output");
     if (dt::sameFile(out[i].second, "-")) opt.statsOnStderr = true;
     if (dt::sameFile(out[i].second, input)) {
-      std::cerr << "delaunay2d: " << out[i].first << ": " << out[i].second
-                << " is the input file; refusing to overwrite it\n";
+      errorLine(out[i].first + ": " + out[i].second + " is the input file; refusing to overwrite it");
       std::exit(2);
     }
     for (std::size_t j = 0; j < i; ++j)
       if (dt::sameFile(out[i].second, out[j].second)) {
-        std::cerr << "delaunay2d: " << out[j].first << " and " << out[i].first
-                  << " name the same file " << out[i].second << "\n";
+        errorLine(out[j].first + " and " + out[i].first + " name the same file " + out[i].second);
         std::exit(2);
       }
   }
@@ -374,8 +447,29 @@ void commitPause(std::size_t renamed) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // A standard descriptor closed by the caller (>&-) is held by /dev/null, so that no output
+  // or temporary opened later takes its number and receives messages; --stats meant for a
+  // closed one is reported as lost.
+  bool closedAtStart[3] = {false, false, false};
+  for (int fd = 0; fd < 3; ++fd)
+    if (::fcntl(fd, F_GETFD) < 0 && errno == EBADF) {
+      closedAtStart[fd] = true;
+      const int null = ::open("/dev/null", fd == 0 ? O_RDONLY : O_WRONLY);
+      if (null >= 0 && null != fd) {
+        ::dup2(null, fd);
+        ::close(null);
+      }
+    }
   Options parsed = parse(argc, argv);
-  const std::vector<std::pair<std::string, std::string>> outputs = outputsOf(parsed);
+  // More threads than the CPUs this process may run on only wait for each other.
+  cpu_set_t cpus;
+  const int usable = ::sched_getaffinity(0, sizeof cpus, &cpus) == 0 ? CPU_COUNT(&cpus) : 0;
+  if (usable > 0 && parsed.threads > usable) {
+    errorLine("note: --threads " + std::to_string(parsed.threads) + " capped to " +
+              std::to_string(usable) + ", the CPUs this process may run on");
+    parsed.threads = usable;
+  }
+  const std::vector<std::pair<std::string, std::string>> outputs = outputsOf(parsed, closedAtStart);
   const Options& opt = parsed;
   Progress progress(opt.progress);
   // Notes on merged duplicates: printed after the run, or after the error line if it fails.
@@ -385,14 +479,14 @@ int main(int argc, char** argv) {
     dt::PointSet ps = dt::readPoints(opt.input);
     const std::size_t n = ps.size();
     auto note = [&](std::size_t dup, std::size_t kept) {
-      notes += "delaunay2d: " + ps.path + ":" + std::to_string(ps.line(dup)) + ": point " +
+      notes += "delaunay2d: " + oneLine(ps.path) + ":" + std::to_string(ps.line(dup)) + ": point " +
                std::to_string(ps.number(dup)) + " duplicates point " +
                std::to_string(ps.number(kept)) + " (line " + std::to_string(ps.line(kept)) +
                "); merged\n";
     };
     // The geometry is the library's (dt::triangulate): here only the options, the progress
     // report and the notes on duplicates.
-    WalkWatch watch(opt.order != "brio", opt.order, progress);
+    WalkWatch watch(opt.order, opt.fastKernel, progress);
     dt::TriangulateOptions to;
     to.method = opt.superMethod ? dt::BuildMethod::Super : dt::BuildMethod::Hull;
     to.kernel = opt.fastKernel ? dt::KernelChoice::Fast : dt::KernelChoice::Listings;
@@ -420,10 +514,10 @@ int main(int argc, char** argv) {
       note(std::size_t(r.duplicates[j].first), std::size_t(r.duplicates[j].second));
     const std::vector<dt::Tri>& tri = r.tri;
     if (nDup > kNamedDuplicates)
-      notes += "delaunay2d: " + ps.path + ": " + std::to_string(nDup - kNamedDuplicates) +
+      notes += "delaunay2d: " + oneLine(ps.path) + ": " + std::to_string(nDup - kNamedDuplicates) +
                " more duplicate points merged (" + std::to_string(nDup) + " in all)\n";
     const std::vector<double>& xy = r.xy;
-    progress.phase("writing " + opt.out + ".ele");
+    progress.phase("writing " + oneLine(outputs[0].second));
     // All or nothing (dt::OutputFiles): every file is written beside its target, then all are
     // renamed into place; on any failure the old files stay as they were.
     dt::OutputFiles files;
@@ -449,11 +543,15 @@ int main(int argc, char** argv) {
     // blocked (and dropped at exit), so the exit status and --stats still say so.
     files.commit(dt::OutputFiles::AfterCommit::KeepSignalsBlocked);
     if (std::getenv("DELAUNAY2D_TEST_COMMIT_PAUSE_MS") != nullptr) commitPause(0);
+    // The outputs are final: a reader that has gone (stdout or stderr a closed pipe) must not
+    // turn that into a death by SIGPIPE. Lost notes leave the status 0; lost --stats do not.
+    std::signal(SIGPIPE, SIG_IGN);
     progress.finish(nDistinct);
     std::cerr << notes;
     notes.clear();
     if (opt.stats) {
       std::FILE* so = opt.statsOnStderr ? stderr : stdout;
+      const char* soName = opt.statsOnStderr ? "standard error" : "standard output";
       std::fprintf(so, "points: %zu\ntriangles: %zu\ntriangulation_seconds: %.6f\n", n, tri.size(),
                    r.seconds);
       if (r.systemSeconds >= 0)
@@ -466,25 +564,31 @@ int main(int argc, char** argv) {
       std::fprintf(so, "threads_used: %d\nthreads_reason: %s\n", r.threadsUsed,
                    r.threadsReason.c_str());
       std::fprintf(so, "peak_memory_mb: %.1f\n", double(dt::peakResidentKB()) / 1024.0);
+      errno = 0;
+      if (std::fflush(so) != 0 || std::ferror(so) || closedAtStart[opt.statsOnStderr ? 2 : 1]) {
+        const int err = closedAtStart[opt.statsOnStderr ? 2 : 1] ? EBADF : errno;
+        errorLine(std::string("--stats: cannot write to ") + soName + ": " +
+                  (err != 0 ? std::strerror(err) : "write error") + " (the outputs are written)");
+        return 1;
+      }
     }
     return 0;
   } catch (const dt::InputError& e) {
-    std::cerr << "delaunay2d: " << e.what() << "\n";
+    errorLine(e.what());
     status = 2;
   } catch (const dt::DegenerateInput& e) {
-    std::cerr << "delaunay2d: " << opt.input << ": " << e.what()
-              << ": no triangulation exists\n";
+    errorLine(opt.input + ": " + e.what() + ": no triangulation exists");
     notes.clear();  // the duplicates do not matter: nothing is triangulated
     status = 2;
   } catch (const UnsupportedInput& e) {
-    std::cerr << "delaunay2d: " << opt.input << ":" << e.what() << "\n";
+    errorLine(opt.input + ":" + e.what());
     status = 2;
   } catch (const std::bad_alloc&) {
-    std::cerr << "delaunay2d: " << (opt.input == "-" ? "stdin" : opt.input)
-              << ": out of memory while " << progress.current() << "\n";
+    errorLine((opt.input == "-" ? std::string("stdin") : opt.input) + ": out of memory while " +
+              progress.current());
     status = 1;
   } catch (const std::exception& e) {
-    std::cerr << "delaunay2d: error: " << e.what() << "\n";
+    errorLine(std::string("error: ") + e.what());
     status = 1;
   }
   std::cerr << notes;

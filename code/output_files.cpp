@@ -14,7 +14,9 @@
 #include <memory>
 #include <sys/file.h>
 #include <sys/stat.h>
+#include <sys/syscall.h>
 #include <unistd.h>
+#include <linux/fs.h>
 #include <utility>
 
 namespace dt {
@@ -197,35 +199,91 @@ class SignalsBlocked {
   bool keep_ = false, drop_ = false;
 };
 
-// flock() on the directories of the targets, in (device, inode) order so that two processes
-// locking overlapping sets cannot deadlock; released when destroyed. A directory that cannot be
-// opened for reading is not locked (the renames still happen, unordered with other runs).
+// The lock file of an output directory. Every run that writes a file into the directory takes
+// flock() on it: while it creates its temporaries and removes stale ones, and during its
+// commit. A file, not the directory itself: opening a directory needs read permission, and a
+// directory a run may write into (write and search) need not be readable.
+constexpr const char* kLockName = ".dt-output.lock";
+// Temporaries (and the link-made backups of the commit) are ".dttmp-<pid>-<k>" in the target's
+// directory: short whatever the target's name, so that every name that fits NAME_MAX can be
+// written and replaced.
+constexpr const char* kTempPrefix = ".dttmp-";
+
+// Opens (creating it if needed) the lock file of `dir`; -1 and errno if it cannot. Created
+// readable by everyone (0444): any user who may write into the directory can then open it and
+// lock it. O_NOFOLLOW and the regular-file check keep a planted symlink or pipe from being
+// opened instead.
+int openLockFile(const std::string& dir) {
+  const std::string name = dir + "/" + kLockName;
+  const int flags = O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC | O_NOCTTY;
+  int fd = -1;
+  for (int attempt = 0; attempt < 10 && fd < 0; ++attempt) {
+    fd = ::open(name.c_str(), O_RDONLY | flags);
+    if (fd < 0 && errno == EACCES) fd = ::open(name.c_str(), O_WRONLY | flags);
+    if (fd >= 0 || errno != ENOENT) break;
+    // Missing: created here (O_EXCL: if another run creates it at the same time, it is opened).
+    fd = ::open(name.c_str(), O_RDONLY | O_CREAT | O_EXCL | flags, 0444);
+    if (fd >= 0)
+      (void)::fchmod(fd, 0444);  // whatever the umask: readable by all
+    else if (errno != EEXIST)
+      return -1;
+  }
+  if (fd < 0) return -1;
+  struct stat st;
+  if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+    ::close(fd);
+    errno = EINVAL;
+    return -1;
+  }
+  return fd;
+}
+
+void lockExclusive(int fd) {
+  while (::flock(fd, LOCK_EX) != 0 && errno == EINTR) {
+  }
+}
+
+// The error of a lock that cannot be taken: the output named, with what the user can do.
+[[noreturn]] void lockFailed(const std::string& path, const std::string& dir, int err) {
+  // No directory to write into at all, or one the user may not write into: said as for the
+  // file itself, since no lock is the matter.
+  if (err == ENOENT || err == ENOTDIR || err == EROFS ||
+      ::faccessat(AT_FDCWD, dir.c_str(), W_OK | X_OK, AT_EACCESS) != 0)
+    throw std::runtime_error(path + ": cannot open for writing: " + std::strerror(err));
+  throw std::runtime_error(path + ": cannot lock its directory through " + dir + "/" + kLockName +
+                           ": " + std::strerror(err) +
+                           " (it must be a regular file the user can open; if it is not, "
+                           "remove it and the next run creates it)");
+}
+
+// The lock files of the targets' directories, each locked once, in (device, inode) order so
+// that two processes locking overlapping sets cannot deadlock; released when destroyed.
 class DirectoryLocks {
  public:
-  explicit DirectoryLocks(const std::vector<std::string>& targets) {
-    std::vector<std::pair<std::pair<dev_t, ino_t>, int>> dirs;
-    for (const std::string& t : targets) {
-      const int fd = ::open(dirOf(t).c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  /// targets[i] is written as paths[i] (for the message if a lock cannot be had).
+  DirectoryLocks(const std::vector<std::string>& targets, const std::vector<std::string>& paths) {
+    std::vector<std::pair<std::pair<dev_t, ino_t>, int>> locks;
+    for (std::size_t i = 0; i < targets.size(); ++i) {
+      const int fd = openLockFile(dirOf(targets[i]));
       struct stat st;
-      if (fd < 0) continue;
-      if (::fstat(fd, &st) != 0) {
-        ::close(fd);
-        continue;
+      if (fd < 0 || ::fstat(fd, &st) != 0) {
+        const int err = errno;
+        for (const auto& l : locks) ::close(l.second);
+        lockFailed(paths[i], dirOf(targets[i]), err);
       }
       const std::pair<dev_t, ino_t> id(st.st_dev, st.st_ino);
-      const bool seen = std::any_of(dirs.begin(), dirs.end(),
-                                    [&](const auto& d) { return d.first == id; });
-      if (seen) {
+      const bool seen = std::any_of(locks.begin(), locks.end(),
+                                    [&](const auto& l) { return l.first == id; });
+      if (seen) {  // a second descriptor of one lock file would wait for the first
         ::close(fd);
         continue;
       }
-      dirs.emplace_back(id, fd);
+      locks.emplace_back(id, fd);
     }
-    std::sort(dirs.begin(), dirs.end());
-    for (const auto& d : dirs) {
-      while (::flock(d.second, LOCK_EX) != 0 && errno == EINTR) {
-      }
-      fds_.push_back(d.second);
+    std::sort(locks.begin(), locks.end());
+    for (const auto& l : locks) {
+      lockExclusive(l.second);
+      fds_.push_back(l.second);
     }
   }
   DirectoryLocks(const DirectoryLocks&) = delete;
@@ -238,26 +296,48 @@ class DirectoryLocks {
   std::vector<int> fds_;
 };
 
-// Removes "<base>.dttmp-<pid>-..." beside `file` whose process no longer exists: what a run
-// killed by SIGKILL (or a crash) left behind. A pid that is alive, or not ours to signal, is
-// kept, so a concurrent run's temporaries are never touched.
-void removeStaleTemporaries(const std::string& file) {
-  const std::string dir = dirOf(file), prefix = baseOf(file) + ".dttmp-";
+// Removes the temporaries and backups (".dttmp-*") in `dir` that no live run holds: each run
+// keeps flock() on its temporaries until its commit ends, so one that can be locked here was
+// left by a run that ended without cleaning up (SIGKILL, a crash), whatever its pid says in
+// this PID namespace or another. Called with the directory's lock held: no run is committing
+// there (whose exchanged old files carry no lock) and none is creating a temporary. A directory
+// that cannot be read is skipped.
+void removeStaleTemporaries(const std::string& dir) {
   DIR* d = ::opendir(dir.c_str());
   if (d == nullptr) return;
+  const std::size_t plen = std::strlen(kTempPrefix);
   while (const dirent* e = ::readdir(d)) {
-    const std::string name = e->d_name;
-    if (name.compare(0, prefix.size(), prefix) != 0) continue;
-    const std::size_t dash = name.find('-', prefix.size());
-    const std::string pid = name.substr(prefix.size(), dash - prefix.size());
-    if (dash == std::string::npos || pid.empty() || pid.size() > 9 ||
-        pid.find_first_not_of("0123456789") != std::string::npos)
+    if (std::strncmp(e->d_name, kTempPrefix, plen) != 0) continue;
+    struct stat held, now;
+    // Only regular files are opened: opening a device can have effects of its own.
+    if (::fstatat(::dirfd(d), e->d_name, &now, AT_SYMLINK_NOFOLLOW) != 0 || !S_ISREG(now.st_mode))
       continue;
-    const pid_t p = pid_t(std::atol(pid.c_str()));
-    if (p == ::getpid() || p <= 0) continue;
-    if (::kill(p, 0) != 0 && errno == ESRCH) ::unlinkat(::dirfd(d), name.c_str(), 0);
+    const int flags = O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC | O_NOCTTY;
+    int fd = ::openat(::dirfd(d), e->d_name, O_RDONLY | flags);
+    if (fd < 0 && errno == EACCES) fd = ::openat(::dirfd(d), e->d_name, O_WRONLY | flags);
+    if (fd < 0) continue;  // not ours to judge (another user's, unreadable): kept
+    if (::fstat(fd, &held) == 0 && S_ISREG(held.st_mode) && ::flock(fd, LOCK_EX | LOCK_NB) == 0 &&
+        ::fstatat(::dirfd(d), e->d_name, &now, AT_SYMLINK_NOFOLLOW) == 0 &&
+        now.st_dev == held.st_dev && now.st_ino == held.st_ino)
+      ::unlinkat(::dirfd(d), e->d_name, 0);
+    ::close(fd);
   }
   ::closedir(d);
+}
+
+// Why a run that is not root could not replace `file` in a sticky directory (empty if it can):
+// there only the file's owner, the directory's owner and root may rename over or remove it, and
+// a failed replacement would leave names behind that no one but them could remove.
+std::string stickyRefusal(const std::string& file) {
+  struct stat dst, fst;
+  if (::geteuid() == 0 || ::stat(dirOf(file).c_str(), &dst) != 0 || !(dst.st_mode & S_ISVTX) ||
+      ::lstat(file.c_str(), &fst) != 0)
+    return "";
+  if (fst.st_uid == ::geteuid() || dst.st_uid == ::geteuid()) return "";
+  return "refusing to replace it: " + dirOf(file) +
+         " is a sticky directory and the file belongs to user " + std::to_string(fst.st_uid) +
+         ", so only that user (or the directory's owner) can replace it; ask them to remove it, "
+         "or write to another name";
 }
 
 }  // namespace
@@ -345,6 +425,7 @@ struct OutputFiles::File {
   OutputTarget target;
   std::string tmp;  // a File's temporary, until it is renamed
   int fd = -1;
+  int lockFd = -1;    // a second descriptor of the temporary, holding flock() until the end
   bool ownFd = true;  // false for an inherited descriptor (standard output)
   int slot = -1;
   std::unique_ptr<Writer> w;
@@ -358,6 +439,7 @@ void OutputFiles::removeAll() {
   for (File* f : files_) {
     if (f->fd >= 0 && f->ownFd) ::close(f->fd);
     if (!f->tmp.empty()) ::unlink(f->tmp.c_str());
+    if (f->lockFd >= 0) ::close(f->lockFd);  // after the unlink: never a window without the lock
     unregisterTemporary(f->slot);
     delete f;
   }
@@ -388,7 +470,17 @@ Writer& OutputFiles::open(const std::string& path) {
     files_.push_back(f.release());
     return *files_.back()->w;
   }
-  removeStaleTemporaries(t.file);
+  const std::string dir = dirOf(t.file);
+  // The directory's lock, while stale temporaries are judged and this one is made and locked:
+  // a temporary is never seen unlocked by another run's cleaning.
+  const int lock = openLockFile(dir);
+  if (lock < 0) lockFailed(path, dir, errno);
+  struct Closer {
+    int fd;
+    ~Closer() { ::close(fd); }
+  } closeLock{lock};
+  lockExclusive(lock);
+  removeStaleTemporaries(dir);
   struct stat old;
   const bool replacing = t.exists && ::stat(t.file.c_str(), &old) == 0;
   // Replacing by rename needs only the directory's permission; the file's owner expects it to
@@ -396,23 +488,40 @@ Writer& OutputFiles::open(const std::string& path) {
   if (replacing && ::faccessat(AT_FDCWD, t.file.c_str(), W_OK, AT_EACCESS) != 0)
     throw std::runtime_error(path + ": refusing to replace it: it could not be written in place (" +
                              sysReason() + ")");
+  if (replacing) {
+    const std::string why = stickyRefusal(t.file);
+    if (!why.empty()) throw std::runtime_error(path + ": " + why);
+  }
   for (int k = 0;; ++k) {
-    f->tmp = t.file + ".dttmp-" + std::to_string(::getpid()) + "-" + std::to_string(k);
+    f->tmp = dir + "/" + kTempPrefix + std::to_string(::getpid()) + "-" + std::to_string(k);
     f->slot = registerTemporary(f->tmp);  // before it exists: a signal may come at any time
     f->fd = ::open(f->tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
     if (f->fd >= 0) break;
     const int err = errno;
     unregisterTemporary(f->slot);
     f->slot = -1;
-    if (err != EEXIST || k >= 100) {
+    // EEXIST: a name of another run (another PID namespace may have the same pid) or ours.
+    if (err != EEXIST || k >= 1000) {
       f->tmp.clear();
       throw std::runtime_error(path + ": cannot open for writing: " + std::strerror(err));
     }
   }
+  // The mark of a live temporary: held until the commit ends (on a descriptor of its own, so
+  // that closing the written one still reports a late write error).
+  f->lockFd = ::dup(f->fd);
+  if (f->lockFd < 0 || ::flock(f->lockFd, LOCK_EX | LOCK_NB) != 0) {
+    const std::string why = sysReason();
+    ::close(f->fd);
+    if (f->lockFd >= 0) ::close(f->lockFd);
+    ::unlink(f->tmp.c_str());
+    unregisterTemporary(f->slot);
+    throw std::runtime_error(path + ": cannot lock its temporary file: " + why);
+  }
   if (replacing) {
-    // The new file takes the old one's owner (root only can give it) and permission bits.
+    // The new file takes the old one's owner (root only can give it) and mode, set-group-ID
+    // included (chown clears it, so it comes after; the kernel drops it where not allowed).
     if (::geteuid() == 0) (void)::fchown(f->fd, old.st_uid, old.st_gid);
-    (void)::fchmod(f->fd, old.st_mode & 0777);
+    (void)::fchmod(f->fd, old.st_mode & 07777);
   }
   f->w = std::make_unique<Writer>(f->fd, path);
   files_.push_back(f.release());
@@ -430,6 +539,18 @@ std::vector<std::string> OutputFiles::temporaries() const {
   return t;
 }
 
+namespace {
+
+// renameat2(2) by its system call (older C libraries lack the wrapper).
+int renameFlags(const std::string& from, const std::string& to, unsigned flags) {
+  return int(::syscall(SYS_renameat2, AT_FDCWD, from.c_str(), AT_FDCWD, to.c_str(), flags));
+}
+
+// A file system (or kernel) without that flag of renameat2.
+bool unsupported(int err) { return err == EINVAL || err == ENOSYS || err == EOPNOTSUPP; }
+
+}  // namespace
+
 void OutputFiles::commit(AfterCommit after) {
   // The temporaries first, then the streams' last bytes: a File that fails leaves a stream with
   // less, and a stream that fails leaves every File unrenamed.
@@ -443,47 +564,110 @@ void OutputFiles::commit(AfterCommit after) {
       if (rc != 0) throw std::runtime_error(f->target.path + ": cannot write: " + sysReason());
     }
   std::vector<File*> renamed;
-  std::vector<std::string> targets;
+  std::vector<std::string> targets, paths;
   for (File* f : files_)
     if (f->target.kind == OutputTarget::File) {
       renamed.push_back(f);
       targets.push_back(f->target.file);
+      paths.push_back(f->target.path);
     }
-  // Another run committing the same outputs waits here: the sets never interleave.
-  const DirectoryLocks locks(targets);
+  // Another run committing into the same directories waits here: the sets never interleave.
+  const DirectoryLocks locks(targets, paths);
   SignalsBlocked blocked;
-  // A hard link to each file that is already there, so that a rename failing half way can
-  // put back the ones replaced before it.
+  // How each target was put in place, so that a later failure can take it back:
+  //   Created   there was no file: the new one is removed;
+  //   Exchanged renameat2(RENAME_EXCHANGE): the old file is now under the temporary's name;
+  //   Linked    (file systems without the exchange) a hard link `backup` to the old file was
+  //             made before the rename; if it cannot be made, nothing of this file is touched.
+  enum How { Pending, Created, Exchanged, Linked };
+  std::vector<How> how(renamed.size(), Pending);
   std::vector<std::string> backup(renamed.size());
-  for (std::size_t i = 0; i < renamed.size(); ++i) {
+  // A target that is no longer a regular file (a directory made meanwhile) is not exchanged
+  // (an exchange would put the directory under the temporary's name): checked for all before
+  // the first rename, and again just before each.
+  auto notRegular = [](const File* f, struct stat& st) {
+    return ::lstat(f->target.file.c_str(), &st) == 0 && !S_ISREG(st.st_mode);
+  };
+  auto nowWhat = [](const File* f, const struct stat& st) {
+    return f->target.path + ": cannot replace it: it is now " + kindName(st.st_mode);
+  };
+  for (const File* f : renamed) {
     struct stat st;
-    if (::lstat(renamed[i]->target.file.c_str(), &st) != 0) continue;
-    const std::string b = renamed[i]->tmp + "-old";
-    if (::link(renamed[i]->target.file.c_str(), b.c_str()) == 0) backup[i] = b;
+    if (notRegular(f, st)) throw std::runtime_error(nowWhat(f, st));
   }
-  for (std::size_t i = 0; i < renamed.size(); ++i) {
-    File* f = renamed[i];
-    if (::rename(f->tmp.c_str(), f->target.file.c_str()) == 0) {
-      f->tmp.clear();
-      // From here on the commit is final: the signals that come are dropped or kept blocked.
-      if (after == AfterCommit::KeepSignalsBlocked)
-        blocked.keep();
-      else
-        blocked.dropPending();
-      if (g_commitHook != nullptr) g_commitHook(i + 1);
-      continue;
+  std::string why;
+  std::size_t done = 0;
+  for (; done < renamed.size() && why.empty(); ++done) {
+    File* f = renamed[done];
+    const std::string& to = f->target.file;
+    const std::string fail = f->target.path + ": cannot rename the temporary file into place: ";
+    struct stat st;
+    if (notRegular(f, st)) {
+      why = nowWhat(f, st);
+      break;
     }
-    const std::string why = f->target.path + ": cannot rename the temporary file into place: " +
-                            sysReason();
-    for (std::size_t j = 0; j < i; ++j) {
-      if (!backup[j].empty())
-        ::rename(backup[j].c_str(), renamed[j]->target.file.c_str());
-      else
-        ::unlink(renamed[j]->target.file.c_str());
+    if (::lstat(to.c_str(), &st) != 0) {
+      // None there: never put over one that appeared meanwhile (it would be lost on a rollback).
+      int rc = renameFlags(f->tmp, to, RENAME_NOREPLACE);
+      if (rc != 0 && unsupported(errno)) rc = ::rename(f->tmp.c_str(), to.c_str());
+      if (rc != 0) {
+        why = fail + sysReason();
+        break;
+      }
+      how[done] = Created;
+    } else if (renameFlags(f->tmp, to, RENAME_EXCHANGE) == 0) {
+      how[done] = Exchanged;  // f->tmp now names the old file
+    } else if (!unsupported(errno)) {
+      why = fail + sysReason();
+      break;
+    } else {
+      const std::string b = f->tmp + "-old";
+      ::unlink(b.c_str());  // a stale one (the directory is locked: no commit is under way)
+      if (::link(to.c_str(), b.c_str()) != 0) {
+        why = f->target.path + ": cannot keep a copy of the old file before replacing it (" +
+              sysReason() + "): nothing was replaced";
+        break;
+      }
+      backup[done] = b;
+      if (::rename(f->tmp.c_str(), to.c_str()) != 0) {
+        why = fail + sysReason();
+        ::unlink(b.c_str());
+        backup[done].clear();
+        break;
+      }
+      how[done] = Linked;
     }
-    for (const std::string& b : backup)
-      if (!b.empty()) ::unlink(b.c_str());
-    throw std::runtime_error(why);
+    if (how[done] != Exchanged) f->tmp.clear();
+    // From here on the commit is final: the signals that come are dropped or kept blocked.
+    if (after == AfterCommit::KeepSignalsBlocked)
+      blocked.keep();
+    else
+      blocked.dropPending();
+    if (g_commitHook != nullptr) g_commitHook(done + 1);
+  }
+  if (!why.empty()) {
+    // Put back, newest first, what was replaced. An old file whose restore fails is kept under
+    // its temporary or backup name, and the message says where.
+    std::string lost;
+    for (std::size_t j = done; j-- > 0;) {
+      File* f = renamed[j];
+      const std::string& to = f->target.file;
+      bool ok = true;
+      if (how[j] == Created) {
+        ok = ::unlink(to.c_str()) == 0;
+      } else if (how[j] == Exchanged) {
+        ok = renameFlags(f->tmp, to, RENAME_EXCHANGE) == 0;  // the new file is the temporary again
+        if (!ok) lost += "; the old " + f->target.path + " is kept as " + f->tmp;
+      } else if (how[j] == Linked) {
+        ok = ::rename(backup[j].c_str(), to.c_str()) == 0;
+        if (!ok) lost += "; the old " + f->target.path + " is kept as " + backup[j];
+      }
+      if (!ok) {
+        f->tmp.clear();  // never removed: it holds an old file (or the restore failed)
+        backup[j].clear();
+      }
+    }
+    throw std::runtime_error(why + lost);  // removeAll deletes the temporaries left
   }
   if (renamed.empty()) {  // streams only: they are complete, the commit is as final
     if (after == AfterCommit::KeepSignalsBlocked)
@@ -493,11 +677,7 @@ void OutputFiles::commit(AfterCommit after) {
   }
   for (const std::string& b : backup)
     if (!b.empty()) ::unlink(b.c_str());
-  for (File* f : files_) {
-    unregisterTemporary(f->slot);
-    delete f;
-  }
-  files_.clear();
+  removeAll();  // the old files under the temporaries' names, the locks of the new ones
 }
 
 void writeFileAtomic(const std::string& path, const std::string& content) {

@@ -50,19 +50,27 @@ bool sameFile(const std::string& a, const std::string& b);
 void writeFileAtomic(const std::string& path, const std::string& content);
 
 /// A set of outputs written all or nothing, as far as the kind of each allows:
-/// - a File is written to a temporary beside its target, named "<target>.dttmp-<pid>-<k>";
-///   commit() renames them all into place only when all are written, holding flock() on the
-///   directories of the targets so that two processes' sets never mix, and puts back the files
-///   that were there before if a rename fails. A replaced file keeps its mode (and, for root,
-///   its owner); a target the process could not write in place is refused.
+/// - a File is written to a temporary ".dttmp-<pid>-<k>" in its target's directory (a short
+///   name: any target whose name fits NAME_MAX can be written); commit() puts them all in place
+///   only when all are written, holding flock() on the lock file ".dt-output.lock" of each
+///   target directory (a file: the directory need not be readable), so that two processes'
+///   sets never mix. An existing target is swapped with its temporary (renameat2
+///   RENAME_EXCHANGE; where the file system lacks it, a hard link to the old file is made
+///   first, and if it cannot be, nothing is replaced), so that a failure half way puts every
+///   old file back; a new target is never put over a file that appeared meanwhile. A replaced
+///   file keeps its mode, set-group-ID included (and, for root, its owner); a target the
+///   process could not write in place, or could not replace in a sticky directory, is refused
+///   before anything is written. A replaced file is a new inode: another hard link to the old
+///   file keeps the old content (as after `mv`).
 /// - a Stream is written straight into (it cannot be taken back); commit() sends its last bytes
 ///   before any rename, so a stream that fails leaves every File as it was.
 /// Until the first rename, a failure, an exception or SIGINT/SIGTERM/SIGHUP removes the
 /// temporaries and leaves every pre-existing file as it was; from the first rename on (with
 /// streams only: once they are sent), the commit is final: those signals no longer end the
 /// process during the commit (see AfterCommit). SIGXFSZ is ignored (an oversized write fails with EFBIG) and so is SIGPIPE
-/// while a stream is open (a closed pipe fails with EPIPE). open() removes the temporaries of
-/// its target that processes no longer running left behind (killed with SIGKILL).
+/// while a stream is open (a closed pipe fails with EPIPE). Each temporary carries flock()
+/// while its run lives; open() removes the ".dttmp-*" of its directory that no one holds (left
+/// by a run killed with SIGKILL, in this PID namespace or another), if the directory is readable.
 class OutputFiles {
  public:
   /// What commit() does with SIGINT/SIGTERM/SIGHUP once the outputs are in place: drop those

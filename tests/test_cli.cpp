@@ -7,18 +7,28 @@
 #include <dirent.h>
 #include <fcntl.h>
 #include <grp.h>
+#include <sched.h>
+#include <signal.h>
+#include <sys/file.h>
 #include <sys/socket.h>
 #include <sys/stat.h>
 #include <sys/sysmacros.h>
 #include <sys/un.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstring>
 #include <map>
 #include <sstream>
 
 #include "support.h"
+#include "parallel_for.h"
+// The chapter programs' plumbing (the figure check); its default output directory is unused.
+#ifndef DT_OUTPUT_DIR
+#define DT_OUTPUT_DIR DT_TEST_TMP
+#endif
+#include "../chapters/common.h"
 
 using dt::XY;
 
@@ -174,8 +184,7 @@ TEST_CASE("cli a failed run leaves every pre-existing output as it was") {
                     std::string::npos, r.err);
   CHECK(dttest::readText(out + ".ele") == "OLD ELE\n");
   CHECK(dttest::readText(d + "/old.svg") == "OLD SVG\n");
-  CHECK(filesStartingWith(d, "out.ele.dttmp-").empty());
-  CHECK(filesStartingWith(d, "old.svg.dttmp-").empty());
+  CHECK(filesStartingWith(d, ".dttmp-").empty());
   // Bad input: exit 2, the old files untouched.
   dttest::writeText(d + "/bad.xy", "0 0\n1 x\n");
   r = dttest::runCli("'" + d + "/bad.xy' -o '" + out + "' --svg '" + d + "/old.svg'");
@@ -240,17 +249,19 @@ TEST_CASE("cli killed while its outputs are written it leaves no temporary and k
       "DELAUNAY2D_TEST_HOLD_OUTPUTS=60 \"$DT_CLI_BIN\" \"$D/in.xy\" -o \"$D/out\" "
       "--svg \"$D/s.svg\" 2> \"$D/err\" & pid=$!; "
       "for i in $(seq 300); do grep -q holding \"$D/err\" && break; sleep 0.1; done; "
-      "ls \"$D\" > \"$D/during\"; kill -TERM $pid; wait $pid; echo $? > \"$D/status\"";
+      "ls -a \"$D\" > \"$D/during\"; kill -TERM $pid; wait $pid; echo $? > \"$D/status\"";
   dttest::writeText(d + "/kill.sh", script + "\n");
   ch::ProcessIo io;
   io.stderrPath = "/dev/null";
   io.env = {{"D", d}, {"DT_CLI_BIN", DT_CLI}};
   REQUIRE(ch::runProgram({"sh", d + "/kill.sh"}, io) == 0);
   const std::string during = dttest::readText(d + "/during");
-  CHECK(during.find("out.ele.dttmp-") != std::string::npos);  // the signal came while they existed
-  CHECK(during.find("s.svg.dttmp-") != std::string::npos);
+  // The signal came while both temporaries existed.
+  const std::size_t first = during.find(".dttmp-");
+  CHECK(first != std::string::npos);
+  CHECK(during.find(".dttmp-", first + 1) != std::string::npos);
   CHECK(dttest::readText(d + "/status") == "143\n");  // 128 + SIGTERM: the signal's own status
-  CHECK(filesStartingWith(d, "out.ele.").empty());
+  CHECK(filesStartingWith(d, ".dttmp-").empty());
   CHECK(filesStartingWith(d, "s.svg").empty());
   CHECK(dttest::readText(out + ".ele") == "OLD ELE\n");
 }
@@ -725,35 +736,53 @@ TEST_CASE("cli signals at every 10 ms of a run give the old set or the new one w
   CHECK(oldSets > 0);
 }
 
-TEST_CASE("cli two runs on the same outputs started together never mix their files") {
-  const std::string d = freshDir("concurrent");
-  // Inputs with different triangle counts: a set is one run's when its three counts agree.
-  dttest::writeText(d + "/a.node", dttest::nodeText(dt::uniformPoints(200, 1)));
-  dttest::writeText(d + "/b.node", dttest::nodeText(dt::uniformPoints(260, 2)));
-  const std::string args = " -o '" + d + "/o' --svg '" + d + "/o.svg' --msh '" + d + "/o.msh'";
-  // One of the two (a in odd rounds, b in even ones) pauses 40 ms after each of its renames, the
-  // other does not: without a lock, the quick one's three renames fall inside the slow one's
-  // commit, which then puts its last two files over them.
-  const int pairs = 40;
-  const int rc = runScript(d, "pairs",
-      "for i in $(seq " + std::to_string(pairs) + "); do\n"
-      "pa=$((i % 2 * 40)); pb=$((40 - pa))\n"
-      "DELAUNAY2D_TEST_COMMIT_PAUSE_MS=$pa " + cli() + " '" + d + "/a.node'" + args +
-      " 2> /dev/null & a=$!\n"
-      "DELAUNAY2D_TEST_COMMIT_PAUSE_MS=$pb " + cli() + " '" + d + "/b.node'" + args +
-      " 2> /dev/null & b=$!\n"
-      "wait $a || exit 1; wait $b || exit 1\n"
-      "{ head -1 '" + d + "/o.ele'; grep -c '<polygon' '" + d + "/o.svg'; sed -n '/^\\$Elements/{n;p;}' '" +
-      d + "/o.msh'; } | tr '\\n' ' ' >> '" + d + "/sets'; echo >> '" + d + "/sets'\n"
-      "done");
-  REQUIRE(rc == 0);
-  std::istringstream sets(dttest::readText(d + "/sets"));
+namespace {
+
+// The script of the concurrent-runs tests: `pairs` times, a run on IN/a.node and one on
+// IN/b.node (inputs with different triangle counts) write OUT/o.ele, o.svg and o.msh at once,
+// then the three counts of the set left go as one line into OUT/sets. One of the two (a in odd
+// rounds, b in even ones) pauses 40 ms after each of its renames, the other does not: without
+// a lock, the quick one's three renames fall inside the slow one's commit, which then puts its
+// last two files over them.
+std::string pairsScript(const std::string& in, const std::string& out, int pairs) {
+  const std::string args = " -o '" + out + "/o' --svg '" + out + "/o.svg' --msh '" + out + "/o.msh'";
+  return "for i in $(seq " + std::to_string(pairs) + "); do\n"
+         "pa=$((i % 2 * 40)); pb=$((40 - pa))\n"
+         "DELAUNAY2D_TEST_COMMIT_PAUSE_MS=$pa " + cli() + " '" + in + "/a.node'" + args +
+         " 2> /dev/null & a=$!\n"
+         "DELAUNAY2D_TEST_COMMIT_PAUSE_MS=$pb " + cli() + " '" + in + "/b.node'" + args +
+         " 2> /dev/null & b=$!\n"
+         "wait $a || exit 1; wait $b || exit 1\n"
+         "{ head -1 '" + out + "/o.ele'; grep -c '<polygon' '" + out + "/o.svg'; sed -n '/^\\$Elements/{n;p;}' '" +
+         out + "/o.msh'; } | tr '\\n' ' ' >> '" + out + "/sets'; echo >> '" + out + "/sets'\n"
+         "done";
+}
+
+// Writes the two inputs of pairsScript into `dir`, readable by all.
+void writePairInputs(const std::string& dir) {
+  dttest::writeText(dir + "/a.node", dttest::nodeText(dt::uniformPoints(200, 1)));
+  dttest::writeText(dir + "/b.node", dttest::nodeText(dt::uniformPoints(260, 2)));
+  for (const char* f : {"/a.node", "/b.node"}) ::chmod((dir + f).c_str(), 0644);
+}
+
+// Checks the sets pairsScript left in OUT/sets: `pairs` lines, each one run's (counts agree).
+void checkNoMixedSet(const std::string& out, int pairs) {
+  std::istringstream sets(dttest::readText(out + "/sets"));
   int n = 0, mixed = 0;
   for (long ele, three, zero, svg, msh; sets >> ele >> three >> zero >> svg >> msh; ++n)
     mixed += !(ele == svg && svg == msh);
   CHECK(n == pairs);
   CHECK_MESSAGE(mixed == 0, mixed << " of " << n << " pairs left a mixed set");
-  CHECK(temporariesIn(d).empty());
+  CHECK(temporariesIn(out).empty());
+}
+
+}  // namespace
+
+TEST_CASE("cli two runs on the same outputs started together never mix their files") {
+  const std::string d = freshDir("concurrent");
+  writePairInputs(d);
+  REQUIRE(runScript(d, "pairs", pairsScript(d, d, 40)) == 0);
+  checkNoMixedSet(d, 40);
 }
 
 TEST_CASE("cli a file size limit fails the run with one line and no temporary and the old files kept") {
@@ -775,27 +804,41 @@ TEST_CASE("cli a file size limit fails the run with one line and no temporary an
   CHECK(temporariesIn(d).empty());
 }
 
-TEST_CASE("cli a run removes the temporaries that dead runs left and keeps those of live ones") {
+TEST_CASE("cli a run removes the temporaries no live run holds whatever their pid says") {
   const std::string d = freshDir("stale"), in = d + "/in.xy";
   dttest::writeText(in, kSquare);
-  // A pid that has just ended: a child that exits at once.
+  // A pid that has just ended: a child that exits at once. A run in another PID namespace can
+  // have such a pid here while it lives; only the flock it holds on its temporary tells.
   const pid_t child = ::fork();
   if (child == 0) ::_exit(0);
   ::waitpid(child, nullptr, 0);
-  const std::string dead = std::to_string(child), live = std::to_string(::getpid());
-  for (const std::string& name : {"o.ele.dttmp-" + dead + "-0", "o.ele.dttmp-" + dead + "-0-old",
-                                  "o.svg.dttmp-" + dead + "-3", "o.ele.dttmp-" + live + "-0",
-                                  "other.ele.dttmp-" + dead + "-0"})
-    dttest::writeText(d + "/" + name, "LEFT\n");
-  const dttest::CliResult r = dttest::runCli("'" + in + "' -o '" + d + "/o' --svg '" + d + "/o.svg'");
+  const std::string dead = std::to_string(child);
+  const std::string held = ".dttmp-" + dead + "-0", left = ".dttmp-" + dead + "-1",
+                    leftOld = ".dttmp-" + dead + "-2-old";
+  for (const std::string& name : {held, left, leftOld}) dttest::writeText(d + "/" + name, "LEFT\n");
+  const int fd = ::open((d + "/" + held).c_str(), O_RDONLY | O_CLOEXEC);
+  REQUIRE(fd >= 0);
+  REQUIRE(::flock(fd, LOCK_EX) == 0);  // as a live run holds its temporary
+  dttest::CliResult r = dttest::runCli("'" + in + "' -o '" + d + "/o' --svg '" + d + "/o.svg'");
   REQUIRE(r.status == 0);
-  std::vector<std::string> left = temporariesIn(d);
-  std::sort(left.begin(), left.end());
-  // The live process's temporary and another output's stay; the dead run's of o.ele and o.svg go.
-  CHECK(left == std::vector<std::string>{"o.ele.dttmp-" + live + "-0", "other.ele.dttmp-" + dead + "-0"});
+  CHECK(temporariesIn(d) == std::vector<std::string>{held});
+  CHECK(dttest::readText(d + "/" + held) == "LEFT\n");
+  ::close(fd);  // its run has ended: the next run removes it
+  r = dttest::runCli("'" + in + "' -o '" + d + "/o'");
+  REQUIRE(r.status == 0);
+  CHECK(temporariesIn(d).empty());
 }
 
 namespace {
+
+// In a forked child: becomes the triangulator with these arguments (status 122 if it cannot).
+[[noreturn]] void execCli(const std::vector<std::string>& args) {
+  std::vector<char*> argv{const_cast<char*>(DT_CLI)};
+  for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  ::execv(DT_CLI, argv.data());
+  ::_exit(122);
+}
 
 // Runs the CLI as user and group 65534 (nobody) with the given arguments; returns its exit
 // status and stderr.
@@ -808,11 +851,7 @@ dttest::CliResult runCliAsNobody(const std::vector<std::string>& args, const std
     if (::setgroups(0, nullptr) != 0 || ::setresgid(65534, 65534, 65534) != 0 ||
         ::setresuid(65534, 65534, 65534) != 0)
       ::_exit(121);
-    std::vector<char*> argv{const_cast<char*>(DT_CLI)};
-    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    ::execv(DT_CLI, argv.data());
-    ::_exit(122);
+    execCli(args);
   }
   int st = 0;
   ::waitpid(pid, &st, 0);
@@ -883,4 +922,347 @@ TEST_CASE("cli out of memory is one line naming the input and the phase") {
   CHECK(std::count(err.begin(), err.end(), '\n') == 1);
   CHECK(dttest::readText(d + "/o.ele") == "OLD\n");
   CHECK(temporariesIn(d).empty());
+}
+
+// ---- the edges of the outputs: long names, rollback, locks, exits ----------------------------
+
+namespace {
+
+// Runs `script` with sh as user and group 65534 (nobody) through setpriv; its exit status, or
+// -1 if it cannot run so (not root, setpriv missing).
+int runScriptAsNobody(const std::string& dir, const std::string& name, const std::string& script) {
+  if (::geteuid() != 0) return -1;
+  dttest::writeText(dir + "/" + name + ".sh", script + "\n");
+  ::chmod((dir + "/" + name + ".sh").c_str(), 0644);
+  ch::ProcessIo io;
+  io.env = {{"DT_CLI_BIN", DT_CLI}};
+  const int rc = ch::runProgram({"setpriv", "--reuid=65534", "--regid=65534", "--clear-groups", "sh",
+                                 dir + "/" + name + ".sh"}, io);
+  return rc >= 0 && rc < 127 ? rc : -1;
+}
+
+// Whether nobody can run the triangulator here (every directory above the build searchable).
+bool nobodyCanRun(const std::string& dir) {
+  return runScriptAsNobody(dir, "probe", cli() + " --help > /dev/null") == 0;
+}
+
+// Runs the triangulator with `args`, stdout and stderr as given by the caller's descriptors
+// (-1: /dev/null), SIGPIPE at its default action as a shell leaves it; returns its wait status.
+int runWithFds(const std::vector<std::string>& args, int out, int err) {
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    const int null = ::open("/dev/null", O_WRONLY);
+    ::dup2(out >= 0 ? out : null, 1);
+    ::dup2(err >= 0 ? err : null, 2);
+    ::signal(SIGPIPE, SIG_DFL);
+    execCli(args);
+  }
+  int st = 0;
+  ::waitpid(pid, &st, 0);
+  return st;
+}
+
+}  // namespace
+
+TEST_CASE("cli base names of 234 to 251 bytes are written and a failed commit puts the old file back byte for byte") {
+  const std::string d = freshDir("longnames");
+  dttest::writeText(d + "/in.xy", kSquare);
+  for (const int len : {234, 237, 245, 251}) {
+    CAPTURE(len);
+    const std::string base(std::size_t(len), 'K');
+    // Every name the shell's > can write (base.ele: up to 255 bytes), a run writes and replaces.
+    for (int round = 0; round < 2; ++round) {
+      const dttest::CliResult r = dttest::runCli("'" + d + "/in.xy' -o '" + d + "/" + base + "'");
+      CHECK_MESSAGE(r.status == 0, r.err);
+      CHECK(dttest::readText(d + "/" + base + ".ele").rfind("2 3 0\n", 0) == 0);
+    }
+    // The data-loss case: an existing .ele, and a second output that turns into a directory
+    // after the .ele is in place (DELAUNAY2D_TEST_COMMIT_PAUSE_MS pauses after each rename: long
+    // enough for the script's rm and mkdir on a loaded machine).
+    const std::string precious = "precious\n\x01\xff bytes " + std::to_string(len) + "\n";
+    dttest::writeText(d + "/" + base + ".ele", precious);
+    std::filesystem::remove_all(d + "/app.svg");
+    dttest::writeText(d + "/app.svg", "OLD SVG\n");
+    dttest::writeText(d + "/err", "");
+    const int rc = runScript(d, "turn",
+        "DELAUNAY2D_TEST_COMMIT_PAUSE_MS=1500 " + cli() + " '" + d + "/in.xy' -o '" + d + "/" + base +
+        "' --svg '" + d + "/app.svg' 2> '" + d + "/err' & pid=$!\n"
+        "for i in $(seq 300); do grep -q 'committing 1' '" + d + "/err' && break; sleep 0.02; done\n"
+        "rm '" + d + "/app.svg'; mkdir '" + d + "/app.svg'\n"
+        "wait $pid; echo $? > '" + d + "/status'");
+    CHECK(rc == 0);
+    const std::string err = dttest::readText(d + "/err");
+    CHECK_MESSAGE(dttest::readText(d + "/status") == "1\n", err);
+    CHECK_MESSAGE(err.find("app.svg: cannot replace it: it is now a directory") != std::string::npos, err);
+    CHECK(dttest::readText(d + "/" + base + ".ele") == precious);
+    CHECK(kindOf(d + "/app.svg") == 'd');
+    CHECK(temporariesIn(d).empty());
+    std::filesystem::remove(d + "/" + base + ".ele");
+  }
+}
+
+TEST_CASE("cli replacing a file keeps its set-group-ID bit") {
+  const std::string d = freshDir("setgid"), in = d + "/in.xy";
+  dttest::writeText(in, kSquare);
+  dttest::writeText(d + "/o.ele", "OLD\n");
+  // The file's group is the caller's own: the bit may be set by whoever owns the file.
+  REQUIRE(::chmod((d + "/o.ele").c_str(), 02754) == 0);
+  const dttest::CliResult r = dttest::runCli("'" + in + "' -o '" + d + "/o'");
+  REQUIRE_MESSAGE(r.status == 0, r.err);
+  struct stat st;
+  REQUIRE(::stat((d + "/o.ele").c_str(), &st) == 0);
+  CHECK((st.st_mode & 07777) == 02754);
+  CHECK(dttest::readText(d + "/o.ele").rfind("2 3 0\n", 0) == 0);
+}
+
+TEST_CASE("cli in a sticky directory another user's file is refused with what to do and nothing left behind") {
+  const std::string d = freshDir("sticky");
+  dttest::writeText(d + "/in.xy", kSquare);
+  ::chmod((d + "/in.xy").c_str(), 0644);
+  if (!nobodyCanRun(d)) {
+    MESSAGE("cannot run as nobody here: skipped");
+    return;
+  }
+  const std::string w = freshDir("sticky_shared");
+  ::chmod(w.c_str(), 01777);
+  // Root's file, writable by all: writable in place, yet not replaceable by nobody here.
+  dttest::writeText(w + "/o.ele", "ROOT'S\n");
+  ::chmod((w + "/o.ele").c_str(), 0666);
+  const int rc = runScriptAsNobody(w, "run", cli() + " '" + d + "/in.xy' -o '" + w + "/o' 2> '" +
+                                                 w + "/err'; echo $? > '" + w + "/status'");
+  REQUIRE(rc == 0);
+  const std::string err = dttest::readText(w + "/err");
+  CHECK(dttest::readText(w + "/status") == "1\n");
+  CHECK_MESSAGE(err.find("is a sticky directory and the file belongs to user 0") != std::string::npos, err);
+  CHECK(err.find("ask them to remove it, or write to another name") != std::string::npos);
+  CHECK(dttest::readText(w + "/o.ele") == "ROOT'S\n");
+  CHECK(temporariesIn(w).empty());
+}
+
+TEST_CASE("cli two runs into a directory they may write but not read never mix their sets") {
+  const std::string d = freshDir("unreadable");
+  writePairInputs(d);
+  if (!nobodyCanRun(d)) {
+    MESSAGE("cannot run as nobody here: skipped");
+    return;
+  }
+  // Write and search for others, no read: nobody cannot open the directory to lock it.
+  const std::string w = freshDir("unreadable_out");
+  ::chmod(w.c_str(), 0733);
+  REQUIRE(runScriptAsNobody(w, "pairs", pairsScript(d, w, 20)) == 0);
+  checkNoMixedSet(w, 20);
+}
+
+TEST_CASE("cli a thread that cannot start is one line and exit 1 and more threads than CPUs are capped") {
+  const std::string d = freshDir("threads");
+  dttest::writeText(d + "/in.node", dttest::nodeText(dt::uniformPoints(20000, 3)));
+  ::chmod((d + "/in.node").c_str(), 0644);
+  cpu_set_t cpus;
+  REQUIRE(::sched_getaffinity(0, sizeof cpus, &cpus) == 0);
+  const int usable = CPU_COUNT(&cpus);
+  dttest::CliResult r = dttest::runCli("'" + d + "/in.node' -o '" + d + "/o' --threads 1024");
+  CHECK_MESSAGE(r.status == 0, r.err);
+  CHECK(r.err == "delaunay2d: note: --threads 1024 capped to " + std::to_string(usable) +
+                     ", the CPUs this process may run on\n");
+  r = dttest::runCli("'" + d + "/in.node' -o '" + d + "/o' --threads ' 2'");
+  CHECK(r.status == 2);
+  CHECK(r.err.find("--threads must be 'auto' or an integer from 1 to 1024, not ' 2'") != std::string::npos);
+  if (usable < 2 || !nobodyCanRun(d)) {
+    MESSAGE("one CPU, or cannot run as nobody here: the thread limit part skipped");
+    return;
+  }
+  // One process for the user: no thread can start (root is not held by RLIMIT_NPROC, nobody is).
+  const std::string w = freshDir("threads_out");
+  ::chmod(w.c_str(), 0777);
+  const int rc = runScriptAsNobody(w, "nproc", "prlimit --nproc=1 " + cli() + " '" + d +
+                                                   "/in.node' -o '" + w + "/o' --threads 2 2> '" + w +
+                                                   "/err'; echo $? > '" + w + "/status'");
+  REQUIRE(rc == 0);
+  CHECK(dttest::readText(w + "/status") == "1\n");
+  CHECK(dttest::readText(w + "/err") ==
+        "delaunay2d: error: cannot start 2 threads: Resource temporarily unavailable\n");
+  CHECK(!dttest::fileExists(w + "/o.ele"));
+  CHECK(temporariesIn(w).empty());
+}
+
+TEST_CASE("threads parallelFor joins the threads that started when one cannot start") {
+  // The third start fails as std::thread does when the system has no thread left for us.
+  struct FailThird : dt::ThreadStarter {
+    int started = 0;
+    std::thread start(std::function<void()> run) override {
+      if (++started == 3) throw std::system_error(EAGAIN, std::generic_category());
+      return std::thread(std::move(run));
+    }
+  } starter;
+  std::atomic<int> ran{0};
+  std::string what;
+  try {
+    dt::parallelFor(5, 100, [&](int, std::size_t, std::size_t) { ++ran; }, &starter);
+  } catch (const dt::ThreadStartError& e) {
+    what = e.what();
+  }
+  CHECK(what == "cannot start 5 threads: Resource temporarily unavailable");
+  CHECK(ran == 2);  // the two started pieces ran and were joined; the rest never began
+  // With no failure, every piece runs.
+  ran = 0;
+  dt::parallelFor(5, 100, [&](int, std::size_t, std::size_t) { ++ran; });
+  CHECK(ran == 5);
+}
+
+TEST_CASE("cli exit status after the commit: SIGPIPE on notes is 0 and lost --stats are 1") {
+  const std::string d = freshDir("pipes");
+  // A duplicate point: a note on stderr after the commit.
+  dttest::writeText(d + "/in.xy", "0 0\n1 0\n0 1\n1 1\n1 1\n");
+  const std::string in = d + "/in.xy", o = d + "/o";
+  int p[2];
+  // stderr a pipe nobody reads any more: the note is lost, the run has succeeded.
+  REQUIRE(::pipe(p) == 0);
+  ::close(p[0]);
+  int st = runWithFds({in, "-o", o}, -1, p[1]);
+  ::close(p[1]);
+  CHECK(WIFEXITED(st));
+  CHECK(WEXITSTATUS(st) == 0);
+  // --stats into a closed pipe, /dev/full, a closed stdout: status 1, saying so, outputs written.
+  const int errFd = ::open((d + "/err").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  REQUIRE(::pipe(p) == 0);
+  ::close(p[0]);
+  std::remove((o + ".ele").c_str());
+  st = runWithFds({in, "-o", o, "--stats"}, p[1], errFd);
+  ::close(p[1]);
+  CHECK(WIFEXITED(st));
+  CHECK(WEXITSTATUS(st) == 1);
+  CHECK(dttest::fileExists(o + ".ele"));
+  const int full = ::open("/dev/full", O_WRONLY);
+  REQUIRE(full >= 0);
+  st = runWithFds({in, "-o", o, "--stats"}, full, errFd);
+  ::close(full);
+  CHECK(WIFEXITED(st));
+  CHECK(WEXITSTATUS(st) == 1);
+  ::close(errFd);
+  const std::string err = dttest::readText(d + "/err");
+  CHECK_MESSAGE(err.find("delaunay2d: --stats: cannot write to standard output: Broken pipe (the "
+                         "outputs are written)\n") != std::string::npos, err);
+  CHECK(err.find("delaunay2d: --stats: cannot write to standard output: No space left on device")
+        != std::string::npos);
+  const int rc = runScript(d, "closed", cli() + " '" + in + "' -o '" + o + "' --stats >&- 2> '" + d +
+                                            "/err2'; echo $? > '" + d + "/status'");
+  CHECK(rc == 0);
+  CHECK(dttest::readText(d + "/status") == "1\n");
+  CHECK(dttest::readText(d + "/err2").find("--stats: cannot write to standard output: Bad file "
+                                           "descriptor") != std::string::npos);
+  // '-o -' into a closed stdout is refused before anything is read.
+  const int rc2 = runScript(d, "closed2", cli() + " '" + in + "' -o - >&- 2> '" + d +
+                                              "/err3'; echo $? > '" + d + "/status'");
+  CHECK(rc2 == 0);
+  CHECK(dttest::readText(d + "/status") == "1\n");
+  CHECK(dttest::readText(d + "/err3") ==
+        "delaunay2d: -o -: cannot write to descriptor 1: Bad file descriptor\n");
+}
+
+TEST_CASE("cli control characters in a path are escaped and the message stays one line") {
+  const std::string d = freshDir("newline");
+  dttest::writeText(d + "/in.xy", kSquare);
+  const std::string odd = d + "/a\nb\x1b[31m";
+  dttest::CliResult r = dttest::runCli("'" + odd + ".xy' -o '" + d + "/o'");
+  CHECK(r.status == 2);
+  CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+  CHECK_MESSAGE(r.err.find(d + "/a\\nb\\x1b[31m.xy") != std::string::npos, r.err);
+  // An output in a directory that does not exist, named with a newline.
+  r = dttest::runCli("'" + d + "/in.xy' -o '" + d + "/no\ndir/o'");
+  CHECK(r.status == 1);
+  CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+  CHECK_MESSAGE(r.err.find("/no\\ndir/o.ele") != std::string::npos, r.err);
+}
+
+TEST_CASE("cli -o /dev/null discards the .ele and creates nothing in /dev") {
+  const std::string d = freshDir("devnull");
+  dttest::writeText(d + "/in.xy", kSquare);
+  ::unlink("/dev/null.ele");  // what an earlier version left there, if any
+  const dttest::CliResult r = dttest::runCli("'" + d + "/in.xy' -o /dev/null --svg '" + d + "/o.svg'");
+  CHECK_MESSAGE(r.status == 0, r.err);
+  CHECK(kindOf("/dev/null") == 'c');
+  CHECK(kindOf("/dev/null.ele") == '-');
+  CHECK(dttest::readText(d + "/o.svg").rfind("<svg", 0) == 0);
+}
+
+TEST_CASE("cli --order brio with the listings warns that shuffled collinear points and an apex are quadratic") {
+  // Points on a line, shuffled, and one apex: every new point's walk crosses the fan of
+  // triangles to the apex built so far; the default order does not help the listings.
+  const int n = 120000;
+  dt::XY p;
+  for (int i = 0; i < n; ++i) p.insert(p.end(), {double(i), 0.0});
+  dttest::shuffle(p, 7);
+  p.insert(p.end(), {n / 2.0, 1.0});
+  const std::string d = freshDir("brio_quadratic");
+  dttest::writeText(d + "/in.node", dttest::nodeText(p));
+  const dttest::CliResult r = dttest::runCli("'" + d + "/in.node' -o '" + d + "/o' --kernel listings --stats");
+  REQUIRE_MESSAGE(r.status == 0, r.err);
+  CHECK_MESSAGE(r.err.rfind("delaunay2d: warning: walks average ", 0) == 0, r.err);
+  CHECK(r.err.find("--order brio on this input (sorted, along a curve, or cocircular) takes "
+                   "quadratic time") != std::string::npos);
+  CHECK(r.err.find("; --kernel fast may avoid it\n") != std::string::npos);
+  CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+}
+
+TEST_CASE("process a program run by runProgram is ended and reaped with its parent's SIGTERM") {
+  const std::string d = freshDir("reap");
+  const std::string pidFile = d + "/child_pid";
+  const pid_t parent = ::fork();
+  if (parent == 0) {
+    // A chapter program running gnuplot: here a shell that says its pid and sleeps. (The
+    // test runner's own handlers are not a chapter program's.)
+    ::signal(SIGTERM, SIG_DFL);
+    const int rc = ch::runProgram({"sh", "-c", "echo $$ > \"$1.tmp\"; mv \"$1.tmp\" \"$1\"; exec sleep 30",
+                                   "sh", pidFile});
+    ::_exit(rc == 0 ? 0 : 3);
+  }
+  for (int i = 0; i < 500 && !dttest::fileExists(pidFile); ++i) ::usleep(10000);
+  REQUIRE(dttest::fileExists(pidFile));
+  const pid_t sleeper = pid_t(std::atol(dttest::readText(pidFile).c_str()));
+  REQUIRE(sleeper > 0);
+  REQUIRE(::kill(parent, SIGTERM) == 0);
+  int st = 0;
+  ::waitpid(parent, &st, 0);
+  CHECK(WIFSIGNALED(st));
+  CHECK(WTERMSIG(st) == SIGTERM);
+  // The child is gone, not reparented and still running.
+  const bool gone = ::kill(sleeper, 0) != 0 && errno == ESRCH;
+  CHECK(gone);
+  if (!gone) ::kill(sleeper, SIGKILL);
+}
+
+TEST_CASE("chapters a PNG or SVG figure cut short is told from a whole one") {
+  const std::string d = freshDir("figures_cut");
+  const std::string png = std::string("\x89PNG\r\n\x1a\n", 8) + std::string(20, 'x') +
+                          std::string("\0\0\0\0IEND\xae\x42\x60\x82", 12);
+  dttest::writeText(d + "/whole.png", png);
+  dttest::writeText(d + "/cut.png", png.substr(0, png.size() - 5));
+  dttest::writeText(d + "/whole.svg", "<svg>\n</svg>\n");
+  dttest::writeText(d + "/cut.svg", "<svg>\n<path d='M 0");
+  CHECK(ch::figureTruncated(d + "/whole.png").empty());
+  CHECK(ch::figureTruncated(d + "/cut.png") == "no IEND chunk at its end");
+  CHECK(ch::figureTruncated(d + "/whole.svg").empty());
+  CHECK(ch::figureTruncated(d + "/cut.svg") == "no closing </svg>");
+}
+
+TEST_CASE("chapters a bad option of bench_parallel creates no output directory and out of memory names the phase") {
+  const std::string d = freshDir("bench_args");
+  const std::string bench = dttest::buildDir() + "/bench_parallel";
+  for (const std::vector<std::string>& bad :
+       {std::vector<std::string>{"--threads", "abc"}, std::vector<std::string>{"--cache-dir", d + "/none"}}) {
+    std::vector<std::string> argv{bench, "--quick", "--no-plot", "--out", d + "/new"};
+    argv.insert(argv.end(), bad.begin(), bad.end());
+    const dttest::RunResult r = dttest::runCaptured(argv);
+    CHECK(r.status == 2);
+    CHECK_MESSAGE(r.err.rfind("bench_parallel: " + bad[0], 0) == 0, r.err);
+    CHECK(!std::filesystem::exists(d + "/new"));
+  }
+#if !defined(__SANITIZE_ADDRESS__)
+  // 25 MB of address space: enough to start, not for the footprint of 10^6 points' structures.
+  dttest::writeText(d + "/oom.sh", "ulimit -v 25000; exec \"$1\" --quick --no-plot --out \"$2\"\n");
+  const dttest::RunResult r = dttest::runCaptured(
+      {"sh", d + "/oom.sh", dttest::buildDir() + "/sec2_3_3_datastructures", d + "/oom"});
+  CHECK(r.status == 1);
+  CHECK_MESSAGE(r.err == "sec2_3_3_datastructures: out of memory while computing\n", r.err);
+#endif
 }

@@ -272,13 +272,17 @@ int main(int argc, char** argv) {
                        {"--cache-dir", "DIR",
                         "read the cache sizes the chart marks from DIR (index*/level, type, size, as Linux "
                         "writes them) instead of " + std::string(kSysCacheDir)}}};
+  // The values of its own options, checked before --out is created.
+  const auto check = [](const ch::Options& o) {
+    if (o.has("--cache-dir") && !std::filesystem::is_directory(o.extra.at("--cache-dir")))
+      throw ch::UsageError("--cache-dir: '" + o.extra.at("--cache-dir") + "' is not a directory");
+    if (o.has("--threads")) parseList(o.extra.at("--threads"));
+  };
   return ch::runMain(argc, argv, p, [&](const ch::Options& o) -> int {
     // Where the cache sizes come from: this machine's, or a directory in the same format (the
     // figure test plants one whose caches all fall within its small run's sizes).
     const bool ownCaches = !o.has("--cache-dir");
     const std::string cacheDir = ownCaches ? std::string(kSysCacheDir) : o.extra.at("--cache-dir");
-    if (!ownCaches && !std::filesystem::is_directory(cacheDir))
-      throw ch::UsageError("--cache-dir: '" + cacheDir + "' is not a directory");
     const int reps = int(o.number("--reps", o.quick ? 1 : 3));
     const int hw = dt::defaultThreadCount();
     std::vector<int> threadList = {1, 2};
@@ -738,5 +742,5 @@ int main(int argc, char** argv) {
     ch::writeOut(o, "time_per_point_verdict.html", v.str());
     ch::runGnuplot(o, "fig_time_per_point.gp");
     return 0;
-  });
+  }, check);
 }
