@@ -6,7 +6,8 @@
 // tokens, never text inside a literal or a comment. Always refused: the preprocessor and line
 // splices, braces that close the enclosing function, extern, asm, names the implementation
 // reserves (__x, _X, so _Z... mangled names too), and calls that leave the process's own
-// computation (system, popen, fork, exec*, ...).
+// computation (system, popen, fork, exec*, ...). `forbidden --shape ID FILE` prints the
+// regions' tokens with names and literals blurred instead, for exercise.sh similar.
 #include <cctype>
 #include <cstdio>
 #include <fstream>
@@ -171,9 +172,24 @@ void check(const std::vector<Token>& t, const std::vector<std::string>& words, c
 
 }  // namespace
 
+// The tokens of a region for the similarity hint of exercise.sh similar: names become "N"
+// (a renamed variable changes nothing), keywords stay, literals are "L".
+void printShape(const std::vector<Token>& t) {
+  static const std::set<std::string> keywords = {
+      "auto", "bool", "break", "case", "catch", "char", "class", "const", "continue", "default", "delete", "do",
+      "double", "else", "enum", "false", "float", "for", "if", "int", "long", "new", "nullptr", "return", "short",
+      "signed", "sizeof", "static", "struct", "switch", "this", "throw", "true", "try", "unsigned", "using",
+      "void", "volatile", "while"};
+  for (const Token& x : t)
+    std::printf("%s\n", x.name ? (keywords.count(x.text) ? x.text.c_str() : "N")
+                               : (x.text == "\"\"" || x.text == "''" || x.text == "0" ? "L" : x.text.c_str()));
+}
+
 int main(int argc, char** argv) {
+  const bool shape = argc > 1 && std::string(argv[1]) == "--shape";
+  if (shape) ++argv, --argc;
   if (argc < 3) {
-    std::fprintf(stderr, "usage: forbidden ID FILE [WORD...]\n");
+    std::fprintf(stderr, "usage: forbidden [--shape] ID FILE [WORD...]\n");
     return 2;
   }
   const std::string id = argv[1], file = argv[2];
@@ -194,7 +210,8 @@ int main(int argc, char** argv) {
     }
     if (inside && marks(line, "END", id)) {
       inside = false;
-      check(tokenize(body, first, file), words, file);
+      if (shape) printShape(tokenize(body, first, file));
+      else check(tokenize(body, first, file), words, file);
       continue;
     }
     if (inside) body += line + "\n";

@@ -62,6 +62,13 @@ cp           base               scripts
 node         nodejs             book and web checks (axe-core in Chromium, package.json)
 npm          nodejs             scripts/deps.sh (npm ci: axe-core, pinned by package-lock.json)
 bwrap        bubblewrap         scripts/exercise.sh (the sandbox of grading)
+setpriv      base               scripts/exercise.sh (grading drops to the user nobody)
+prlimit      base               scripts/exercise.sh (the limits of the sandbox)
+nm           binutils           scripts/exercise.sh (the functions the object of a student calls)
+c++filt      binutils           scripts/exercise.sh (their names, demangled)
+comm         base               scripts/exercise.sh
+paste        base               scripts/exercise.sh
+id           base               scripts/exercise.sh
 cmp          base               scripts/deps.sh
 git          git                scripts/mutants.sh (a temporary copy of the tree)
 shellcheck   shellcheck         CMakeLists.txt (the ctest entry shellcheck: every script of scripts/)

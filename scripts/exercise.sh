@@ -10,11 +10,23 @@
 #                                            EVERY exercise's solution stripped (the markers stay,
 #                                            around a stub), the IDs stored in DIR/.exercise,
 #                                            answers.md for prove and measure exercises
-#   scripts/exercise.sh grade ID STUDENT_DIR... > grades.tsv
+#   scripts/exercise.sh grade [--format tsv|canvas|moodle|gradescope|junit] [--seed N]
+#                             [--roster FILE] [--summary DIR] [--unsandboxed] ID STUDENT_DIR...
 #                                            each student's solution region put into this tree's
-#                                            build, this tree's tests run (a timeout per test);
-#                                            one TSV row per student. Prove and measure: the
-#                                            answers are copied to answers_ID/ beside the sheet
+#                                            files, checked by tokens and by the functions its
+#                                            object calls, compiled, linked and run in bubblewrap
+#                                            as nobody; the verdict is the judge's output compared
+#                                            with the teacher's, outside the sandbox; one row per
+#                                            student. Prove and measure: the answers are copied
+#                                            to answers_ID/ beside the sheet
+#   scripts/exercise.sh export FORMAT ID GRADES.TSV [ROSTER]
+#                                            a saved table of grade in another format
+#   scripts/exercise.sh summary ID GRADES.TSV OUTDIR
+#                                            OUTDIR/summary.html: a histogram of each test's
+#                                            passes (gnuplot), the failures, the slowest
+#   scripts/exercise.sh similar [--threshold T] ID STUDENT_DIR...
+#                                            pairs of students whose code has nearly the same
+#                                            shape (a hint to talk about, not a verdict)
 #   scripts/exercise.sh handout SECTION [OUT]  OUT/exercises_SECTION.md and OUT/solutions_SECTION.md
 # The student, inside the workspace:
 #   scripts/exercise.sh check [ID...]        build, run the tests (implement) or collect the
@@ -29,6 +41,9 @@
 # Environment: DT_TEST_TIMEOUT (seconds per test: 60 in check, 10 in grade),
 #   DT_EXERCISE_JOBS (parallel jobs), DT_GRADE_BUILD (the teacher's build, default build/),
 #   DT_GRADE_NO_BUILD=1 (grade without bringing the build up to date first),
+#   DT_GRADE_UNSANDBOXED=1 (as --unsandboxed), DT_GRADE_BWRAP (the bubblewrap program, default
+#   bwrap), DT_GRADE_STATIC_CHECKS=0 (the token and symbol checks off: for the machinery's test
+#   that the sandbox and the judge hold alone; every row says so),
 #   DT_GRADE_ANSWERS (where grade puts answers, default ./answers_ID), DT_WATCH_ROUNDS (watch
 #   stops after so many checks; for tests), DT_HANDOUT_FIGURES (where handout takes the figures,
 #   default build/output/ch2), DT_HANDOUT_BUILD_FIGURES=1 (handout builds a missing figure).
@@ -395,8 +410,8 @@ cmd_release() {
       leaks=1
     fi
     cat "$tmp" >"$abs/$f"; rm -f "$tmp"
-  done < <(cd "$abs" && find code tests scripts exercises cli book -type f \( -name '*.cpp' -o -name '*.h' -o -name '*.sh' -o -name '*.txt' \) 2>/dev/null |
-           xargs -r awk -v values="$values" -v mode=list -f "$HERE/exercises/answer_values.awk" | cut -d: -f1 | sort -u)
+  done < <(cd "$abs" && find code tests scripts exercises cli book -type f \( -name '*.cpp' -o -name '*.h' -o -name '*.sh' -o -name '*.txt' \) -print0 2>/dev/null |
+           xargs -0 -r awk -v values="$values" -v mode=list -f "$HERE/exercises/answer_values.awk" | cut -d: -f1 | sort -u)
   if [ -n "$leaks" ]; then
     local why; why="$(sed "s#^$abs/##" "$abs/.leaks")"
     rm -rf "$abs"
@@ -766,7 +781,7 @@ grade_one() {
     done
     [ -n "$first" ] || [ -z "$diffs" ] || first="$(cut -f 2 <<<"$diffs" | head -n 1)"
   fi
-  rm -rf "$me/bin" "$me/box"
+  rm -rf "${me:?}/bin" "${me:?}/box"
   row "$result" "$passed" "${first:-$verdict}"
 }
 
@@ -814,7 +829,7 @@ grade_prepare() {
   local keep=() t name
   for t in "${GRADE_TEST_OBJS[@]}"; do
     case "$t" in */main.cpp.o) keep+=("$t"); continue ;; esac
-    local src="$HERE/tests/$(basename "$t" .o)"
+    local src; src="$HERE/tests/$(basename "$t" .o)"
     while IFS= read -r name; do
       if [ -f "$src" ] && grep -qF -- "TEST_CASE(\"${name%%\**}" "$src"; then keep+=("$t"); break; fi
     done < <(field "$id" test)
@@ -849,8 +864,9 @@ reference() {
 
 # export_grades FORMAT ID TSV ROSTER: the grades of TSV (grade's own table) in FORMAT on stdout:
 #   tsv         the table as it is
-#   junit       JUnit XML: a testsuite per student, a testcase per test (failure, or skipped
-#               when not run), as CI servers read doctest's --reporters=junit
+#   junit       JUnit XML: a testsuite per student, a testcase per test (a failure whose type
+#               is the test's column, or the result when the test was not run), as CI servers
+#               read doctest's --reporters=junit
 #   gradescope  Gradescope's results.json of one submission: score, max_score, output, tests
 #               (name, score, max_score, status, output, visibility)
 #   canvas      Canvas' gradebook CSV: Student, ID, SIS User ID, SIS Login ID, Section, then the
@@ -870,11 +886,11 @@ export_grades() {
     BEGIN {
       if (roster != "") while ((getline line < roster) > 0) {
         if (line ~ /^#/) continue
-        nf = split(line, f, "\t"); for (i = 3; i <= 7; i++) info[f[1], i] = i <= nf ? f[i] : ""
-        known[f[1]] = 1
+        nf = split(line, rf, "\t"); for (i = 3; i <= 7; i++) info[rf[1], i] = i <= nf ? rf[i] : ""
+        known[rf[1]] = 1
       }
     }
-    NR == 1 { n = NF - 8; for (i = 1; i <= n; i++) test[i] = $(i + 3); next }
+    NR == 1 { n = NF - 7; for (i = 1; i <= n; i++) test[i] = $(i + 3); next }
     {
       s++; who[s] = $1; res[s] = $2; split($3, p, "/"); passed[s] = p[1]; judge[s] = $(n + 4)
       detail[s] = $(n + 5); secs[s] = $(n + 6)
@@ -882,16 +898,17 @@ export_grades() {
     }
     END {
       if (format == "junit") {
-        fails = 0; for (k = 1; k <= s; k++) for (i = 1; i <= n; i++) fails += col[k, i] != "pass" && col[k, i] != "-"
+        # A test that was not run (the judge timed out, crashed or exited; the code was
+        # refused) failed as much as one that ran: its failure says why.
+        fails = 0; for (k = 1; k <= s; k++) for (i = 1; i <= n; i++) fails += col[k, i] != "pass"
         printf "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"exercise %s\" tests=\"%d\" failures=\"%d\">\n", xml(id), s * n, fails
         for (k = 1; k <= s; k++) {
-          f = 0; sk = 0; for (i = 1; i <= n; i++) { f += col[k, i] != "pass" && col[k, i] != "-"; sk += col[k, i] == "-" }
-          printf "  <testsuite name=\"%s\" tests=\"%d\" failures=\"%d\" skipped=\"%d\" time=\"%s\">\n", xml(who[k]), n, f, sk, secs[k]
+          f = 0; for (i = 1; i <= n; i++) f += col[k, i] != "pass"
+          printf "  <testsuite name=\"%s\" tests=\"%d\" failures=\"%d\" time=\"%s\">\n", xml(who[k]), n, f, secs[k]
           for (i = 1; i <= n; i++) {
             printf "    <testcase classname=\"%s\" name=\"%s\"", xml(who[k]), xml(test[i])
             if (col[k, i] == "pass") print "/>"
-            else if (col[k, i] == "-") printf ">\n      <skipped message=\"%s\"/>\n    </testcase>\n", xml(res[k] ": " detail[k])
-            else printf ">\n      <failure type=\"%s\" message=\"%s\"/>\n    </testcase>\n", xml(col[k, i]), xml(res[k] ": " detail[k])
+            else printf ">\n      <failure type=\"%s\" message=\"%s\"/>\n    </testcase>\n", xml(col[k, i] == "-" ? res[k] : col[k, i]), xml(res[k] ": " detail[k])
           }
           print "  </testsuite>"
         }
@@ -945,7 +962,8 @@ cmd_grade() {
       --seed) seed="${2:-}"; shift 2 ;;
       --roster) roster="${2:-}"; shift 2 ;;
       --unsandboxed) GRADE_UNSANDBOXED=1; shift ;;
-      --*) die "grade: unknown option '$1' (--format tsv|canvas|moodle|gradescope|junit, --seed N, --roster FILE, --unsandboxed)" ;;
+      --summary) summary="${2:-}"; shift 2 ;;
+      --*) die "grade: unknown option '$1' (--format tsv|canvas|moodle|gradescope|junit, --seed N, --roster FILE, --summary DIR, --unsandboxed)" ;;
       *) break ;;
     esac
   done
@@ -1001,7 +1019,146 @@ cmd_grade() {
   header="$(IFS=$'\t'; printf 'student\tresult\tpassed\t%s\tjudge\tfirst_failure\tseconds\tseed' "${names[*]}")"
   { echo "$header"; cat "$work"/rows/*; } >"$work/grades.tsv"
   export_grades "$format" "$id" "$work/grades.tsv" "$roster"
+  [ -z "$summary" ] || cmd_summary "$id" "$work/grades.tsv" "$summary" >&2
   echo "grade: $n student$([ "$n" = 1 ] || echo s) of $id graded ($(awk -F '\t' 'NR > 1 && $2 == "PASS"' "$work/grades.tsv" | wc -l) pass)" >&2
+}
+
+# similar [--threshold T] ID STUDENT_DIR...: the pairs of students whose code for ID has nearly
+# the same shape: the regions read as tokens (exercises/forbidden.cpp --shape: names and literals
+# blurred, so renaming changes nothing), cut into runs of 5 tokens; the share of runs two
+# students have in common (those of the stub left aside) is at least T (default 0.8). A hint to
+# talk about, never a verdict: short solutions look alike by nature, and two students may reach
+# the same code honestly.
+cmd_similar() {
+  local threshold=0.8
+  if [ "${1:-}" = --threshold ]; then threshold="${2:-}"; shift 2; fi
+  [[ $threshold =~ ^(0(\.[0-9]+)?|1(\.0*)?)$ ]] || die "similar: --threshold wants a number from 0 to 1, not '$threshold'"
+  [ $# -ge 3 ] || die "usage: similar [--threshold T] ID STUDENT_DIR STUDENT_DIR..."
+  local id="$1"; shift
+  exists "$id"
+  [ "$(field "$id" kind)" = implement ] || die "similar compares code: $id is a $(field "$id" kind) exercise"
+  local work; work="$(mktemp -d)"
+  # shellcheck disable=SC2064
+  trap "rm -rf '$work'" EXIT
+  g++ -std=c++17 -O1 -o "$work/forbidden" "$HERE/exercises/forbidden.cpp" || die "exercises/forbidden.cpp does not compile"
+  local files f s; files="$(region_files "$id" "$HERE" | grep -E '^code/.*\.cpp$' || true)"
+  for f in $files; do
+    strip_file "$id" "$HERE/$f" >"$work/stub.cpp"
+    "$work/forbidden" --shape "$id" "$work/stub.cpp" >>"$work/stub.shape" || true
+  done
+  for s in "$@"; do
+    : >"$work/$(basename "$s").shape"
+    for f in $files; do
+      [ -f "$s/$f" ] && "$work/forbidden" --shape "$id" "$s/$f" >>"$work/$(basename "$s").shape" 2>/dev/null || true
+    done
+  done
+  local shapes=(); for s in "$@"; do shapes+=("$(basename "$s").shape"); done
+  echo "# similar $id: pairs whose code shares at least $threshold of its runs of 5 tokens (names and literals blurred); a hint, not a verdict"
+  printf 'share\tstudent\tstudent\truns\n'
+  (cd "$work" && awk -v t="$threshold" '
+      FNR == 1 { name = FILENAME; sub(/\.shape$/, "", name); k = 0 }
+      { tok[name, ++k] = $0; len[name] = k }
+      END {
+        for (s in len) {
+          n = 0
+          for (i = 1; i + 4 <= len[s]; i++) {
+            g = tok[s, i] " " tok[s, i + 1] " " tok[s, i + 2] " " tok[s, i + 3] " " tok[s, i + 4]
+            if (s == "stub") stubgram[g] = 1
+            else if (!((s, g) in has)) { has[s, g] = 1; gram[s, ++n] = g }
+          }
+          count[s] = n
+        }
+        m = 0
+        for (s in count) if (s != "stub") who[++m] = s
+        for (a = 1; a <= m; a++) for (b = a + 1; b <= m; b++) {
+          x = who[a]; y = who[b]; both = 0; nx = 0; ny = 0
+          for (i = 1; i <= count[x]; i++) if (!(gram[x, i] in stubgram)) { nx++; if ((y, gram[x, i]) in has) both++ }
+          for (i = 1; i <= count[y]; i++) if (!(gram[y, i] in stubgram)) ny++
+          union = nx + ny - both
+          if (union > 0 && both / union >= t) printf "%.2f\t%s\t%s\t%d\n", both / union, x < y ? x : y, x < y ? y : x, both
+        }
+      }' stub.shape "${shapes[@]}") | sort -t "$(printf '\t')" -k1,1nr -k2,2
+}
+
+# summary ID GRADES.TSV OUT: OUT/summary.html, the class at a glance for the teacher: a gnuplot
+# histogram of the passes of each test (OUT/passes.png, said in words too), the results by
+# kind, the students that did not pass with their first failure, and the slowest students.
+cmd_summary() {
+  [ $# -eq 3 ] || die "usage: summary ID GRADES.TSV OUTDIR"
+  local id="$1" tsv="$2" out="$3"
+  exists "$id"
+  [ -f "$tsv" ] || die "summary: no file '$tsv'"
+  head -n 1 "$tsv" | grep -q $'^student\tresult\tpassed\t' || die "summary: $tsv is not a table of grade"
+  mkdir -p "$out"
+  local data="$out/passes.dat"
+  # One line per test: its number, how many students passed it, how many were graded.
+  awk -F '\t' 'NR == 1 { n = NF - 7; next }
+               { s++; for (i = 1; i <= n; i++) p[i] += $(i + 3) == "pass" }
+               END { for (i = 1; i <= n; i++) printf "%d %d %d\n", i, p[i], s }' "$tsv" >"$data"
+  local students; students="$(awk 'END { print NR - 1 }' "$tsv")"
+  gnuplot <<GP || die "summary: gnuplot could not draw $out/passes.png"
+set terminal pngcairo size 800,420 enhanced font 'Sans,12' background rgb 'white'
+set output '$out/passes.png'
+set title 'Exercise $id: students passing each test (of $students)'
+set xlabel 'test (numbered as in the table below)'
+set ylabel 'students passing'
+set yrange [0:$students + 0.5]
+set ytics $(( (students + 9) / 10 ))
+set xrange [0.4:$(wc -l <"$data") + 0.6]
+set xtics 1
+set grid ytics
+set boxwidth 0.6
+set style fill solid 0.6 border rgb 'black'
+plot '$data' using 1:2 with boxes lc rgb '#1f5fa8' notitle, \
+     '' using 1:2:(sprintf('%d', \$2)) with labels offset 0,0.8 notitle
+GP
+  awk -F '\t' -v id="$id" '
+    function h(s) { gsub(/&/, "\\&amp;", s); gsub(/</, "\\&lt;", s); gsub(/>/, "\\&gt;", s); return s }
+    NR == 1 { n = NF - 7; for (i = 1; i <= n; i++) test[i] = $(i + 3); next }
+    {
+      s++; who[s] = $1; res[s] = $2; got[s] = $3; first[s] = $(n + 5); secs[s] = $(n + 6) + 0
+      kinds[$2]++; for (i = 1; i <= n; i++) p[i] += $(i + 3) == "pass"
+    }
+    END {
+      print "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">"
+      printf "<title>Exercise %s: the class at a glance</title>\n", h(id)
+      print "<style>body { font-family: sans-serif; max-width: 60em; margin: 2em auto; color: #111; line-height: 1.4 }"
+      print "table { border-collapse: collapse; margin: 1em 0 } th, td { border: 1px solid #666; padding: 0.3em 0.6em; text-align: left; vertical-align: top }"
+      print "th { background: #e8eef6 } img { max-width: 100%; height: auto }</style>\n</head>\n<body>\n<main>"
+      printf "<h1>Exercise %s: the class at a glance</h1>\n", h(id)
+      line = ""
+      for (k in kinds) line = line (line == "" ? "" : ", ") kinds[k] " " h(k)
+      printf "<p>%d students graded: %s.</p>\n", s, line
+      print "<h2>Passes of each test</h2>"
+      alt = "Bar chart of the students passing each test:"
+      for (i = 1; i <= n; i++) alt = alt sprintf(" test %d, %d of %d;", i, p[i], s)
+      printf "<figure>\n<img src=\"passes.png\" width=\"800\" height=\"420\" alt=\"%s\">\n", h(alt)
+      print "<figcaption>The number of students passing each test; the table below names the tests and gives the same numbers.</figcaption>\n</figure>"
+      print "<table>\n<caption>The tests</caption>\n<thead><tr><th scope=\"col\">test</th><th scope=\"col\">name</th><th scope=\"col\">students passing</th></tr></thead>\n<tbody>"
+      for (i = 1; i <= n; i++) printf "<tr><td>%d</td><td>%s</td><td>%d of %d</td></tr>\n", i, h(test[i]), p[i], s
+      print "</tbody>\n</table>"
+      print "<h2>Students who did not pass</h2>"
+      bad = 0
+      for (k = 1; k <= s; k++) if (res[k] != "PASS") bad++
+      if (bad == 0) print "<p>Every student passed.</p>"
+      else {
+        print "<table>\n<caption>Each with the first failure the grading found</caption>\n<thead><tr><th scope=\"col\">student</th><th scope=\"col\">result</th><th scope=\"col\">tests passed</th><th scope=\"col\">first failure</th></tr></thead>\n<tbody>"
+        for (k = 1; k <= s; k++) if (res[k] != "PASS")
+          printf "<tr><td>%s</td><td>%s</td><td>%s</td><td>%s</td></tr>\n", h(who[k]), h(res[k]), h(got[k]), h(first[k])
+        print "</tbody>\n</table>"
+      }
+      print "<h2>The slowest students to grade</h2>"
+      print "<table>\n<caption>Up to five, with the seconds their grading took</caption>\n<thead><tr><th scope=\"col\">student</th><th scope=\"col\">seconds</th><th scope=\"col\">result</th></tr></thead>\n<tbody>"
+      for (r = 1; r <= 5 && r <= s; r++) {
+        best = 0
+        for (k = 1; k <= s; k++) if (!(k in shown) && (best == 0 || secs[k] > secs[best])) best = k
+        shown[best] = 1
+        printf "<tr><td>%s</td><td>%d</td><td>%s</td></tr>\n", h(who[best]), secs[best], h(res[best])
+      }
+      print "</tbody>\n</table>\n</main>\n</body>\n</html>"
+    }' "$tsv" >"$out/summary.html"
+  rm -f "$data"
+  echo "$out/summary.html"
 }
 
 # grade_answers ID STUDENT_DIR...: a prove or measure exercise: each answer is copied to
@@ -1260,7 +1417,7 @@ cmd_lint() {
   return $fail
 }
 
-[ $# -ge 1 ] || die "usage: exercise.sh COMMAND, one of: list, release ID... DIR, grade ID STUDENT_DIR..., handout SECTION [OUTDIR], check [ID...] [DIR], hint [ID] [DIR], watch [ID...] [DIR], selftest BUILD [ID...], lint BUILD"
+[ $# -ge 1 ] || die "usage: exercise.sh COMMAND, one of: list, release ID... DIR, grade [OPTIONS] ID STUDENT_DIR..., export FORMAT ID TSV [ROSTER], similar [--threshold T] ID STUDENT_DIR..., summary ID TSV OUTDIR, handout SECTION [OUTDIR], check [ID...] [DIR], hint [ID] [DIR], watch [ID...] [DIR], selftest BUILD [ID...], lint BUILD"
 [ -f "$DB" ] || die "no $DB"
 cmd="$1"; shift
 case "$cmd" in
@@ -1270,6 +1427,8 @@ case "$cmd" in
   start) [ $# -eq 2 ] || die "usage: start ID DIR"; cmd_release "$@" ;;
   grade) cmd_grade "$@" ;;
   export) cmd_export "$@" ;;
+  similar) cmd_similar "$@" ;;
+  summary) cmd_summary "$@" ;;
   check) cmd_check "$@" ;;
   hint) cmd_hint "$@" ;;
   "watch") cmd_watch "$@" ;;
