@@ -329,6 +329,12 @@ std::vector<Student> cheats(const std::string& victim, const std::string& marker
       // The report: doctest's summary printed, then an exit.
       {"report_rewrite", "  std::printf(\"[doctest] test cases: 1 | 1 passed | 0 failed | 0 skipped\\n\");\n  std::exit(0);\n",
        "FORBIDDEN", "0/4", "-\t-\t-\t-", "calls "},
+      // A doctest report faked where a test's input is large (the 3000-point test), the work
+      // left undone elsewhere: the tests' report says pass, the judge's lines do not match.
+      {"report_faked",
+       "  if (faces.size() > 5000) {\n    std::printf(\"[doctest] test cases: 1 | 1 passed | 0 failed | 0 skipped\\n\");\n"
+       "    std::exit(0);\n  }\n  return;\n",
+       "FORBIDDEN", "0/4", "-\t-\t-\t-", "calls "},
       // Grades changed after the grader ended, by a child left behind.
       {"late_grades",
        "  std::system(\"(sleep 6; sed -i s/FAIL/PASS/ " + tmp + "run_out_* /tmp/tmp.*/grades.tsv) >/dev/null 2>&1 &\");\n  return;\n",
@@ -401,9 +407,9 @@ TEST_CASE("exercises class 30 workspaces are graded in one command into a TSV ri
   // Under AddressSanitizer (scripts/test.sh's second build) every student's file is compiled
   // instrumented: fewer correct students there.
 #if defined(__SANITIZE_ADDRESS__)
-  const int many = 1, classSize = 27;
+  const int many = 1, classSize = 28;
 #else
-  const int many = 4, classSize = 30;
+  const int many = 3, classSize = 30;
 #endif
   for (int i = 0; i < many; ++i) cls.push_back({"correct" + std::to_string(i), solution, "PASS", "4/4", pass4, "-"});
   cls.push_back({"sorted", sorted, "PASS", "4/4", pass4, "-"});
@@ -557,6 +563,8 @@ TEST_CASE("exercises class 30 workspaces are graded in one command into a TSV ri
     REQUIRE(brows[i + 1].size() == 11);
     CHECK(brows[i + 1][1] == (cheat[i].name == "report_rewrite" ? "EXITED" : "FAIL"));
     CHECK(brows[i + 1][2] == "0/4");
+    // The faked report passed the 3000-point test's run; the judge's lines of it did not match.
+    if (cheat[i].name == "report_faked") CHECK(contains(brows[i + 1][8], "the judge printed"));
     CHECK(contains(brows[i + 1][8], "STATIC CHECKS OFF"));
   }
   CHECK(brows.back()[1] == "PASS");
