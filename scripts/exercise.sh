@@ -1127,7 +1127,8 @@ GP
       print "th { background: #e8eef6 } img { max-width: 100%; height: auto }</style>\n</head>\n<body>\n<main>"
       printf "<h1>Exercise %s: the class at a glance</h1>\n", h(id)
       line = ""
-      for (k in kinds) line = line (line == "" ? "" : ", ") kinds[k] " " h(k)
+      split("PASS FAIL TIMEOUT CRASH EXITED FORBIDDEN COMPILE-ERROR LINK-ERROR NO-REGION NO-WORKSPACE", order, " ")
+      for (r = 1; r in order; r++) if (order[r] in kinds) line = line (line == "" ? "" : ", ") kinds[order[r]] " " h(order[r])
       printf "<p>%d students graded: %s.</p>\n", s, line
       print "<h2>Passes of each test</h2>"
       alt = "Bar chart of the students passing each test:"
