@@ -36,7 +36,8 @@
 #                                            is saved (Ctrl-C stops)
 # The machinery's own tests:
 #   scripts/exercise.sh selftest BUILD [ID...] each implement exercise: the stub compiles and
-#                                            fails, the restored solution passes
+#                                            fails, the restored solution passes; the judge of
+#                                            grade tells the stub from the solution
 #   scripts/exercise.sh lint BUILD           the list, the tests, the pages and regions agree
 # Environment: DT_TEST_TIMEOUT (seconds per test: 60 in check, 10 in grade),
 #   DT_EXERCISE_JOBS (parallel jobs), DT_GRADE_BUILD (the teacher's build, default build/),
@@ -1355,6 +1356,11 @@ cmd_selftest() {
   done
   work="$(mktemp -d)"
   trap 'rm -rf "$work"' RETURN
+  # The judges of grade (exercises/judge.cpp) and the library's output for each.
+  g++ -std=c++17 -O1 -ffp-contract=off -I"$HERE/code" -c "$HERE/exercises/judge.cpp" -o "$work/judge.o" &&
+    g++ -o "$work/judge_ref" "$work/judge.o" "$build/libdt.a" -lmpfr -lgmp -pthread ||
+    die "exercises/judge.cpp does not compile or link with $build/libdt.a"
+  local judged; judged="$("$work/judge_ref" --list)"
   for id in $sel; do
     local files; files="$(region_files "$id" "$HERE" | grep '^code/.*\.cpp$' || true)"
     if [ -z "$files" ]; then echo "FAIL $id: no solution region in code/*.cpp"; fail=1; continue; fi
@@ -1383,6 +1389,21 @@ cmd_selftest() {
       else
         if [ $rc -ne 0 ]; then echo "FAIL $id: its tests fail on the restored solution:"; echo "$res"; fail=1
         else echo "ok   $id: the restored solution passes"; fi
+      fi
+      # The judge of grade, where the exercise has one: the restored solution prints what the
+      # library's prints, the stub does not.
+      if grep -qxF -- "$id" <<<"$judged"; then
+        if ! g++ -o "$work/j" "${o_list[@]}" "$work/judge.o" "$build/libdt.a" -lmpfr -lgmp -pthread 2>"$work/ld.log"; then
+          echo "FAIL $id: the judge does not link with the $variant copy:"; head -n 20 "$work/ld.log"; fail=1; continue
+        fi
+        [ -f "$work/ref_$id" ] || "$work/judge_ref" "$id" 1 >"$work/ref_$id" || { echo "FAIL $id: the judge fails on the library"; fail=1; continue; }
+        local same=0; "$work/j" "$id" 1 >"$work/got_$id" 2>/dev/null && cmp -s "$work/ref_$id" "$work/got_$id" && same=1
+        if [ $variant = stub ] && [ $same = 1 ]; then echo "FAIL $id: the judge prints the solution's output on the stub"; fail=1
+        elif [ $variant = restored ] && [ $same = 0 ]; then
+          echo "FAIL $id: the judge's output on the restored solution is not the library's:"
+          judge_differences "$work/ref_$id" "$work/got_$id" | head -n 3; fail=1
+        elif [ $variant = stub ]; then echo "ok   $id: the judge tells the stub from the solution"
+        else echo "ok   $id: the judge prints the library's output on the restored solution"; fi
       fi
     done
   done
