@@ -11,7 +11,10 @@ namespace dt {
 /// Sets F[k] of every pair of faces in `cavity` that share an edge (Listing 2.4, 2.3.4).
 /// O(N log N) for N faces: one std::map search and insert or erase per edge. An edge seen
 /// once is left as it was (it borders a face outside the list). Throws std::logic_error if
-/// an edge is shared by more than two faces (a non-manifold input).
+/// two faces walk an edge in the same direction. A list that is not a manifold in another way
+/// is not detected: the map forgets an edge once two faces are linked across it (as Listing
+/// 2.4 does), so a third face on that edge is taken for one on the boundary and keeps its link
+/// (exercise 2.3.4-1's computeAdjacenciesSorted rejects it).
 void computeAdjacencies(std::vector<Face*>& cavity);
 
 /// The work of one computeAdjacencies call on its std::map, counted by the map itself: the

@@ -63,8 +63,13 @@ node         nodejs             book and web checks (axe-core in Chromium, packa
 npm          nodejs             scripts/deps.sh (npm ci: axe-core, pinned by package-lock.json)
 bwrap        bubblewrap         scripts/exercise.sh (the sandbox of grading)
 realpath     base               scripts/mutants.sh (paths relative to the tree)
-setpriv      base               tests/test_cli.cpp (runs as user nobody)
-prlimit      base               tests/test_cli.cpp (a process limit)
+setpriv      base               scripts/exercise.sh tests/test_cli.cpp (runs as the user nobody)
+prlimit      base               scripts/exercise.sh tests/test_cli.cpp (process limits)
+nm           binutils           scripts/exercise.sh (the functions the object of a student calls)
+c++filt      binutils           scripts/exercise.sh (their names, demangled)
+comm         base               scripts/exercise.sh
+paste        base               scripts/exercise.sh
+id           base               scripts/exercise.sh
 cmp          base               scripts/deps.sh
 git          git                scripts/mutants.sh (a temporary copy of the tree)
 shellcheck   shellcheck         CMakeLists.txt (the ctest entry shellcheck: every script of scripts/)

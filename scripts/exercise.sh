@@ -10,11 +10,23 @@
 #                                            EVERY exercise's solution stripped (the markers stay,
 #                                            around a stub), the IDs stored in DIR/.exercise,
 #                                            answers.md for prove and measure exercises
-#   scripts/exercise.sh grade ID STUDENT_DIR... > grades.tsv
+#   scripts/exercise.sh grade [--format tsv|canvas|moodle|gradescope|junit] [--seed N]
+#                             [--roster FILE] [--summary DIR] [--unsandboxed] ID STUDENT_DIR...
 #                                            each student's solution region put into this tree's
-#                                            build, this tree's tests run (a timeout per test);
-#                                            one TSV row per student. Prove and measure: the
-#                                            answers are copied to answers_ID/ beside the sheet
+#                                            files, checked by tokens and by the functions its
+#                                            object calls, compiled, linked and run in bubblewrap
+#                                            as nobody; the verdict is the judge's output compared
+#                                            with the teacher's, outside the sandbox; one row per
+#                                            student. Prove and measure: the answers are copied
+#                                            to answers_ID/ beside the sheet
+#   scripts/exercise.sh export FORMAT ID GRADES.TSV [ROSTER]
+#                                            a saved table of grade in another format
+#   scripts/exercise.sh summary ID GRADES.TSV OUTDIR
+#                                            OUTDIR/summary.html: a histogram of each test's
+#                                            passes (gnuplot), the failures, the slowest
+#   scripts/exercise.sh similar [--threshold T] ID STUDENT_DIR...
+#                                            pairs of students whose code has nearly the same
+#                                            shape (a hint to talk about, not a verdict)
 #   scripts/exercise.sh handout SECTION [OUT]  OUT/exercises_SECTION.md and OUT/solutions_SECTION.md
 # The student, inside the workspace:
 #   scripts/exercise.sh check [ID...]        build, run the tests (implement) or collect the
@@ -24,11 +36,15 @@
 #                                            is saved (Ctrl-C stops)
 # The machinery's own tests:
 #   scripts/exercise.sh selftest BUILD [ID...] each implement exercise: the stub compiles and
-#                                            fails, the restored solution passes
+#                                            fails, the restored solution passes; the judge of
+#                                            grade tells the stub from the solution
 #   scripts/exercise.sh lint BUILD           the list, the tests, the pages and regions agree
 # Environment: DT_TEST_TIMEOUT (seconds per test: 60 in check, 10 in grade),
 #   DT_EXERCISE_JOBS (parallel jobs), DT_GRADE_BUILD (the teacher's build, default build/),
 #   DT_GRADE_NO_BUILD=1 (grade without bringing the build up to date first),
+#   DT_GRADE_UNSANDBOXED=1 (as --unsandboxed), DT_GRADE_BWRAP (the bubblewrap program, default
+#   bwrap), DT_GRADE_STATIC_CHECKS=0 (the token and symbol checks off: for the machinery's test
+#   that the sandbox and the judge hold alone; every row says so),
 #   DT_GRADE_ANSWERS (where grade puts answers, default ./answers_ID), DT_WATCH_ROUNDS (watch
 #   stops after so many checks; for tests), DT_HANDOUT_FIGURES (where handout takes the figures,
 #   default build/output/ch2), DT_HANDOUT_BUILD_FIGURES=1 (handout builds a missing figure).
@@ -101,23 +117,33 @@ regions() {
     inside { print }' "$2"
 }
 
-# splice ID TEACHER STUDENT: TEACHER's file with the k-th region of ID holding the k-th region of
-# STUDENT's file. Exit status 3 (and a message) when the two files do not have as many regions.
+# splice ID TEACHER STUDENT [MAP]: TEACHER's file with the k-th region of ID holding the k-th
+# region of STUDENT's file. Exit status 3 (and a message) when the two files do not have as many
+# regions or a region of STUDENT has no END line. MAP gets one line per output line: the
+# STUDENT's line it came from, or 0 (a line of the teacher's), for compiler messages.
 splice() {
-  awk -v id="$1" -v student="$3" "$MARKS"'
+  awk -v id="$1" -v student="$3" -v map="${4:-/dev/null}" "$MARKS"'
     BEGIN {
-      k = 0; inside = 0
+      k = 0; inside = 0; sl = 0
       while ((getline line < student) > 0) {
-        if (!inside && marks(line, "BEGIN")) { inside = 1; k++; body[k] = ""; continue }
+        sl++
+        if (!inside && marks(line, "BEGIN")) { inside = 1; k++; body[k] = ""; nb[k] = 0; from = sl; continue }
         if (inside && marks(line, "END")) { inside = 0; continue }
-        if (inside) body[k] = body[k] line "\n"
+        if (inside) { body[k] = body[k] line "\n"; at[k, ++nb[k]] = sl }
       }
-      close(student); n = k; k = 0; inside = 0
+      close(student)
+      if (inside) { inside_left = 1; printf "the region of %s that starts on line %d has no END SOLUTION %s line\n", id, from, id > "/dev/stderr"; exit 3 }
+      n = k; k = 0; inside = 0
     }
-    !inside && marks($0, "BEGIN") { inside = 1; k++; print; printf "%s", body[k]; next }
-    inside && marks($0, "END") { inside = 0; print; next }
-    !inside { print }
+    !inside && marks($0, "BEGIN") {
+      inside = 1; k++; print; print 0 > map
+      printf "%s", body[k]; for (i = 1; i <= nb[k]; i++) print at[k, i] > map
+      next
+    }
+    inside && marks($0, "END") { inside = 0; print; print 0 > map; next }
+    !inside { print; print 0 > map }
     END {
+      if (inside_left) exit 3
       if (k != n) { printf "%d region(s) of %s, %d expected\n", n, id, k > "/dev/stderr"; exit 3 }
     }' "$2"
 }
@@ -220,8 +246,15 @@ run_one() {
   rep="$(mktemp -u "${TMPDIR:-/tmp}/dt_report.XXXXXXXXXX")"
   set +e
   # doctest splits filters at commas: a comma becomes the one-character wildcard.
-  out="$(timeout -k 2 "$t" "$bin" --test-case="${name//,/?}" --no-version --out="$rep" 2>&1)"
-  rc=$?
+  if [ -n "${RUN_BOX:-}" ]; then
+    # grade: in the sandbox, the report on stdout into a file of the grader.
+    sandbox "$RUN_BOX" "$t" "$(dirname "$bin")" -- "$bin" --test-case="${name//,/?}" --no-version >"$rep" 2>&1
+    rc=$?
+    out=""
+  else
+    out="$(timeout -k 2 "$t" "$bin" --test-case="${name//,/?}" --no-version --out="$rep" 2>&1)"
+    rc=$?
+  fi
   set -e
   local report=""
   [ -f "$rep" ] && report="$(cat "$rep")"
@@ -332,6 +365,15 @@ answers_section() {
     p && !/^<!-- write your answer/' "$2"
 }
 
+# The files a release leaves out: they state answers, and only the teacher's tree runs them.
+RELEASE_LEAVE_OUT=(tests/test_exercises.cpp tests/test_exercises_class.cpp tests/test_book.cpp
+                   tests/mutants.txt tests/mutants_selftest.txt)
+
+# answer_values: the values of the answers, one per line, from book/solutions.md.
+answer_values() {
+  sed -n 's/^<!-- values: \(.*\) -->$/\1/p' "$HERE/book/solutions.md" | tr '|' '\n' | sed 's/^ *//; s/ *$//; /^$/d'
+}
+
 cmd_release() {
   [ $# -ge 2 ] || die "usage: release ID... DIR"
   local dir="${!#}" sel=("${@:1:$#-1}") id
@@ -347,11 +389,37 @@ cmd_release() {
   # Every exercise's solution goes, not only the released ones: the others would otherwise be
   # one directory away.
   for id in $(ids); do strip_tree "$id" "$abs"; done
+  # Files that state answers (the machinery's tests and the class test hold whole solutions, the
+  # mutants solution lines, the book tool's test the answers' values) are left out; the tests
+  # of the workspace build without them.
+  local f
+  for f in "${RELEASE_LEAVE_OUT[@]}"; do rm -f "$abs/$f"; done
   # The tests and their hints of prove and measure exercises state the answers: the teacher's.
   awk '/^#/ || /^[ \t]*$/ { kind = ""; print; next }
        /^kind:/ { kind = $2 }
        (kind == "prove" || kind == "measure") && /^(test|hint):/ { next }
        { print }' "$HERE/exercises/exercises.txt" >"$abs/exercises/exercises.txt"
+  # The values of the answers (book/solutions.md) in the library, tests, scripts and tools (the
+  # chapter programs measure what measure exercises ask, and the book's pages have their own
+  # edition check): a comment holding one goes; one in code stops the release, and the
+  # half-made workspace goes.
+  local values leaks=""; values="$(answer_values)"
+  while IFS= read -r f; do
+    [ -n "$f" ] || continue
+    local tmp; tmp="$(mktemp)"
+    if ! awk -v values="$values" -v mode=strip -f "$HERE/exercises/answer_values.awk" "$abs/$f" >"$tmp" 2>>"$abs/.leaks"; then
+      leaks=1
+    fi
+    cat "$tmp" >"$abs/$f"; rm -f "$tmp"
+  done < <(cd "$abs" && find code tests scripts exercises cli book -type f \( -name '*.cpp' -o -name '*.h' -o -name '*.sh' -o -name '*.txt' \) -print0 2>/dev/null |
+           xargs -0 -r awk -v values="$values" -v mode=list -f "$HERE/exercises/answer_values.awk" | cut -d: -f1 | sort -u)
+  if [ -n "$leaks" ]; then
+    local why; why="$(sed "s#^$abs/##" "$abs/.leaks")"
+    rm -rf "$abs"
+    die "the release would show answers; nothing released:
+$why"
+  fi
+  rm -f "$abs/.leaks"
   { echo "# Made by scripts/exercise.sh release: the exercises of this workspace."
     echo "ids: ${sel[*]}"; } >"$abs/.exercise"
   local written=0
@@ -487,78 +555,435 @@ cmd_watch() {
 }
 
 # ---- the teacher: grade --------------------------------------------------------------------------
+# Grading never trusts the student's process. Each student's code is compiled, linked and run in
+# bubblewrap as nobody: no network, no view of the teacher's tree, of the other workspaces or of
+# this grader's folder, limits on CPU, memory, processes and file size, and everything it started
+# killed when it ends or times out. The verdict comes from outside: the judge (exercises/judge.cpp)
+# linked with the student's code prints what the functions return; this script, which never runs
+# student code, compares that with the judge linked with the teacher's solution. The teacher's
+# doctest tests run in the sandbox too: their report names the first failing check, and since the
+# student's process can write it, it can only lower a grade, never raise it.
+
 # flags_of BUILD VAR: a variable of the library's flags.make (CXX_FLAGS, CXX_DEFINES,
 # CXX_INCLUDES), one word per line. CMake quotes a word with a space or a quote in it
 # (-I"/tmp/a b/c'd/code"); xargs reads those quotes as a shell would, and nothing is evaluated.
 flags_of() { sed -n "s/^$2 = //p" "$1/CMakeFiles/dt.dir/flags.make" | xargs -r printf '%s\n'; }
 
-# grade_one ID BUILD WORK STUDENT_DIR NUMBER: one student's row, into WORK/rows/NUMBER.
+# sandbox BOX SECONDS [DIR...] -- COMMAND...: COMMAND in bubblewrap as nobody, in BOX (seen as
+# /box: with an empty private /tmp the only writable folder), the DIRs visible read-only at their
+# own paths, no stdin. After SECONDS it is killed with every process it started (they live in
+# its own PID namespace, which ends with it). Status: COMMAND's, 137 on the timeout.
+# SANDBOX_CWD: its working directory (default /box).
+sandbox() {
+  local box="$1" t="$2"; shift 2
+  local ro=() d
+  while [ $# -gt 0 ] && [ "$1" != -- ]; do ro+=(--ro-bind "$1" "$1"); shift; done
+  shift
+  local limits=(prlimit --cpu="$t" --as=$((3 << 30)) --nproc=64 --fsize=$((128 << 20)) --nofile=256 --core=0)
+  if [ "${GRADE_UNSANDBOXED:-0}" = 1 ]; then
+    # /box at the start of an argument is BOX itself here.
+    (cd "${SANDBOX_CWD:-$box}" && exec timeout -s KILL "$t" "${limits[@]}" "${@/#\/box/$box}") </dev/null
+    return
+  fi
+  local sys=()
+  for d in /usr /bin /sbin /lib /lib32 /lib64 /libx32 /etc/alternatives; do
+    if [ -L "$d" ]; then sys+=(--symlink "$(readlink "$d")" "$d")
+    elif [ -d "$d" ]; then sys+=(--ro-bind "$d" "$d"); fi
+  done
+  timeout -s KILL "$((t + 5))" setpriv --reuid=65534 --regid=65534 --clear-groups --inh-caps=-all \
+    "${DT_GRADE_BWRAP:-bwrap}" --unshare-all --die-with-parent --new-session "${sys[@]}" --proc /proc --dev /dev \
+      --size $((128 << 20)) --tmpfs /tmp --bind "$box" /box "${ro[@]}" --chdir "${SANDBOX_CWD:-/box}" \
+      --clearenv --setenv PATH /usr/bin:/bin --setenv HOME /box --setenv TMPDIR /tmp \
+      -- "${limits[@]}" timeout -s KILL "$t" "$@" </dev/null
+}
+
+# sandbox_refusal: why the sandbox cannot run here (nothing when it can).
+sandbox_refusal() {
+  local probe err
+  probe="$(mktemp -d)"; chmod 711 "$probe"; mkdir "$probe/box"; chown 65534:65534 "$probe/box"
+  command -v "${DT_GRADE_BWRAP:-bwrap}" >/dev/null || { echo "bwrap (Debian's bubblewrap) is not installed (scripts/deps.sh installs it)"; rm -rf "$probe"; return; }
+  if ! err="$(sandbox "$probe/box" 10 -- sh -c 'echo ok >/box/probe' 2>&1)" || [ "$(cat "$probe/box/probe" 2>/dev/null)" != ok ]; then
+    echo "bubblewrap cannot make a sandbox here (user namespaces off, or not root to drop to nobody): ${err:-no output}"
+  fi
+  rm -rf "$probe"
+}
+
+# undefined OBJECT: the symbols OBJECT uses and does not define, mangled, sorted.
+undefined() { nm -u "$1" | awk '{ print $NF }' | sort -u; }
+
+# symbols_refusal ID STUDENT_O STUB_O TEACHER_O: the first function the student's object calls
+# that the exercise does not allow: a symbol the stub does not already use must be used by the
+# teacher's solution or match exercises/allowed_symbols.txt or an allow: line of the exercise,
+# and may not name a forbid: word. Nothing when all are allowed.
+symbols_refusal() {
+  local id="$1" new allowed words
+  new="$(comm -23 <(undefined "$2") <(undefined "$3"))"
+  [ -n "$new" ] || return 0
+  allowed="$(grep -vE '^(#|[[:space:]]*$)' "$HERE/exercises/allowed_symbols.txt"; field "$id" allow)"
+  words="$(field "$id" forbid | grep -E '^[A-Za-z_][A-Za-z0-9_:]*$' || true)"
+  paste -d '\t' <(echo "$new") <(echo "$new" | c++filt) |
+    awk -F '\t' -v teacher="$(undefined "$4")" -v allowed="$allowed" -v words="$words" '
+      BEGIN { nt = split(teacher, t, "\n"); for (i = 1; i <= nt; i++) ok[t[i]] = 1
+              na = split(allowed, a, "\n"); nw = split(words, w, "\n") }
+      {
+        for (i = 1; i <= nw; i++) {
+          x = $2; gsub(/[^A-Za-z0-9_:]+/, " ", x)
+          if ((" " x " ") ~ ("[ :]" w[i] "[ :]") || (" " x " ") ~ (" " w[i] " ")) { print "calls " $2 " (a forbidden word: " w[i] ")"; exit }
+        }
+        if ($1 in ok) next
+        for (i = 1; i <= na; i++) if (a[i] != "" && $2 ~ a[i]) next
+        print "calls " $2 ", which exercise " id " does not allow (the functions of its solution and exercises/allowed_symbols.txt)"; exit
+      }' id="$id"
+}
+
+# map_lines MAP FILE SHOWN: compiler messages with SPLICED:LINE turned into the student's
+# SHOWN:LINE (MAP: one line per line of the spliced file, the student's line or 0); a line
+# outside the regions is named as the teacher's.
+map_lines() {
+  awk -v shown="$3" -v spliced="$2" '
+    NR == FNR { m[FNR] = $1; next }
+    {
+      while ((k = index($0, spliced ":")) > 0) {
+        rest = substr($0, k + length(spliced) + 1)
+        if (!match(rest, /^[0-9]+/)) break
+        l = substr(rest, 1, RLENGTH)
+        to = m[l] > 0 ? shown ":" m[l] : shown " (the teacher'"'"'s line " l ")"
+        $0 = substr($0, 1, k - 1) to substr(rest, RLENGTH + 1)
+      }
+      print
+    }' "$1" -
+}
+
+# judge_differences REFERENCE GOT: for each test K whose lines ("tK ...") in the judge's output
+# GOT are not those of REFERENCE, a line "K<TAB>the first difference"; K is 0 for a difference in
+# lines of no test. Nothing when GOT is REFERENCE.
+judge_differences() {
+  cmp -s "$1" "$2" && return 0
+  awk 'function key(l) { return match(l, /^t[0-9]+ /) ? substr(l, 2, RLENGTH - 2) : 0 }
+       function cut(l) { return length(l) > 160 ? substr(l, 1, 160) "..." : l }
+       NR == FNR { k = key($0); r[k, ++nr[k]] = $0; keys[k] = 1; next }
+       { k = key($0); g[k, ++ng[k]] = $0; keys[k] = 1 }
+       END {
+         for (k in keys) {
+           for (i = 1; i <= nr[k] && i <= ng[k]; i++)
+             if (r[k, i] != g[k, i]) break
+           if (i <= nr[k] && i <= ng[k])
+             printf "%s\tthe judge printed \"%s\" where the solution prints \"%s\"\n", k, cut(g[k, i]), cut(r[k, i])
+           else if (nr[k] > ng[k])
+             printf "%s\tthe judge printed %d of the %d lines of the solution; the next: \"%s\"\n", k, ng[k] + 0, nr[k], cut(r[k, i])
+           else if (ng[k] > nr[k])
+             printf "%s\tthe judge printed more than the solution: \"%s\"\n", k, cut(g[k, i])
+         }
+       }' "$1" "$2" | sort -n
+}
+
+# grade_one ID WORK STUDENT_DIR NUMBER SEED: one student's row, into WORK/rows/NUMBER (a folder
+# of this grader that no sandbox sees).
 grade_one() {
-  local id="$1" build="$2" work="$3" sdir="$4" num="$5"
+  local id="$1" work="$2" sdir="$3" num="$4" seed="$5"
   local me="$work/s$num" start=$SECONDS student f
   student="$(basename "$sdir")"
-  mkdir -p "$me"
+  mkdir -p "$me/src" "$me/bin"
+  chmod 755 "$me" "$me/src" "$me/bin"
+  fresh_box "$me/box"
   local names; mapfile -t names < <(field "$id" test)
-  local ntests=${#names[@]} cols=() i
+  local ntests=${#names[@]} cols=() i judge=-
   for ((i = 0; i < ntests; i++)); do cols+=("-"); done
   row() {  # result passed first_failure
     local detail
     detail="$(tr '\t\n' '  ' <<<"$3" | sed -E 's/ +/ /g; s/^ //; s/ $//' | cut -c 1-500)"
+    [ "${GRADE_UNSANDBOXED:-0}" != 1 ] || detail="UNSANDBOXED (graded without bubblewrap): ${detail:--}"
+    [ "${DT_GRADE_STATIC_CHECKS:-1}" != 0 ] || detail="STATIC CHECKS OFF: ${detail:--}"
     local IFS=$'\t'
-    printf '%s\t%s\t%s\t%s\t%s\t%s\n' "$student" "$1" "$2/$ntests" "${cols[*]}" "${detail:--}" \
-      "$((SECONDS - start))" >"$work/rows/$num"
+    printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$student" "$1" "$2/$ntests" "${cols[*]}" "$judge" "${detail:--}" \
+      "$((SECONDS - start))" "$seed" >"$work/rows/$num"
   }
   if [ ! -d "$sdir" ]; then row NO-WORKSPACE 0 "$sdir is not a directory"; return; fi
   # 1. The student's regions, spliced into the teacher's files; nothing else of theirs is used.
-  local files; files="$(region_files "$id" "$HERE" | grep -E '^code/.*\.cpp$' || true)"
-  local sfiles=() objs=()
-  for f in $files; do
+  local sfiles=() objs=() spliced
+  for f in $GRADE_FILES; do
     if [ ! -f "$sdir/$f" ]; then row NO-REGION 0 "no $f in the workspace"; return; fi
     sfiles+=("$sdir/$f")
-    if ! splice "$id" "$HERE/$f" "$sdir/$f" >"$me/$(basename "$f")" 2>"$me/splice.log"; then
+    spliced="$me/src/$(basename "$f")"
+    if ! splice "$id" "$HERE/$f" "$sdir/$f" "$spliced.map" >"$spliced" 2>"$me/splice.log"; then
       row NO-REGION 0 "$f: $(cat "$me/splice.log") (the BEGIN/END SOLUTION $id lines must stay)"; return
     fi
+    chmod 644 "$spliced"
   done
-  # 2. Forbidden code.
-  local bad; bad="$(forbidden "$id" "${sfiles[@]}")"
-  if [ -n "$bad" ]; then row FORBIDDEN 0 "uses $bad (exercise $id forbids: $(field "$id" forbid | tr '\n' ' ')and the preprocessor)"; return; fi
-  # 3. Compile the spliced files with the library's own flags; link before the teacher's
-  #    library and test objects (dt_tests' own link line, with the student's objects first).
-  for f in $files; do
-    local o; o="$me/$(basename "$f" .cpp).o"
-    if ! (cd "$build" && "$GRADE_CXX" "${GRADE_ARGS[@]}" \
-            -c "$me/$(basename "$f")" -o "$o") >"$me/cc.log" 2>&1; then
-      row COMPILE-ERROR 0 "$(grep -m 3 -E 'error' "$me/cc.log" | sed "s#$me/##")"; return
+  # 2. Forbidden code, read as the compiler reads it. (DT_GRADE_STATIC_CHECKS=0 turns this and
+  #    step 4 off, for the machinery's test that the sandbox and the judge hold alone.)
+  local bad words; mapfile -t words < <(field "$id" forbid)
+  for f in $GRADE_FILES; do
+    [ "${DT_GRADE_STATIC_CHECKS:-1}" != 0 ] || break
+    if ! bad="$("$work/forbidden" "$id" "$sdir/$f" "${words[@]}" 2>&1)"; then
+      row FORBIDDEN 0 "${bad#"$sdir/"}"; return
     fi
-    objs+=("$o")
   done
-  local link; link="$(cat "$build/CMakeFiles/dt_tests.dir/link.txt")"
-  link="${link/ -o dt_tests / -o $me/t ${objs[*]} }"
-  if ! (cd "$build" && bash -c "$link") >"$me/ld.log" 2>&1; then
-    row LINK-ERROR 0 "$(grep -m 3 -E 'undefined|multiple|error' "$me/ld.log" | sed "s#$me/##")"; return
+  # 3. Compiled in the sandbox, with the headers only (no solution) and the library's flags.
+  for f in $GRADE_FILES; do
+    spliced="$me/src/$(basename "$f")"
+    local o; o="$(basename "$f" .cpp).o"
+    if ! sandbox "$me/box" 120 "$work/inc" "$me/src" -- "$GRADE_CXX" "${GRADE_ARGS[@]}" \
+           -c "$spliced" -o "/box/$o" >"$me/cc.log" 2>&1; then
+      row COMPILE-ERROR 0 "$(grep -m 3 -E 'error' "$me/cc.log" | map_lines "$spliced.map" "$spliced" "$f")"; return
+    fi
+    mv "$me/box/$o" "$me/bin/$o"
+    # 4. What the object calls: only what the exercise allows.
+    bad=""
+    [ "${DT_GRADE_STATIC_CHECKS:-1}" = 0 ] || bad="$(symbols_refusal "$id" "$me/bin/$o" "$work/stub_$o" "$work/teacher_$o")"
+    if [ -n "$bad" ]; then row FORBIDDEN 0 "$f: $bad"; return; fi
+    objs+=("$me/bin/$o")
+  done
+  # 5. Linked in the sandbox: the judge, and the teacher's tests, each before the library.
+  if ! SANDBOX_CWD="$GRADE_BUILD" sandbox "$me/box" 120 "$GRADE_BUILD" "$work/judge" "$me/bin" -- \
+         "$GRADE_CXX" "${GRADE_LINK_FLAGS[@]}" "${objs[@]}" "$work/judge/judge.o" libdt.a "${GRADE_LIBS[@]}" \
+         -o /box/j >"$me/ld.log" 2>&1 ||
+     ! SANDBOX_CWD="$GRADE_BUILD" sandbox "$me/box" 120 "$GRADE_BUILD" "$me/bin" -- \
+         "$GRADE_CXX" "${GRADE_LINK_FLAGS[@]}" "${GRADE_TEST_OBJS[@]}" "${objs[@]}" libdt.a "${GRADE_LIBS[@]}" \
+         -o /box/t >>"$me/ld.log" 2>&1; then
+    row LINK-ERROR 0 "$(grep -m 3 -E 'undefined|multiple|error' "$me/ld.log" | sed "s#$me/bin/##")"; return
   fi
-  # 4. The teacher's tests, each under its timeout.
-  local passed=0 first="" result=PASS
-  for ((i = 0; i < ntests; i++)); do
-    run_one "$me/t" "${names[$i]}"
-    cols[$i]="$R_STATUS"
-    if [ "$R_STATUS" = pass ]; then passed=$((passed + 1)); continue; fi
-    if [ -z "$first" ]; then
-      first="test '${names[$i]}': $R_DETAIL"
-      [ "$R_STATUS" = timeout ] || [ "$R_STATUS" = crash ] && first="$R_DETAIL"
-      case "$R_STATUS" in timeout) result=TIMEOUT ;; crash) result=CRASH ;; *) result=FAIL ;; esac
-    fi
+  mv "$me/box/j" "$me/box/t" "$me/bin/"
+  fresh_box "$me/box"
+  # 6. The judge in the sandbox; its output, in a file of the grader, compared outside.
+  local rc verdict="" result=PASS first="" diffs=""
+  set +e
+  sandbox "$me/box" "$TEST_TIMEOUT" "$me/bin" -- "$me/bin/j" "$id" "$seed" >"$me/results" 2>"$me/judge.err"
+  rc=$?
+  set -e
+  if [ $rc -eq 137 ]; then judge=timeout; result=TIMEOUT; verdict="the judge's run did not finish within $TEST_TIMEOUT s (an endless loop?)"
+  elif [ $rc -gt 128 ]; then judge=crash; result=CRASH; verdict="the judge's run CRASHED: $(signal_name $((rc - 128)))"
+  elif [ "$(tail -n 1 "$me/results")" != "end $id" ] || [ $rc -ne 0 ]; then
+    judge=exited; result=EXITED
+    verdict="the program ended (exit status $rc) before the judge was done: the code called exit or ended the process some other way"
+  else
+    diffs="$(judge_differences "$work/reference_$seed" "$me/results")"
+    if [ -z "$diffs" ]; then judge=match; else judge=differ; result=FAIL; fi
+  fi
+  # 7. The teacher's tests, for the failure a student can act on; a run the judge already found
+  #    endless, crashing or exiting is not repeated test by test. A test's column is a pass only
+  #    when the judge's lines of that test match too.
+  local passed=0 k
+  if [ "$judge" = match ] || [ "$judge" = differ ]; then
+    local RUN_BOX="$me/box"
+    for ((i = 0; i < ntests; i++)); do
+      run_one "$me/bin/t" "${names[$i]}"
+      fresh_box "$me/box"
+      [ "$R_STATUS" != missing ] || R_STATUS=exited
+      k="$(awk -F '\t' -v k=$((i + 1)) '$1 == k || $1 == 0 { sub(/^[0-9]+\t/, ""); print; exit }' <<<"$diffs")"
+      if [ "$R_STATUS" = pass ] && [ -n "$k" ]; then R_STATUS=fail; R_DETAIL="$k"; fi
+      cols[$i]="$R_STATUS"
+      if [ "$R_STATUS" = pass ]; then passed=$((passed + 1)); continue; fi
+      if [ -z "$first" ]; then
+        first="test '${names[$i]}': $R_DETAIL"
+        [ "$R_STATUS" = timeout ] || [ "$R_STATUS" = crash ] && first="$R_DETAIL"
+        case "$R_STATUS" in timeout) result=TIMEOUT ;; crash) result=CRASH ;; exited) result=EXITED ;; *) result=FAIL ;; esac
+      fi
+    done
+    [ -n "$first" ] || [ -z "$diffs" ] || first="$(cut -f 2 <<<"$diffs" | head -n 1)"
+  fi
+  rm -rf "${me:?}/bin" "${me:?}/box"
+  row "$result" "$passed" "${first:-$verdict}"
+}
+
+# fresh_box DIR: DIR empty, nobody's, for one run in the sandbox (what a run left there is gone).
+fresh_box() {
+  rm -rf "$1"; mkdir "$1"
+  [ "${GRADE_UNSANDBOXED:-0}" = 1 ] || chown 65534:65534 "$1"
+  chmod 700 "$1"
+}
+
+signal_name() {
+  case $1 in 4) echo SIGILL ;; 6) echo SIGABRT ;; 7) echo SIGBUS ;; 8) echo SIGFPE ;; 9) echo SIGKILL ;;
+    11) echo SIGSEGV ;; *) echo "signal $1" ;; esac
+}
+
+# grade_prepare ID BUILD WORK: what every student's grading shares, made once, by the teacher's
+# code only: the headers (no solution), the forbidden check and the judge compiled, the judge
+# linked with the teacher's solution and its output for SEED (the reference), the stub's and the
+# solution's objects (their undefined symbols are the allow list).
+grade_prepare() {
+  local id="$1" build="$2" work="$3" f o
+  GRADE_BUILD="$build"
+  GRADE_CXX="$(sed -n 's/^CMAKE_CXX_COMPILER:[A-Z]*=//p' "$build/CMakeCache.txt")"
+  mkdir -p "$work/inc" "$work/judge"
+  cp "$HERE"/code/*.h "$work/inc/"
+  chmod 755 "$work" "$work/inc" "$work/judge"
+  local defines flags
+  mapfile -t defines < <(flags_of "$build" CXX_DEFINES)
+  mapfile -t flags < <(flags_of "$build" CXX_FLAGS)
+  GRADE_ARGS=("${defines[@]}" -I"$work/inc" "${flags[@]}")
+  local link; read -r -a link <"$build/CMakeFiles/dt_tests.dir/link.txt"
+  GRADE_LINK_FLAGS=() GRADE_TEST_OBJS=() GRADE_LIBS=()
+  local w after=0 skip=0
+  for w in "${link[@]:1}"; do
+    if [ $skip = 1 ]; then skip=0; continue; fi
+    case "$w" in
+      -o) skip=1 ;;
+      *.o) GRADE_TEST_OBJS+=("$w") ;;
+      libdt.a) after=1 ;;
+      *) if [ $after = 1 ]; then GRADE_LIBS+=("$w"); else GRADE_LINK_FLAGS+=("$w"); fi ;;
+    esac
   done
-  rm -f "$me/t" "$me"/*.o
-  row "$result" "$passed" "$first"
+  # The tests' objects: main's and those of the files defining the exercise's tests (a name is
+  # looked up up to its first '*'), so each student's link is small.
+  local keep=() t name
+  for t in "${GRADE_TEST_OBJS[@]}"; do
+    case "$t" in */main.cpp.o) keep+=("$t"); continue ;; esac
+    local src; src="$HERE/tests/$(basename "$t" .o)"
+    while IFS= read -r name; do
+      if [ -f "$src" ] && grep -qF -- "TEST_CASE(\"${name%%\**}" "$src"; then keep+=("$t"); break; fi
+    done < <(field "$id" test)
+  done
+  GRADE_TEST_OBJS=("${keep[@]}")
+  "$GRADE_CXX" -std=c++17 -O1 -o "$work/forbidden" "$HERE/exercises/forbidden.cpp" ||
+    die "exercises/forbidden.cpp does not compile"
+  "$GRADE_CXX" "${GRADE_ARGS[@]}" -c "$HERE/exercises/judge.cpp" -o "$work/judge/judge.o" ||
+    die "exercises/judge.cpp does not compile"
+  chmod 644 "$work/judge/judge.o"
+  (cd "$build" && "$GRADE_CXX" "${GRADE_LINK_FLAGS[@]}" "$work/judge/judge.o" libdt.a "${GRADE_LIBS[@]}" -o "$work/judge_ref") ||
+    die "the judge does not link with the teacher's library"
+  "$work/judge_ref" --list | grep -qxF -- "$id" ||
+    die "exercise $id has no judge in exercises/judge.cpp: grading it would trust the student's process"
+  GRADE_FILES="$(region_files "$id" "$HERE" | grep -E '^code/.*\.cpp$' || true)"
+  [ -n "$GRADE_FILES" ] || die "exercise $id has no solution region in code/*.cpp"
+  for f in $GRADE_FILES; do
+    o="$(basename "$f" .cpp).o"
+    strip_file "$id" "$HERE/$f" >"$work/stub_$(basename "$f")"
+    "$GRADE_CXX" "${GRADE_ARGS[@]}" -c "$work/stub_$(basename "$f")" -o "$work/stub_$o" 2>/dev/null &&
+      "$GRADE_CXX" "${GRADE_ARGS[@]}" -c "$HERE/$f" -o "$work/teacher_$o" || die "$f does not compile"
+  done
+}
+
+# reference WORK ID SEED: the teacher's judge output for SEED (made once per seed).
+reference() {
+  local ref="$1/reference_$3"
+  [ -f "$ref" ] || { "$1/judge_ref" "$2" "$3" >"$ref.tmp" && mv "$ref.tmp" "$ref"; } ||
+    die "the judge fails on the teacher's solution of $2 (seed $3)"
+  echo "$ref"
+}
+
+# export_grades FORMAT ID TSV ROSTER: the grades of TSV (grade's own table) in FORMAT on stdout:
+#   tsv         the table as it is
+#   junit       JUnit XML: a testsuite per student, a testcase per test (a failure whose type
+#               is the test's column, or the result when the test was not run), as CI servers
+#               read doctest's --reporters=junit
+#   gradescope  Gradescope's results.json of one submission: score, max_score, output, tests
+#               (name, score, max_score, status, output, visibility)
+#   canvas      Canvas' gradebook CSV: Student, ID, SIS User ID, SIS Login ID, Section, then the
+#               exercise's column (tests passed), a "Points Possible" row first; the roster's
+#               columns 3-7 fill the student's name and ids
+#   moodle      Moodle's grade import CSV: Username (the roster's name, else the workspace),
+#               the grade (tests passed) and a feedback column
+export_grades() {
+  local format="$1" id="$2" tsv="$3" roster="${4:-}"
+  if [ "$format" = tsv ]; then cat "$tsv"; return; fi
+  [ "$format" != gradescope ] || [ "$(awk 'END { print NR }' "$tsv")" = 2 ] ||
+    die "the gradescope format holds one submission (Gradescope runs the autograder once per student)"
+  awk -F '\t' -v format="$format" -v id="$id" -v roster="$roster" '
+    function xml(s) { gsub(/&/, "\\&amp;", s); gsub(/</, "\\&lt;", s); gsub(/>/, "\\&gt;", s); gsub(/"/, "\\&quot;", s); return s }
+    function json(s) { gsub(/\\/, "\\\\", s); gsub(/"/, "\\\"", s); gsub(/\t/, "\\t", s); gsub(/[\001-\037]/, " ", s); return "\"" s "\"" }
+    function csv(s) { if (s ~ /[",\r\n]/) { gsub(/"/, "\"\"", s); s = "\"" s "\"" } return s }
+    BEGIN {
+      if (roster != "") while ((getline line < roster) > 0) {
+        if (line ~ /^#/) continue
+        nf = split(line, rf, "\t"); for (i = 3; i <= 7; i++) info[rf[1], i] = i <= nf ? rf[i] : ""
+        known[rf[1]] = 1
+      }
+    }
+    NR == 1 { n = NF - 7; for (i = 1; i <= n; i++) test[i] = $(i + 3); next }
+    {
+      s++; who[s] = $1; res[s] = $2; split($3, p, "/"); passed[s] = p[1]; judge[s] = $(n + 4)
+      detail[s] = $(n + 5); secs[s] = $(n + 6)
+      for (i = 1; i <= n; i++) col[s, i] = $(i + 3)
+    }
+    END {
+      if (format == "junit") {
+        # A test that was not run (the judge timed out, crashed or exited; the code was
+        # refused) failed as much as one that ran: its failure says why.
+        fails = 0; for (k = 1; k <= s; k++) for (i = 1; i <= n; i++) fails += col[k, i] != "pass"
+        printf "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"exercise %s\" tests=\"%d\" failures=\"%d\">\n", xml(id), s * n, fails
+        for (k = 1; k <= s; k++) {
+          f = 0; for (i = 1; i <= n; i++) f += col[k, i] != "pass"
+          printf "  <testsuite name=\"%s\" tests=\"%d\" failures=\"%d\" time=\"%s\">\n", xml(who[k]), n, f, secs[k]
+          for (i = 1; i <= n; i++) {
+            printf "    <testcase classname=\"%s\" name=\"%s\"", xml(who[k]), xml(test[i])
+            if (col[k, i] == "pass") print "/>"
+            else printf ">\n      <failure type=\"%s\" message=\"%s\"/>\n    </testcase>\n", xml(col[k, i] == "-" ? res[k] : col[k, i]), xml(res[k] ": " detail[k])
+          }
+          print "  </testsuite>"
+        }
+        print "</testsuites>"
+      } else if (format == "gradescope") {
+        printf "{\n  \"score\": %d,\n  \"max_score\": %d,\n  \"output\": %s,\n  \"tests\": [\n", passed[1], n, json(res[1] (detail[1] == "-" ? "" : ": " detail[1]))
+        for (i = 1; i <= n; i++)
+          printf "    {\"name\": %s, \"score\": %d, \"max_score\": 1, \"status\": %s, \"output\": %s, \"visibility\": \"visible\"}%s\n",
+            json(test[i]), col[1, i] == "pass", json(col[1, i] == "pass" ? "passed" : "failed"),
+            json(col[1, i] == "pass" ? "" : (col[1, i] == "-" ? "not run: " : col[1, i] ": ") detail[1]), i < n ? "," : ""
+        print "  ]\n}"
+      } else if (format == "canvas") {
+        printf "Student,ID,SIS User ID,SIS Login ID,Section,%s\n", csv("Exercise " id)
+        printf "Points Possible,,,,,%d\n", n
+        for (k = 1; k <= s; k++)
+          printf "%s,%s,%s,%s,%s,%d\n", csv(known[who[k]] && info[who[k], 3] != "" ? info[who[k], 3] : who[k]),
+            csv(info[who[k], 4]), csv(info[who[k], 5]), csv(info[who[k], 6]), csv(info[who[k], 7]), passed[k]
+      } else if (format == "moodle") {
+        printf "Username,%s,%s\n", csv("Exercise " id), csv("Exercise " id " feedback")
+        for (k = 1; k <= s; k++)
+          printf "%s,%d,%s\n", csv(known[who[k]] && info[who[k], 3] != "" ? info[who[k], 3] : who[k]), passed[k],
+            csv(res[k] " " passed[k] "/" n (detail[k] == "-" ? "" : ": " detail[k]))
+      }
+    }' "$tsv"
+}
+
+# roster_field FILE STUDENT N: column N of STUDENT's line of the roster (tab-separated:
+# workspace name, seed, name, ID, SIS user ID, SIS login ID, section; '#' starts a comment).
+roster_field() {
+  [ -n "$1" ] || return 0
+  awk -F '\t' -v s="$2" -v n="$3" '!/^#/ && $1 == s { print $n; exit }' "$1"
+}
+
+# export FORMAT ID TSV [ROSTER]: a table of grade (TSV) in another format.
+cmd_export() {
+  [ $# -ge 3 ] && [ $# -le 4 ] || die "usage: export tsv|canvas|moodle|gradescope|junit ID GRADES.TSV [ROSTER]"
+  case "$1" in tsv|canvas|moodle|gradescope|junit) ;; *) die "export: no format '$1' (tsv, canvas, moodle, gradescope, junit)" ;; esac
+  exists "$2"
+  [ -f "$3" ] || die "export: no file '$3'"
+  [ -z "${4:-}" ] || [ -f "$4" ] || die "export: no roster file '$4'"
+  head -n 1 "$3" | grep -q $'^student\tresult\tpassed\t' || die "export: $3 is not a table of grade"
+  export_grades "$1" "$2" "$3" "${4:-}"
 }
 
 cmd_grade() {
-  [ $# -ge 2 ] || die "usage: grade ID STUDENT_DIR... > grades.tsv"
+  local format=tsv seed=1 roster="" summary=""
+  GRADE_UNSANDBOXED="${DT_GRADE_UNSANDBOXED:-0}"
+  while [ $# -gt 0 ]; do
+    case "$1" in
+      --format) format="${2:-}"; shift 2 ;;
+      --seed) seed="${2:-}"; shift 2 ;;
+      --roster) roster="${2:-}"; shift 2 ;;
+      --unsandboxed) GRADE_UNSANDBOXED=1; shift ;;
+      --summary) summary="${2:-}"; shift 2 ;;
+      --*) die "grade: unknown option '$1' (--format tsv|canvas|moodle|gradescope|junit, --seed N, --roster FILE, --summary DIR, --unsandboxed)" ;;
+      *) break ;;
+    esac
+  done
+  [ $# -ge 2 ] || die "usage: grade [--format F] [--seed N] [--roster FILE] [--unsandboxed] ID STUDENT_DIR... > grades.tsv"
+  case "$format" in tsv|canvas|moodle|gradescope|junit) ;; *) die "grade: no format '$format' (tsv, canvas, moodle, gradescope, junit)" ;; esac
+  [[ $seed =~ ^[0-9]{1,18}$ ]] || die "grade: --seed wants a number, not '$seed'"
+  [ -z "$roster" ] || [ -f "$roster" ] || die "grade: no roster file '$roster'"
   local id="$1"; shift
   exists "$id"
   local kind; kind="$(field "$id" kind)"
   if [ "$kind" != implement ]; then grade_answers "$id" "$@"; return; fi
+  [ "$format" != gradescope ] || [ $# -eq 1 ] || die "the gradescope format holds one submission (Gradescope runs the autograder once per student)"
+  if [ "$GRADE_UNSANDBOXED" = 1 ]; then
+    echo "grade: WARNING: student code runs WITHOUT the sandbox (--unsandboxed): it can read and change every file this user can" >&2
+  else
+    [ "$(id -u)" = 0 ] || die "grade runs student code as the user nobody in bubblewrap and must start as root (in CI it does); --unsandboxed grades without the sandbox"
+    local why; why="$(sandbox_refusal)"
+    [ -z "$why" ] || die "grade refuses to run student code: $why (--unsandboxed grades without the sandbox, with a warning on every row)"
+  fi
   local build="${DT_GRADE_BUILD:-$HERE/build}"
   TEST_TIMEOUT="${DT_TEST_TIMEOUT:-10}"
   if [ "${DT_GRADE_NO_BUILD:-0}" != 1 ]; then
@@ -570,28 +995,172 @@ cmd_grade() {
   [ -f "$build/CMakeFiles/dt.dir/flags.make" ] && [ -f "$build/CMakeFiles/dt_tests.dir/link.txt" ] ||
     die "$build is not a build of this tree with dt_tests (cmake --build $build --target dt_tests)"
   build="$(cd "$build" && pwd -P)"
-  GRADE_CXX="$(sed -n 's/^CMAKE_CXX_COMPILER:[A-Z]*=//p' "$build/CMakeCache.txt")"
-  local defines includes flags
-  mapfile -t defines < <(flags_of "$build" CXX_DEFINES)
-  mapfile -t includes < <(flags_of "$build" CXX_INCLUDES)
-  mapfile -t flags < <(flags_of "$build" CXX_FLAGS)
-  GRADE_ARGS=("${defines[@]}" -I"$HERE/code" "${includes[@]}" "${flags[@]}")
   local work; work="$(mktemp -d)"
-  mkdir -p "$work/rows"
   # shellcheck disable=SC2064
   trap "rm -rf '$work'" EXIT
+  grade_prepare "$id" "$build" "$work"
+  mkdir -p "$work/rows"; chmod 700 "$work/rows"
   local names; mapfile -t names < <(field "$id" test)
-  ( IFS=$'\t'; printf 'student\tresult\tpassed\t%s\tfirst_failure\tseconds\n' "${names[*]}" )
-  local n=0 running=0 s
+  local n=0 running=0 s sd
+  for s in "$@"; do
+    sd="$(roster_field "$roster" "$(basename "$s")" 2)"
+    [ -n "$sd" ] || sd="$seed"
+    [[ $sd =~ ^[0-9]{1,18}$ ]] || die "grade: the roster gives $(basename "$s") the seed '$sd', not a number"
+    reference "$work" "$id" "$sd" >/dev/null
+  done
   for s in "$@"; do
     n=$((n + 1))
-    ( set +e; grade_one "$id" "$build" "$work" "$s" "$(printf '%04d' $n)" ) &
+    sd="$(roster_field "$roster" "$(basename "$s")" 2)"
+    ( set +e; grade_one "$id" "$work" "$s" "$(printf '%04d' $n)" "${sd:-$seed}" ) &
     running=$((running + 1))
     if [ $running -ge "$JOBS" ]; then wait -n || true; running=$((running - 1)); fi
   done
   wait
-  cat "$work"/rows/*
-  echo "grade: $n students of $id graded ($(grep -c $'\tPASS\t' "$work"/rows/* | awk -F: '{ s += $2 } END { print s + 0 }') pass)" >&2
+  local header
+  header="$(IFS=$'\t'; printf 'student\tresult\tpassed\t%s\tjudge\tfirst_failure\tseconds\tseed' "${names[*]}")"
+  { echo "$header"; cat "$work"/rows/*; } >"$work/grades.tsv"
+  export_grades "$format" "$id" "$work/grades.tsv" "$roster"
+  [ -z "$summary" ] || cmd_summary "$id" "$work/grades.tsv" "$summary" >&2
+  echo "grade: $n student$([ "$n" = 1 ] || echo s) of $id graded ($(awk -F '\t' 'NR > 1 && $2 == "PASS"' "$work/grades.tsv" | wc -l) pass)" >&2
+}
+
+# similar [--threshold T] ID STUDENT_DIR...: the pairs of students whose code for ID has nearly
+# the same shape: the regions read as tokens (exercises/forbidden.cpp --shape: names and literals
+# blurred, so renaming changes nothing), cut into runs of 5 tokens; the share of runs two
+# students have in common (those of the stub left aside) is at least T (default 0.8). A hint to
+# talk about, never a verdict: short solutions look alike by nature, and two students may reach
+# the same code honestly.
+cmd_similar() {
+  local threshold=0.8
+  if [ "${1:-}" = --threshold ]; then threshold="${2:-}"; shift 2; fi
+  [[ $threshold =~ ^(0(\.[0-9]+)?|1(\.0*)?)$ ]] || die "similar: --threshold wants a number from 0 to 1, not '$threshold'"
+  [ $# -ge 3 ] || die "usage: similar [--threshold T] ID STUDENT_DIR STUDENT_DIR..."
+  local id="$1"; shift
+  exists "$id"
+  [ "$(field "$id" kind)" = implement ] || die "similar compares code: $id is a $(field "$id" kind) exercise"
+  local work; work="$(mktemp -d)"
+  # shellcheck disable=SC2064
+  trap "rm -rf '$work'" EXIT
+  g++ -std=c++17 -O1 -o "$work/forbidden" "$HERE/exercises/forbidden.cpp" || die "exercises/forbidden.cpp does not compile"
+  local files f s; files="$(region_files "$id" "$HERE" | grep -E '^code/.*\.cpp$' || true)"
+  for f in $files; do
+    strip_file "$id" "$HERE/$f" >"$work/stub.cpp"
+    "$work/forbidden" --shape "$id" "$work/stub.cpp" >>"$work/stub.shape" || true
+  done
+  for s in "$@"; do
+    : >"$work/$(basename "$s").shape"
+    for f in $files; do
+      [ -f "$s/$f" ] && "$work/forbidden" --shape "$id" "$s/$f" >>"$work/$(basename "$s").shape" 2>/dev/null || true
+    done
+  done
+  local shapes=(); for s in "$@"; do shapes+=("$(basename "$s").shape"); done
+  echo "# similar $id: pairs whose code shares at least $threshold of its runs of 5 tokens (names and literals blurred); a hint, not a verdict"
+  printf 'share\tstudent\tstudent\truns\n'
+  (cd "$work" && awk -v t="$threshold" '
+      FNR == 1 { name = FILENAME; sub(/\.shape$/, "", name); k = 0 }
+      { tok[name, ++k] = $0; len[name] = k }
+      END {
+        for (s in len) {
+          n = 0
+          for (i = 1; i + 4 <= len[s]; i++) {
+            g = tok[s, i] " " tok[s, i + 1] " " tok[s, i + 2] " " tok[s, i + 3] " " tok[s, i + 4]
+            if (s == "stub") stubgram[g] = 1
+            else if (!((s, g) in has)) { has[s, g] = 1; gram[s, ++n] = g }
+          }
+          count[s] = n
+        }
+        m = 0
+        for (s in count) if (s != "stub") who[++m] = s
+        for (a = 1; a <= m; a++) for (b = a + 1; b <= m; b++) {
+          x = who[a]; y = who[b]; both = 0; nx = 0; ny = 0
+          for (i = 1; i <= count[x]; i++) if (!(gram[x, i] in stubgram)) { nx++; if ((y, gram[x, i]) in has) both++ }
+          for (i = 1; i <= count[y]; i++) if (!(gram[y, i] in stubgram)) ny++
+          union = nx + ny - both
+          if (union > 0 && both / union >= t) printf "%.2f\t%s\t%s\t%d\n", both / union, x < y ? x : y, x < y ? y : x, both
+        }
+      }' stub.shape "${shapes[@]}") | sort -t "$(printf '\t')" -k1,1nr -k2,2
+}
+
+# summary ID GRADES.TSV OUT: OUT/summary.html, the class at a glance for the teacher: a gnuplot
+# histogram of the passes of each test (OUT/passes.png, said in words too), the results by
+# kind, the students that did not pass with their first failure, and the slowest students.
+cmd_summary() {
+  [ $# -eq 3 ] || die "usage: summary ID GRADES.TSV OUTDIR"
+  local id="$1" tsv="$2" out="$3"
+  exists "$id"
+  [ -f "$tsv" ] || die "summary: no file '$tsv'"
+  head -n 1 "$tsv" | grep -q $'^student\tresult\tpassed\t' || die "summary: $tsv is not a table of grade"
+  mkdir -p "$out"
+  local data="$out/passes.dat"
+  # One line per test: its number, how many students passed it, how many were graded.
+  awk -F '\t' 'NR == 1 { n = NF - 7; next }
+               { s++; for (i = 1; i <= n; i++) p[i] += $(i + 3) == "pass" }
+               END { for (i = 1; i <= n; i++) printf "%d %d %d\n", i, p[i], s }' "$tsv" >"$data"
+  local students; students="$(awk 'END { print NR - 1 }' "$tsv")"
+  gnuplot <<GP || die "summary: gnuplot could not draw $out/passes.png"
+set terminal pngcairo size 800,420 enhanced font 'Sans,12' background rgb 'white'
+set output '$out/passes.png'
+set title 'Exercise $id: students passing each test (of $students)'
+set xlabel 'test (numbered as in the table below)'
+set ylabel 'students passing'
+set yrange [0:$students + 0.5]
+set ytics $(( (students + 9) / 10 ))
+set xrange [0.4:$(wc -l <"$data") + 0.6]
+set xtics 1
+set grid ytics
+set boxwidth 0.6
+set style fill solid 0.6 border rgb 'black'
+plot '$data' using 1:2 with boxes lc rgb '#1f5fa8' notitle, \
+     '' using 1:2:(sprintf('%d', \$2)) with labels offset 0,0.8 notitle
+GP
+  awk -F '\t' -v id="$id" '
+    function h(s) { gsub(/&/, "\\&amp;", s); gsub(/</, "\\&lt;", s); gsub(/>/, "\\&gt;", s); return s }
+    NR == 1 { n = NF - 7; for (i = 1; i <= n; i++) test[i] = $(i + 3); next }
+    {
+      s++; who[s] = $1; res[s] = $2; got[s] = $3; first[s] = $(n + 5); secs[s] = $(n + 6) + 0
+      kinds[$2]++; for (i = 1; i <= n; i++) p[i] += $(i + 3) == "pass"
+    }
+    END {
+      print "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">"
+      printf "<title>Exercise %s: the class at a glance</title>\n", h(id)
+      print "<style>body { font-family: sans-serif; max-width: 60em; margin: 2em auto; color: #111; line-height: 1.4 }"
+      print "table { border-collapse: collapse; margin: 1em 0 } th, td { border: 1px solid #666; padding: 0.3em 0.6em; text-align: left; vertical-align: top }"
+      print "th { background: #e8eef6 } img { max-width: 100%; height: auto }</style>\n</head>\n<body>\n<main>"
+      printf "<h1>Exercise %s: the class at a glance</h1>\n", h(id)
+      line = ""
+      split("PASS FAIL TIMEOUT CRASH EXITED FORBIDDEN COMPILE-ERROR LINK-ERROR NO-REGION NO-WORKSPACE", order, " ")
+      for (r = 1; r in order; r++) if (order[r] in kinds) line = line (line == "" ? "" : ", ") kinds[order[r]] " " h(order[r])
+      printf "<p>%d students graded: %s.</p>\n", s, line
+      print "<h2>Passes of each test</h2>"
+      alt = "Bar chart of the students passing each test:"
+      for (i = 1; i <= n; i++) alt = alt sprintf(" test %d, %d of %d;", i, p[i], s)
+      printf "<figure>\n<img src=\"passes.png\" width=\"800\" height=\"420\" alt=\"%s\">\n", h(alt)
+      print "<figcaption>The number of students passing each test; the table below names the tests and gives the same numbers.</figcaption>\n</figure>"
+      print "<table>\n<caption>The tests</caption>\n<thead><tr><th scope=\"col\">test</th><th scope=\"col\">name</th><th scope=\"col\">students passing</th></tr></thead>\n<tbody>"
+      for (i = 1; i <= n; i++) printf "<tr><td>%d</td><td>%s</td><td>%d of %d</td></tr>\n", i, h(test[i]), p[i], s
+      print "</tbody>\n</table>"
+      print "<h2>Students who did not pass</h2>"
+      bad = 0
+      for (k = 1; k <= s; k++) if (res[k] != "PASS") bad++
+      if (bad == 0) print "<p>Every student passed.</p>"
+      else {
+        print "<table>\n<caption>Each with the first failure the grading found</caption>\n<thead><tr><th scope=\"col\">student</th><th scope=\"col\">result</th><th scope=\"col\">tests passed</th><th scope=\"col\">first failure</th></tr></thead>\n<tbody>"
+        for (k = 1; k <= s; k++) if (res[k] != "PASS")
+          printf "<tr><td>%s</td><td>%s</td><td>%s</td><td>%s</td></tr>\n", h(who[k]), h(res[k]), h(got[k]), h(first[k])
+        print "</tbody>\n</table>"
+      }
+      print "<h2>The slowest students to grade</h2>"
+      print "<table>\n<caption>Up to five, with the seconds their grading took</caption>\n<thead><tr><th scope=\"col\">student</th><th scope=\"col\">seconds</th><th scope=\"col\">result</th></tr></thead>\n<tbody>"
+      for (r = 1; r <= 5 && r <= s; r++) {
+        best = 0
+        for (k = 1; k <= s; k++) if (!(k in shown) && (best == 0 || secs[k] > secs[best])) best = k
+        shown[best] = 1
+        printf "<tr><td>%s</td><td>%d</td><td>%s</td></tr>\n", h(who[best]), secs[best], h(res[best])
+      }
+      print "</tbody>\n</table>\n</main>\n</body>\n</html>"
+    }' "$tsv" >"$out/summary.html"
+  rm -f "$data"
+  echo "$out/summary.html"
 }
 
 # grade_answers ID STUDENT_DIR...: a prove or measure exercise: each answer is copied to
@@ -787,6 +1356,11 @@ cmd_selftest() {
   done
   work="$(mktemp -d)"
   trap 'rm -rf "$work"' RETURN
+  # The judges of grade (exercises/judge.cpp) and the library's output for each.
+  g++ -std=c++17 -O1 -ffp-contract=off -I"$HERE/code" -c "$HERE/exercises/judge.cpp" -o "$work/judge.o" &&
+    g++ -o "$work/judge_ref" "$work/judge.o" "$build/libdt.a" -lmpfr -lgmp -pthread ||
+    die "exercises/judge.cpp does not compile or link with $build/libdt.a"
+  local judged; judged="$("$work/judge_ref" --list)"
   for id in $sel; do
     local files; files="$(region_files "$id" "$HERE" | grep '^code/.*\.cpp$' || true)"
     if [ -z "$files" ]; then echo "FAIL $id: no solution region in code/*.cpp"; fail=1; continue; fi
@@ -815,6 +1389,21 @@ cmd_selftest() {
       else
         if [ $rc -ne 0 ]; then echo "FAIL $id: its tests fail on the restored solution:"; echo "$res"; fail=1
         else echo "ok   $id: the restored solution passes"; fi
+      fi
+      # The judge of grade, where the exercise has one: the restored solution prints what the
+      # library's prints, the stub does not.
+      if grep -qxF -- "$id" <<<"$judged"; then
+        if ! g++ -o "$work/j" "${o_list[@]}" "$work/judge.o" "$build/libdt.a" -lmpfr -lgmp -pthread 2>"$work/ld.log"; then
+          echo "FAIL $id: the judge does not link with the $variant copy:"; head -n 20 "$work/ld.log"; fail=1; continue
+        fi
+        [ -f "$work/ref_$id" ] || "$work/judge_ref" "$id" 1 >"$work/ref_$id" || { echo "FAIL $id: the judge fails on the library"; fail=1; continue; }
+        local same=0; "$work/j" "$id" 1 >"$work/got_$id" 2>/dev/null && cmp -s "$work/ref_$id" "$work/got_$id" && same=1
+        if [ $variant = stub ] && [ $same = 1 ]; then echo "FAIL $id: the judge prints the solution's output on the stub"; fail=1
+        elif [ $variant = restored ] && [ $same = 0 ]; then
+          echo "FAIL $id: the judge's output on the restored solution is not the library's:"
+          judge_differences "$work/ref_$id" "$work/got_$id" | head -n 3; fail=1
+        elif [ $variant = stub ]; then echo "ok   $id: the judge tells the stub from the solution"
+        else echo "ok   $id: the judge prints the library's output on the restored solution"; fi
       fi
     done
   done
@@ -850,7 +1439,7 @@ cmd_lint() {
   return $fail
 }
 
-[ $# -ge 1 ] || die "usage: exercise.sh COMMAND, one of: list, release ID... DIR, grade ID STUDENT_DIR..., handout SECTION [OUTDIR], check [ID...] [DIR], hint [ID] [DIR], watch [ID...] [DIR], selftest BUILD [ID...], lint BUILD"
+[ $# -ge 1 ] || die "usage: exercise.sh COMMAND, one of: list, release ID... DIR, grade [OPTIONS] ID STUDENT_DIR..., export FORMAT ID TSV [ROSTER], similar [--threshold T] ID STUDENT_DIR..., summary ID TSV OUTDIR, handout SECTION [OUTDIR], check [ID...] [DIR], hint [ID] [DIR], watch [ID...] [DIR], selftest BUILD [ID...], lint BUILD"
 [ -f "$DB" ] || die "no $DB"
 cmd="$1"; shift
 case "$cmd" in
@@ -859,6 +1448,9 @@ case "$cmd" in
   # start ID DIR: the former self-study command; now a release of one exercise.
   start) [ $# -eq 2 ] || die "usage: start ID DIR"; cmd_release "$@" ;;
   grade) cmd_grade "$@" ;;
+  export) cmd_export "$@" ;;
+  similar) cmd_similar "$@" ;;
+  summary) cmd_summary "$@" ;;
   check) cmd_check "$@" ;;
   hint) cmd_hint "$@" ;;
   "watch") cmd_watch "$@" ;;

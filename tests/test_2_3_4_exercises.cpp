@@ -1,6 +1,7 @@
-/// \file test_2_3_4_exercises.cpp Exercise 2.3.4-1 (exercises/exercises.txt): computeAdjacenciesSorted restores a triangulation's links, rejects an edge two faces walk the same way, and leaves the links across unmatched edges alone. Each failure names the face and the edge.
+/// \file test_2_3_4_exercises.cpp Exercise 2.3.4-1 (exercises/exercises.txt): computeAdjacenciesSorted restores a triangulation's links, rejects an edge two faces walk the same way and an edge of three faces, and leaves the links across unmatched edges alone. Each failure names the face and the edge. The library's computeAdjacencies does what its header says of a third face on an edge.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <array>
 #include <sstream>
 #include <stdexcept>
@@ -121,4 +122,43 @@ TEST_CASE("2.3.4 exercise 2.3.4-1 a link across an unmatched edge is left as it 
                                          << faceName(ball, want));
       }
   }
+}
+
+namespace {
+
+// Five vertices around the edge 0 - 1: 2 above it, 3 and 4 below (ids 0..4).
+std::array<dt::Vertex*, 5> aroundOneEdge(dt::Triangulation& T) {
+  return {T.addVertex(0, 0, 0), T.addVertex(1, 0, 1), T.addVertex(0, 1, 2), T.addVertex(0, -1, 3),
+          T.addVertex(1, -1, 4)};
+}
+
+}  // namespace
+
+TEST_CASE("2.3.4 exercise 2.3.4-1 an edge of three faces is rejected") {
+  // Three faces on the edge 0 - 1, one walking it 0 -> 1 and two 1 -> 0: each pair could be
+  // linked, but no manifold has three faces on one edge.
+  dt::Triangulation T;
+  const auto v = aroundOneEdge(T);
+  for (int order = 0; order < 3; ++order) {
+    std::vector<dt::Face*> three = {T.addFace(v[0], v[1], v[2]), T.addFace(v[1], v[0], v[3]), T.addFace(v[1], v[0], v[4])};
+    std::rotate(three.begin(), three.begin() + order, three.end());
+    INFO("faces (0 1 2), (1 0 3) and (1 0 4), the list starting at the " << order << "-th");
+    CHECK_THROWS_AS(dt::computeAdjacenciesSorted(three), std::logic_error);
+  }
+  // Without the third face the list is a mesh: linked, no exception.
+  std::vector<dt::Face*> two = {T.addFace(v[0], v[1], v[2]), T.addFace(v[1], v[0], v[4])};
+  CHECK_NOTHROW(dt::computeAdjacenciesSorted(two));
+  CHECK_MESSAGE(two[0]->F[0] == two[1], "faces (0 1 2) and (1 0 4) share the edge 0 - 1");
+}
+
+TEST_CASE("2.3.4 computeAdjacencies takes a third face on a linked edge for a boundary face as its header says") {
+  // The header promises no error here: the map forgets the edge once two faces are linked.
+  dt::Triangulation T;
+  const auto v = aroundOneEdge(T);
+  std::vector<dt::Face*> three = {T.addFace(v[0], v[1], v[2]), T.addFace(v[1], v[0], v[3]), T.addFace(v[0], v[1], v[4])};
+  three[2]->F[0] = three[2];  // a marker: a link the call must leave as it was
+  CHECK_NOTHROW(dt::computeAdjacencies(three));
+  CHECK(three[0]->F[0] == three[1]);
+  CHECK(three[1]->F[0] == three[0]);
+  CHECK(three[2]->F[0] == three[2]);
 }

@@ -39,6 +39,11 @@ TEST_CASE("exercises every implement exercise fails on its stub and passes with 
   CHECK_FALSE(contains(r.out, "FAIL"));
   CHECK(contains(r.out, "ok   2.3.6-1: the stub compiles and its check fails"));
   CHECK(contains(r.out, "ok   2.1-1: the restored solution passes"));
+  // The judges of grade: each tells the stub from the solution and agrees with the library.
+  for (const char* id : {"2.1-1", "2.3.4-1", "2.3.5-5"}) {
+    CHECK(contains(r.out, std::string("ok   ") + id + ": the judge tells the stub from the solution"));
+    CHECK(contains(r.out, std::string("ok   ") + id + ": the judge prints the library's output on the restored solution"));
+  }
 }
 
 TEST_CASE("exercises release check hint and watch end to end in a temporary directory") {
