@@ -1085,7 +1085,7 @@ TEST_CASE("cli a thread that cannot start is one line and exit 1 and more thread
   CHECK(temporariesIn(w).empty());
 }
 
-TEST_CASE("threads parallelFor joins the threads that started when one cannot start") {
+TEST_CASE("cli parallelFor joins the threads that started when one cannot start") {
   // The third start fails as std::thread does when the system has no thread left for us.
   struct FailThird : dt::ThreadStarter {
     int started = 0;
@@ -1204,7 +1204,7 @@ TEST_CASE("cli --order brio with the listings warns that shuffled collinear poin
   CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
 }
 
-TEST_CASE("process a program run by runProgram is ended and reaped with its parent's SIGTERM") {
+TEST_CASE("cli a program run by runProgram is ended and reaped with its parent's SIGTERM") {
   const std::string d = freshDir("reap");
   const std::string pidFile = d + "/child_pid";
   const pid_t parent = ::fork();
@@ -1231,7 +1231,7 @@ TEST_CASE("process a program run by runProgram is ended and reaped with its pare
   if (!gone) ::kill(sleeper, SIGKILL);
 }
 
-TEST_CASE("chapters a PNG or SVG figure cut short is told from a whole one") {
+TEST_CASE("cli a PNG or SVG figure cut short is told from a whole one") {
   const std::string d = freshDir("figures_cut");
   const std::string png = std::string("\x89PNG\r\n\x1a\n", 8) + std::string(20, 'x') +
                           std::string("\0\0\0\0IEND\xae\x42\x60\x82", 12);
@@ -1245,7 +1245,7 @@ TEST_CASE("chapters a PNG or SVG figure cut short is told from a whole one") {
   CHECK(ch::figureTruncated(d + "/cut.svg") == "no closing </svg>");
 }
 
-TEST_CASE("chapters a bad option of bench_parallel creates no output directory and out of memory names the phase") {
+TEST_CASE("cli a bad option of bench_parallel creates no output directory and out of memory names the phase") {
   const std::string d = freshDir("bench_args");
   const std::string bench = dttest::buildDir() + "/bench_parallel";
   for (const std::vector<std::string>& bad :
