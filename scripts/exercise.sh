@@ -836,6 +836,16 @@ grade_prepare() {
     done < <(field "$id" test)
   done
   GRADE_TEST_OBJS=("${keep[@]}")
+  # What the links read, copied where the sandbox's user can read it: the teacher's build may
+  # sit below a directory only root can enter (a fresh clone made with mktemp -d is mode 700).
+  mkdir -p "$work/link"
+  cp "$build/libdt.a" "$work/link/"
+  for t in "${GRADE_TEST_OBJS[@]}"; do
+    mkdir -p "$work/link/$(dirname "$t")"
+    cp "$build/$t" "$work/link/$t"
+  done
+  chmod -R a+rX "$work/link"
+  GRADE_BUILD="$work/link"
   "$GRADE_CXX" -std=c++17 -O1 -o "$work/forbidden" "$HERE/exercises/forbidden.cpp" ||
     die "exercises/forbidden.cpp does not compile"
   "$GRADE_CXX" "${GRADE_ARGS[@]}" -c "$HERE/exercises/judge.cpp" -o "$work/judge/judge.o" ||
