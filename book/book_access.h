@@ -276,6 +276,11 @@ inline std::vector<std::string> typedValues(const std::string& page, const std::
   for (std::size_t k = 0; k < lines.size(); ++k)
     for (const TypedNumber& n : numbersIn(lines[k])) {
       if (!distinctive(n)) continue;
+      // A name, not a quantity: "Listing 2.4" is the notes' numbering whatever a run measured.
+      static const std::regex named(
+          "(?:Listings?|Figures?|Fig\\.|Tables?|Propert(?:y|ies)|Propositions?|Sections?|Lemma|"
+          "Theorem|Algorithm|[Ee]xercises?|Chapter|Definition|Corollary|Remark|Errat(?:um|a))\\s+$");
+      if (std::regex_search(lines[k].substr(0, n.at), named)) continue;
       auto it = held.end();
       for (auto h = held.begin(); h != held.end(); ++h)
         if (std::fabs(h->first - n.value) <= 1e-12 * std::fabs(n.value)) { it = h; break; }

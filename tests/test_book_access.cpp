@@ -63,6 +63,7 @@ TEST_CASE("book access a number typed in prose or a formula that a value holds i
       {"s236.test_factor_hi", {"10000.0", "tests/test_2_3_6_flips.cpp:262"}},
       {"s231.cells", {"53,980", "values_sec2_3_1_predicates.txt"}},
       {"s231.grid", {"256", "values_sec2_3_1_predicates.txt"}},
+      {"s231.ratio", {"2.5", "values_sec2_3_1_predicates.txt"}},
       {"s9.small", {"3 of 7", "values_x.txt"}},
       {"s9.other", {"12.5", "values_other_program.txt"}}};
   const std::vector<std::string> programs = {"sec2_3_1_predicates"};
@@ -81,6 +82,8 @@ TEST_CASE("book access a number typed in prose or a formula that a value holds i
   // coincidence. Other spellings of a measured number are found.
   CHECK(bookaccess::typedValues("53980 and 5.398e4 and 10^4\n", "f", values, programs).size() == 2);
   CHECK(bookaccess::typedValues("12.5\n", "f", values, programs).empty());
+  // Listing 2.5 above is a name; the same number as a quantity is refused.
+  CHECK(bookaccess::typedValues("a ratio of 2.5 here\n", "f", values, programs).size() == 1);
 }
 
 TEST_CASE("book access the printed book links inside itself and prints where other links go") {
