@@ -23,6 +23,7 @@
 #include <sstream>
 
 #include "support.h"
+#include "fast_parallel.h"
 #include "parallel_for.h"
 // The chapter programs' plumbing (the figure check); its default output directory is unused.
 #ifndef DT_OUTPUT_DIR
@@ -1072,10 +1073,14 @@ TEST_CASE("cli a thread that cannot start is one line and exit 1 and more thread
     return;
   }
   // One process for the user: no thread can start (root is not held by RLIMIT_NPROC, nobody is).
+  // The input is large enough that the cost model asks for the second thread.
+  dttest::writeText(d + "/big.node",
+                    dttest::nodeText(dt::uniformPoints(2 * dt::ParallelModel::minPointsPerThread + 10000, 5)));
+  ::chmod((d + "/big.node").c_str(), 0644);
   const std::string w = freshDir("threads_out");
   ::chmod(w.c_str(), 0777);
   const int rc = runScriptAsNobody(w, "nproc", "prlimit --nproc=1 " + cli() + " '" + d +
-                                                   "/in.node' -o '" + w + "/o' --threads 2 2> '" + w +
+                                                   "/big.node' -o '" + w + "/o' --threads 2 2> '" + w +
                                                    "/err'; echo $? > '" + w + "/status'");
   REQUIRE(rc == 0);
   CHECK(dttest::readText(w + "/status") == "1\n");
