@@ -212,7 +212,7 @@ void table22(const ch::Options& o, const std::vector<std::size_t>& sizes,
       v.num("s235.sort_share_of_total", 100 * r.tSort / r.tTotal, "%.1f%%");
       v.num("s235.sort_bound", bound, "%g");
       v.set("s235.sort_second_verdict",
-            n < 1000000 ? std::string("not tested at a million points in this run (--max-n 1000000 or the full run does)")
+            n < 1000000 ? std::string("not tested at a million points in this run (`--max-n 1000000` or the full run does)")
                         : r.tSort < bound ? std::string("confirmed") : std::string("not confirmed on this machine"));
       v.verdict("s235.sort_negligible", r.tSort < 0.1 * r.tTotal, "small beside the insertions (under a tenth)",
                 "not small beside the insertions (a tenth or more)");
