@@ -308,7 +308,7 @@ void table21(const ch::Options& o, ch::Values& v) {
     v.verdict("s234.exp_time_comment", faster,
               "The time outgrows the step count because each step gets dearer, as the cost per face "
               "visited shows",
-              "Up to this run's largest n the steps cost about the same whatever n");
+              "Up to this run's largest n the steps do not get dearer");
     e.add({"time", ch::fmt("%.3f", slope(time)), ch::fmt("%.3f", slope(nTime)), "n^1.5: 1.5"});
     e.emit(o, "table2_1_growth");
   }
