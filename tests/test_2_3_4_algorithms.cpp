@@ -47,14 +47,6 @@ std::vector<dt::Vertex*> parabola(dt::Triangulation& T, long n, long x0, long st
   return S;
 }
 
-// n parabola points in an order whose cavities stay small (the answer of exercise 2.3.4-3; the
-// student edition shows a stub here).
-std::vector<dt::Vertex*> parabolaSmallCavities(dt::Triangulation& T, long n) {
-  // BEGIN SOLUTION 2.3.4-3
-  return parabola(T, n, -1, -1);  // x = -1, -2, ..., -n: each point lands just outside the hull
-  // END SOLUTION 2.3.4-3
-}
-
 }  // namespace
 
 TEST_CASE("2.3.4 Table 2.1: N_search (faces visited by lineSearch) grows like sqrt(n)") {
@@ -231,10 +223,12 @@ TEST_CASE("2.3.4 worst case: one insertion order of points on a parabola gives c
 TEST_CASE("2.3.4 Listing 2.5 without recursion: a cavity of 10^5 faces") {
   // DT of 10^5 parabola points built in an order with small cavities, then one point near the apex:
   // inside every circle, so its cavity is the whole mesh. Listing 2.5 recursed once per face;
-  // delaunayCavity uses an explicit stack, so the depth of the C++ stack does not grow.
+  // delaunayCavity uses an explicit stack, so the depth of the C++ stack does not grow. The
+  // student edition leaves the body out: its insertion order answers exercise 2.3.4-3.
+  // BEGIN SOLUTION 2.3.4-3 (remove)
   const long n = 100000;
   dt::Triangulation T;
-  const std::vector<dt::Vertex*> S = parabolaSmallCavities(T, n);
+  const std::vector<dt::Vertex*> S = parabola(T, n, -1, -1);  // x = -1, -2, ..., -n
   dt::delaunayTrglHull(T, S, dt::StartRule::LastCavity);
   dt::Vertex* apex = T.addVertex(-0.5, 0.25, n);
   dt::InsertionStats st;
@@ -244,6 +238,7 @@ TEST_CASE("2.3.4 Listing 2.5 without recursion: a cavity of 10^5 faces") {
   const dt::CheckReport r = dt::checkTriangulation(T);
   CHECK_MESSAGE(r.ok, r.error);
   CHECK(r.nHull == std::size_t(n + 1));
+  // END SOLUTION 2.3.4-3
 }
 
 TEST_CASE("2.3.4 exercise 1: computeAdjacenciesSorted inside the kernel gives the same mesh") {
