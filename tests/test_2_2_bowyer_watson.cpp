@@ -132,10 +132,12 @@ TEST_CASE("2.2.1 a size computed from the input suffices: super-triangles beyond
   // DT(S): factor = 1 + 2B / half-width, computed before triangulating. Coordinates on the grid
   // k 2^-20 keep every O exact in doubles (43-bit products), so delta is computed exactly here.
   std::vector<XY> sets;
+  // BEGIN SOLUTION 2.2-2 (remove)
   for (int k : {7, 14, 20}) {
     const double d = std::ldexp(1.0, -k);  // the flat hull triangle of the test below
     sets.push_back({0, 0, 1, 0, 0.5, d, 0.5, 1});
   }
+  // END SOLUTION 2.2-2
   for (unsigned seed : {3u, 4u, 5u}) {  // random points on the grid, one triple nearly collinear
     XY p;
     std::mt19937 g(seed);
@@ -166,12 +168,14 @@ TEST_CASE("2.2.1 a size computed from the input suffices: super-triangles beyond
     const dt::BowyerWatsonResult bw = dt::bowyerWatson(p, factor);
     REQUIRE(dt::checkDelaunay(bw.xy, bw.tri).ok);
     CHECK(dt::hullEdgesNotCovered(bw.xy, bw.ids, bw.tri).empty());
+    // BEGIN SOLUTION 2.2-2 (remove)
     // And the bound is not idle: for the four points, where delta is the flat triangle's own
     // |O|, a thousandth of it lets that triangle's circle swallow a corner.
     if (n == 4) {
       const dt::BowyerWatsonResult small = dt::bowyerWatson(p, 1 + 2e-3 * B / half);
       CHECK_FALSE(dt::hullEdgesNotCovered(small.xy, small.ids, small.tri).empty());
     }
+    // END SOLUTION 2.2-2
   }
 }
 

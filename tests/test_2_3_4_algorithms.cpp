@@ -223,7 +223,9 @@ TEST_CASE("2.3.4 worst case: one insertion order of points on a parabola gives c
 TEST_CASE("2.3.4 Listing 2.5 without recursion: a cavity of 10^5 faces") {
   // DT of 10^5 parabola points built in an order with small cavities, then one point near the apex:
   // inside every circle, so its cavity is the whole mesh. Listing 2.5 recursed once per face;
-  // delaunayCavity uses an explicit stack, so the depth of the C++ stack does not grow.
+  // delaunayCavity uses an explicit stack, so the depth of the C++ stack does not grow. The
+  // student edition leaves the body out: its insertion order answers exercise 2.3.4-3.
+  // BEGIN SOLUTION 2.3.4-3 (remove)
   const long n = 100000;
   dt::Triangulation T;
   const std::vector<dt::Vertex*> S = parabola(T, n, -1, -1);  // x = -1, -2, ..., -n
@@ -236,6 +238,7 @@ TEST_CASE("2.3.4 Listing 2.5 without recursion: a cavity of 10^5 faces") {
   const dt::CheckReport r = dt::checkTriangulation(T);
   CHECK_MESSAGE(r.ok, r.error);
   CHECK(r.nHull == std::size_t(n + 1));
+  // END SOLUTION 2.3.4-3
 }
 
 TEST_CASE("2.3.4 exercise 1: computeAdjacenciesSorted inside the kernel gives the same mesh") {

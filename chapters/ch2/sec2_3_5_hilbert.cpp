@@ -165,6 +165,7 @@ void table22(const ch::Options& o, const std::vector<std::size_t>& sizes,
              std::size_t checkLimit, ch::Values& v) {
   double nsLo = 1e300, nsHi = 0;
   std::vector<std::pair<std::size_t, double>> cav;
+  std::vector<double> usPerPoint;  // the column t/n, for the prose's verdict on linear time
   struct NotesRow { double ns, nc, t; };
   const NotesRow notes[] = {{2.34, 4.06, 0.0097}, {2.46, 4.13, 0.090}, {2.50, 4.16, 0.92},
                             {2.50, 4.17, 9.2}};
@@ -201,6 +202,7 @@ void table22(const ch::Options& o, const std::vector<std::size_t>& sizes,
     nsLo = std::min(nsLo, r.nSearch);
     nsHi = std::max(nsHi, r.nSearch);
     cav.push_back({n, r.nCavity});
+    usPerPoint.push_back(1e6 * r.tTotal / double(n));
     prog.update(++done);
     if (n == sizes.back()) {
       // The notes: "sorting over a million points takes less than a second", and the sort's
@@ -212,7 +214,7 @@ void table22(const ch::Options& o, const std::vector<std::size_t>& sizes,
       v.num("s235.sort_share_of_total", 100 * r.tSort / r.tTotal, "%.1f%%");
       v.num("s235.sort_bound", bound, "%g");
       v.set("s235.sort_second_verdict",
-            n < 1000000 ? std::string("not tested at a million points in this run (--max-n 1000000 or the full run does)")
+            n < 1000000 ? std::string("not tested at a million points in this run (`--max-n 1000000` or the full run does)")
                         : r.tSort < bound ? std::string("confirmed") : std::string("not confirmed on this machine"));
       v.verdict("s235.sort_negligible", r.tSort < 0.1 * r.tTotal, "small beside the insertions (under a tenth)",
                 "not small beside the insertions (a tenth or more)");
@@ -229,6 +231,14 @@ void table22(const ch::Options& o, const std::vector<std::size_t>& sizes,
     const double decades = std::log10(double(cav.back().first) / double(cav.front().first));
     v.num("s235.t22_cav_per_decade", decades > 0 ? (cav.back().second - cav.front().second) / decades : 0.0, "%.2f");
     v.verdict("s235.t22_cav_verdict", cav.front().second > 4.3, "does not stay", "stays");
+    // Linear time keeps t/n constant; three ways, as the measured ratio says.
+    const double usFirst = usPerPoint.front(), usLast = usPerPoint.back();
+    v.num("s235.t22_us_first", usFirst, "%.2f");
+    v.num("s235.t22_us_last", usLast, "%.2f");
+    v.num("s235.t22_us_ratio", usLast / usFirst, "%.2f");
+    v.set("s235.t22_us_trend", usLast > 1.25 * usFirst  ? "rises by more than a quarter"
+                               : usLast < 0.75 * usFirst ? "falls by more than a quarter"
+                                                         : "stays within a quarter of its first value");
   }
   tab.emit(o, "table2_2");
   ch::writeOut(o, "table2_2.dat", dat.str());
@@ -375,10 +385,15 @@ void brioComparison(const ch::Options& o, const std::vector<std::size_t>& sizes,
       // the page's values below.
       {"unit circle (random angles)", dt::randomCirclePoints}};
   constexpr int nInputs = sizeof(inputs) / sizeof(inputs[0]);
+  // The largest size random order actually runs (the limit need not be one of the sizes).
+  std::size_t randomTop = 0;
+  for (std::size_t n : sizes)
+    if (n <= randomMax) randomTop = std::max(randomTop, n);
+  v.set("s235.brio_random_max", sci(randomTop));
   ch::Table tab;
   tab.caption = "BRIO against Hilbert-only and random insertion order: delaunayTrgl with "
                 "super-triangles and LastCavity; t includes the ordering. Random order only up "
-                "to n = " + sci(randomMax) + ": its walks grow like sqrt(n).";
+                "to n = " + sci(randomTop) + ": its walks grow like sqrt(n).";
   tab.header = {"input", "n", "order", "N_search", "N_cavity", "t (s)", "t/n (us)", "checked"};
   // One block of rows per (input, order), so that gnuplot joins each series.
   std::ostringstream dat[nInputs][3], stops;
