@@ -53,9 +53,9 @@ std::vector<std::array<long, 3>> canonicalTriangles(const std::vector<long>& ids
 
 //! [hullEdgesNotCovered]
 /// Figure 2.6's test (2.2.1), exact: the edges of the convex hull Ω(S) of the points with
-/// id >= 0 (split at collinear hull points) that are not an edge of a triangle free of
-/// super-vertices (id < 0). The list is empty iff the triangles left after deleting those
-/// touching a super-vertex cover Ω(S), i.e. iff they can be DT(S).
+/// id >= 0 that no triangle free of super-vertices (id < 0) has. The list is empty iff the
+/// triangles left after deleting those touching a super-vertex cover Ω(S), i.e. iff they can
+/// be DT(S) (why: exercise 2.2-3).
 std::vector<std::array<long, 2>> hullEdgesNotCovered(const std::vector<double>& xy,
                                                      const std::vector<long>& ids,
                                                      const std::vector<Tri>& tri);

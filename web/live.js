@@ -169,12 +169,12 @@ var DTLive = (function () {
     modes.forEach(function (m) { html("option", { value: m[0] }, show, m[1]); });
     show.value = "both";
     legend(f.legend, [
-      { stroke: S.C_TRI, width: 1, text: "DT(S)" },
+      { stroke: S.C_TRI, width: 1, text: "DTₙ, before pₙ₊₁ is inserted" },
       { fill: S.C_NEIGH, stroke: S.C_NEIGH_EDGE, text: "faces the walk to p visited" },
-      { fill: S.C_CAVITY, stroke: S.C_CAVITY_EDGE, text: "cavity 𝒞" },
+      { fill: S.C_CAVITY, stroke: S.C_TRI, text: "cavity 𝒞 (its inner edges thin)" },
       { stroke: S.C_CAVITY_EDGE, width: 3, text: "boundary ∂𝒞" },
       { stroke: S.C_BALL_EDGE, width: 2, text: "ball 𝓑 (in ball mode also filled)" },
-      { dot: S.C_NEW, r: 5, text: "p" }
+      { dot: S.C_NEW, r: 5, text: "p, the point pₙ₊₁ (drag it, tap where it should go, or use the arrow keys)" }
     ]);
     this.report = null;
     this.setPoints = function (xy) {
@@ -201,7 +201,8 @@ var DTLive = (function () {
       var r = DT.query(x, y), v = self.view, mode = show.value;
       clear(gWalk); clear(gCav); clear(gBall); clear(gBnd); clear(gP);
       polygons(gWalk, v, r.walkFaces, "walk", S.C_NEIGH, S.C_NEIGH_EDGE);
-      if (mode !== "ball") polygons(gCav, v, r.cavityFaces, "cavity", S.C_CAVITY, S.C_CAVITY_EDGE);
+      // Inner edges of 𝒞 are drawn as the mesh's: only ∂𝒞 has the boundary's colour and width.
+      if (mode !== "ball") polygons(gCav, v, r.cavityFaces, "cavity", S.C_CAVITY, S.C_TRI);
       if (mode !== "cavity")
         polygons(gBall, v, r.ballFaces, "ball", mode === "ball" ? S.C_BALL : "none", S.C_BALL_EDGE);
       r.boundaryEdges.forEach(function (e) {
@@ -415,7 +416,7 @@ var DTLive = (function () {
         }));
       else if (mode === "stage")
         legend(f.legend, R.stages.map(function (name, s) {
-          return { fill: SERIES[s % SERIES.length], text: name + ": " + self.stages[s] + " cells", key: "stage-" + s };
+          return { fill: SERIES[s % SERIES.length], text: name + ": " + self.stages[s] + (self.stages[s] === 1 ? " cell" : " cells"), key: "stage-" + s };
         }));
       else
         legend(f.legend, [{ fill: S.C_CONFLICT, text: "the naive sign is wrong" },

@@ -198,7 +198,7 @@
     fig.set("stage", 0);
     var best = null, items = fig.legend.querySelectorAll("li");
     items.forEach(function (li) {
-      var m = /^(.*): (\d+) cells$/.exec(li.textContent.trim());
+      var m = /^(.*): (\d+) cells?$/.exec(li.textContent.trim());
       if (m && (!best || +m[2] > best.count)) best = { name: m[1], count: +m[2] };
     });
     var gmp = 0;

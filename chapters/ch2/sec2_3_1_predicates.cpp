@@ -502,6 +502,19 @@ double nsPerCall(long calls, F&& f) {
   return 1e9 * s / double(calls);
 }
 
+// The cost per call of f, robust to a shared machine: the number of calls grows until one
+// measurement lasts about 30 ms, then the median of `reps` such measurements (one measurement
+// alone was seen 10 times too slow while other jobs ran).
+template <class F>
+double medianNsPerCall(int reps, F&& f) {
+  long calls = 256;
+  while (calls < (1L << 30) && nsPerCall(calls, f) * double(calls) < 3e7) calls *= 4;
+  std::vector<double> ns;
+  for (int r = 0; r < reps; ++r) ns.push_back(nsPerCall(calls, f));
+  std::sort(ns.begin(), ns.end());
+  return ns[ns.size() / 2];
+}
+
 void benchmark(const ch::Options& o, ch::Values& v) {
   const int K = 4096;  // inputs reused cyclically (they stay in cache: we time the arithmetic)
   std::mt19937_64 rng(o.seed(2024));
@@ -522,26 +535,27 @@ void benchmark(const ch::Options& o, ch::Values& v) {
     d[0] = IC::ax, d[1] = IC::ay, d[2] = IC::bx, d[3] = IC::by, d[4] = IC::cx, d[5] = IC::cy;
     d[6] = IC::x0 + cell(rng) * IC::eps, d[7] = IC::y0 + cell(rng) * IC::eps;
   }
-  const long fast = o.quick ? 1000000 : 10000000, slow = fast / 10;
+  const int reps = o.quick ? 3 : 7;
   ch::Table t;
-  t.caption = "Cost per call (ns) in this run, and ratio to the naive predicate on the same inputs";
+  t.caption = "Cost per call (ns) in this run, the median of " + std::to_string(reps) +
+              " measurements of about 30 ms each, and ratio to the naive predicate on the same inputs";
   t.header = {"predicate", "inputs", "naive", "robust (filter + exact)", "exact only (GMP)",
               "notes (filter + MPFR-200)", "robust / naive", "exact / naive"};
   auto orientRow = [&](const std::string& what, const std::vector<double>& in) {
     auto at = [&](long i) { return &in[8 * (i % K)]; };
-    const double nv = nsPerCall(fast, [&](long i) {
+    const double nv = medianNsPerCall(reps, [&](long i) {
       const double* d = at(i);
       return dt::orient2dNaive(d[0], d[1], d[2], d[3], d[4], d[5]);
     });
-    const double rb = nsPerCall(fast, [&](long i) {
+    const double rb = medianNsPerCall(reps, [&](long i) {
       const double* d = at(i);
       return dt::orient2d(d[0], d[1], d[2], d[3], d[4], d[5]);
     });
-    const double ex = nsPerCall(slow, [&](long i) {
+    const double ex = medianNsPerCall(reps, [&](long i) {
       const double* d = at(i);
       return dt::orient2dExact(d[0], d[1], d[2], d[3], d[4], d[5]);
     });
-    const double no = nsPerCall(slow, [&](long i) {
+    const double no = medianNsPerCall(reps, [&](long i) {
       const double* d = at(i);
       return dt::orient2dNotes(d[0], d[1], d[2], d[3], d[4], d[5]);
     });
@@ -550,19 +564,19 @@ void benchmark(const ch::Options& o, ch::Values& v) {
   };
   auto incircleRow = [&](const std::string& what, const std::vector<double>& in) {
     auto at = [&](long i) { return &in[8 * (i % K)]; };
-    const double nv = nsPerCall(fast, [&](long i) {
+    const double nv = medianNsPerCall(reps, [&](long i) {
       const double* d = at(i);
       return dt::incircleNaive(d[0], d[1], d[2], d[3], d[4], d[5], d[6], d[7]);
     });
-    const double rb = nsPerCall(fast, [&](long i) {
+    const double rb = medianNsPerCall(reps, [&](long i) {
       const double* d = at(i);
       return dt::incircle(d[0], d[1], d[2], d[3], d[4], d[5], d[6], d[7]);
     });
-    const double ex = nsPerCall(slow, [&](long i) {
+    const double ex = medianNsPerCall(reps, [&](long i) {
       const double* d = at(i);
       return dt::incircleExact(d[0], d[1], d[2], d[3], d[4], d[5], d[6], d[7]);
     });
-    const double no = nsPerCall(slow, [&](long i) {
+    const double no = medianNsPerCall(reps, [&](long i) {
       const double* d = at(i);
       return dt::incircleNotes(d[0], d[1], d[2], d[3], d[4], d[5], d[6], d[7]);
     });
