@@ -18,6 +18,7 @@
 #include <map>
 #include <new>
 #include <optional>
+#include <regex>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -395,6 +396,36 @@ inline void runGnuplot(const Options& o, const std::string& script) {
 
 /// A table printed as Markdown on stdout and written as .md, .csv and .html (the book
 /// includes the .html fragment with \htmlinclude).
+/// The mathematics of a table's caption, header and cells, typed in ASCII for the CSV and the
+/// terminal ("N_search/sqrt(n)", "2^-53", "0 <= i < 256", "O(a,b,c)"), set for a page: sub- and
+/// superscripts, √, ≤, ±, the notes' 𝒪? and 𝒞?, and '<', '>', '&' escaped.
+inline std::string htmlMath(std::string s) {
+  auto sub = [&s](const char* re, const char* to) { s = std::regex_replace(s, std::regex(re), to); };
+  sub("<=", "≤");
+  sub(">=", "≥");
+  sub(">>", "≫");
+  sub("\\+-", "±");
+  sub(" ~ ", " ∼ ");
+  sub("&(?![a-z]+;|#[0-9]+;)", "&amp;");
+  sub("<", "&lt;");
+  sub(">", "&gt;");
+  sub("\\(\\.\\.\\.\\)", "(…)");
+  sub("sqrt\\(([A-Za-z0-9_]+)\\)", "√$1");
+  sub("sqrt\\(", "√(");
+  sub("\\b1e(-?[1-9][0-9]*)\\b", "10^$1");
+  sub("\\|O\\|", "|𝒪<sub>?</sub>|");
+  sub("\\bO\\(", "𝒪<sub>?</sub>(");
+  sub("\\|InC\\|", "|𝒞<sub>?</sub>|");
+  sub("\\bInC\\(", "𝒞<sub>?</sub>(");
+  sub("\\|C\\|", "|𝒞|");
+  sub("\\bS0\\b", "S<sub>0</sub>");
+  sub("\\b(DT|[A-Za-z])_([A-Za-z0-9]+)\\b", "$1<sub>$2</sub>");
+  sub("([A-Za-z0-9)])\\^-([0-9.]+)", "$1<sup>−$2</sup>");
+  sub("([A-Za-z0-9)])\\^([A-Za-z0-9.]+)", "$1<sup>$2</sup>");
+  sub("\\(us\\)", "(µs)");
+  return s;
+}
+
 struct Table {
   std::string caption;
   std::vector<std::string> header;
@@ -444,13 +475,13 @@ struct Table {
       if (p > 0 && (cols.empty() || cols.front() != 0)) cols.insert(cols.begin(), 0);
       s << "<table class=\"doxtable\">\n";
       if (!caption.empty())
-        s << "<caption>" << (p == 0 ? caption : "(continued)") << "</caption>\n";
+        s << "<caption>" << (p == 0 ? htmlMath(caption) : "(continued)") << "</caption>\n";
       s << "<tr>";
-      for (std::size_t c : cols) s << "<th>" << header.at(c) << "</th>";
+      for (std::size_t c : cols) s << "<th>" << htmlMath(header.at(c)) << "</th>";
       s << "</tr>\n";
       for (const auto& r : rows) {
         s << "<tr>";
-        for (std::size_t c : cols) s << "<td>" << (c < r.size() ? r[c] : "") << "</td>";
+        for (std::size_t c : cols) s << "<td>" << (c < r.size() ? htmlMath(r[c]) : "") << "</td>";
         s << "</tr>\n";
       }
       s << "</table>\n";

@@ -10,6 +10,10 @@
 #include <string>
 #include <vector>
 
+#ifndef DT_OUTPUT_DIR
+#define DT_OUTPUT_DIR DT_TEST_TMP  // common.h names a default output directory; the tests write under theirs
+#endif
+#include "../chapters/common.h"
 #include "../chapters/process.h"
 #include "support.h"
 
@@ -347,4 +351,22 @@ TEST_CASE("chapter options --seed changes the random points and no --seed keeps 
   first << p[0];
   CHECK(book.find("\n" + first.str() + " ") != std::string::npos);
   fs::remove_all(d);
+}
+
+TEST_CASE("chapter options a table's page form sets its ASCII mathematics and escapes HTML") {
+  CHECK(ch::htmlMath("N_search/sqrt(n)") == "N<sub>search</sub>/√n");
+  CHECK(ch::htmlMath("eps = 2^-53, 0 <= i,j < 256") == "eps = 2<sup>−53</sup>, 0 ≤ i,j &lt; 256");
+  CHECK(ch::htmlMath("|O| > 1e-15 max(...)^2") == "|𝒪<sub>?</sub>| &gt; 10<sup>−15</sup> max(…)<sup>2</sup>");
+  CHECK(ch::htmlMath("naive InC(a,b,c,d), |C| + 2, DT(S0 ∪ S), DT_k") ==
+        "naive 𝒞<sub>?</sub>(a,b,c,d), |𝒞| + 2, DT(S<sub>0</sub> ∪ S), DT<sub>k</sub>");
+  CHECK(ch::htmlMath("N ~ n^a, n^1.5, t/n (us)") == "N ∼ n<sup>a</sup>, n<sup>1.5</sup>, t/n (µs)");
+  // Words and numbers are left alone: a name with an underscore, a rounded value, an entity.
+  CHECK(ch::htmlMath("threads_used 3.2e-05 a&nbsp;b R&D") == "threads_used 3.2e-05 a&nbsp;b R&amp;D");
+  ch::Table t;
+  t.caption = "x < y";
+  t.header = {"n_h"};
+  t.add({"a & b"});
+  CHECK(t.html().find("<caption>x &lt; y</caption>\n<tr><th>n<sub>h</sub></th></tr>\n<tr><td>a &amp; b</td></tr>") !=
+        std::string::npos);
+  CHECK(t.csv() == "n_h\na & b\n");
 }
