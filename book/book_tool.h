@@ -1351,8 +1351,9 @@ std::string reproduceBox(const ReproduceSpec& spec, const std::string& page,
         << htmlText(files[k]) << "</a>";
     o << ".</li>\n";
   }
+  // No full stop after the command: a narrow page wrapped it onto a line of its own.
   o << "<li>The page's tests: " << code("build/dt_tests -tc=\"" + spec.tests + "\"") << ", or "
-    << code("ctest --test-dir build -R \"" + spec.ctest + "\"") << ".</li>\n";
+    << code("ctest --test-dir build -R \"" + spec.ctest + "\"") << "</li>\n";
   o << "</ul></div>\\endhtmlonly\n";
   return o.str();
 }
