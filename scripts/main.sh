@@ -47,7 +47,15 @@ programs_secs=$(seconds_since "$t_built")
   echo
   echo "Chapter programs: $programs_secs s in all (options: ${*:-none}); build and setup before them: $(awk -v a="$t_start" -v b="$t_built" 'BEGIN { printf "%.1f", (b - a) / 1e9 }') s; $(nproc) cores."
 } > "$out/run_summary.md"
-printf '%s\n' "${values[@]}" "run.programs_seconds $programs_secs" "run.options ${*:-none}" \
+# What the tables cover, for the book's first page: a smaller run says so.
+scope="full run, at the sizes of the notes' tables"
+for a in "$@"; do
+  case $a in
+    --quick) scope="quick run (--quick), whose tables stop at smaller sizes than the notes' tables" ;;
+    --max-n | --max-n=*) scope="run limited by --max-n, whose tables stop at that size" ;;
+  esac
+done
+printf '%s\n' "${values[@]}" "run.programs_seconds $programs_secs" "run.options ${*:-none}" "run.scope $scope" \
   "run.cores $(nproc)" > "$out/values_run.txt"
 
 book="(not built: Doxygen or MathJax missing)"
