@@ -13,6 +13,8 @@
 #                                                 exit 77 when the book is not built
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
+# shellcheck source=SCRIPTDIR/headless.sh
+. "$here/headless.sh"
 if [ "${1:-}" = --editions ]; then
   [ $# -eq 2 ] || { echo "usage: axe_check.sh --editions BOOK_DIR" >&2; exit 2; }
   for e in student teacher; do
@@ -39,40 +41,25 @@ else
 fi
 [ ${#pages[@]} -gt 0 ] || { echo "axe_check: no book page in $dir" >&2; exit 2; }
 
-# A path as a JavaScript string literal (turned into a file:// URL by the harness).
-js_string() {
-  local s=$1
-  case $s in *$'\n'*|*$'\r'*) echo "axe_check: a path with a line break: '$s'" >&2; exit 2 ;; esac
-  s=${s//\\/\\\\}; s=${s//\"/\\\"}
-  printf '"%s"' "$s"
-}
 url='function (p) { return "file://" + p.split("/").map(encodeURIComponent).join("/"); }'
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 list=""
 for p in "${pages[@]}"; do
   [ -f "$dir/$p" ] || { echo "axe_check: no page '$p' in $dir" >&2; exit 2; }
-  list+="${list:+,}$(js_string "$dir/$p")"
+  list+="${list:+,}$(js_string axe_check "$dir/$p")"
 done
 cp "$here/axe_probe.js" "$work/axe_probe.js"
 {
   echo '<!DOCTYPE html><html lang="en"><head><meta charset="utf-8"><title>axe</title></head><body>'
   echo '<iframe id="axe-frame" title="page under test" style="border:0"></iframe><pre id="axe-result">pending</pre>'
   echo "<script>var u = $url;"
-  echo "window.AXE_CHECK = {pages: [$list].map(u), axe: u($(js_string "$axe")), width: 1280, timeoutMs: 90000};</script>"
+  echo "window.AXE_CHECK = {pages: [$list].map(u), axe: u($(js_string axe_check "$axe")), width: 1280, timeoutMs: 90000};</script>"
   echo '<script src="axe_probe.js"></script></body></html>'
 } > "$work/harness.html"
 
 budget=$(( ${#pages[@]} * 90000 + 10000 ))
-chromium --headless --no-sandbox --disable-gpu --disable-background-networking \
-  --disable-component-update --disable-sync --no-first-run --mute-audio \
-  --user-data-dir="$work/profile" --allow-file-access-from-files --window-size=1600,1000 \
-  --virtual-time-budget="$budget" --dump-dom "file://$work/harness.html" \
-  > "$work/dom.html" 2> "$work/chromium.log" || true
-result=$(awk '{ buf = buf $0 "\n" } END {
-                 i = index(buf, "<pre id=\"axe-result\">"); if (!i) exit
-                 buf = substr(buf, i + 21); j = index(buf, "</pre>"); printf "%s", substr(buf, 1, j - 1) }' \
-           "$work/dom.html" | sed -e 's/&lt;/</g' -e 's/&gt;/>/g' -e 's/&quot;/"/g' -e 's/&amp;/\&/g')
+result=$(headless_verdict "$work" "$budget" 1600,1000 axe-result)
 last=$(tail -n 1 <<< "$result")
 if [[ ! "$last" =~ ^AXE\ ([0-9]+)\ violations\ in\ ([0-9]+)\ pages ]]; then
   echo "axe_check: the browser gave no verdict (Chromium's log):" >&2

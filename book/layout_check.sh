@@ -9,6 +9,8 @@
 #   bash book/layout_check.sh [--widths 1024,1280] HTML_DIR [PAGE.html ...]
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
+# shellcheck source=SCRIPTDIR/headless.sh
+. "$here/headless.sh"
 widths=1024,1280
 if [ "${1:-}" = --widths ]; then
   [ $# -ge 2 ] || { echo "layout_check: --widths needs a value, e.g. 1024,1280" >&2; exit 2; }
@@ -28,20 +30,12 @@ else
 fi
 [ ${#pages[@]} -gt 0 ] || { echo "layout_check: no book page in $dir" >&2; exit 2; }
 
-# A path as a JavaScript string literal (the harness turns it into a file:// URL itself, so a
-# space, a quote or a non-ASCII letter in the path needs no shell quoting anywhere).
-js_string() {
-  local s=$1
-  case $s in *$'\n'*|*$'\r'*) echo "layout_check: a path with a line break: '$s'" >&2; exit 2 ;; esac
-  s=${s//\\/\\\\}; s=${s//\"/\\\"}
-  printf '"%s"' "$s"
-}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 list=""
 for p in "${pages[@]}"; do
   [ -f "$dir/$p" ] || { echo "layout_check: no page '$p' in $dir" >&2; exit 2; }
-  list+="${list:+,}$(js_string "$dir/$p")"
+  list+="${list:+,}$(js_string layout_check "$dir/$p")"
 done
 cp "$here/layout_probe.js" "$work/layout_probe.js"
 {
@@ -55,15 +49,7 @@ cp "$here/layout_probe.js" "$work/layout_probe.js"
 
 n=$(( ${#pages[@]} * $(tr ',' '\n' <<< "$widths" | wc -l) ))
 budget=$(( n * 60000 + 10000 ))
-chromium --headless --no-sandbox --disable-gpu --disable-background-networking \
-  --disable-component-update --disable-sync --no-first-run --mute-audio \
-  --user-data-dir="$work/profile" --allow-file-access-from-files --window-size=1600,1000 \
-  --virtual-time-budget="$budget" --dump-dom "file://$work/harness.html" \
-  > "$work/dom.html" 2> "$work/chromium.log" || true
-result=$(awk '{ buf = buf $0 "\n" } END {
-                 i = index(buf, "<pre id=\"layout-result\">"); if (!i) exit
-                 buf = substr(buf, i + 24); j = index(buf, "</pre>"); printf "%s", substr(buf, 1, j - 1) }' \
-           "$work/dom.html" | sed -e 's/&lt;/</g' -e 's/&gt;/>/g' -e 's/&quot;/"/g' -e 's/&amp;/\&/g')
+result=$(headless_verdict "$work" "$budget" 1600,1000 layout-result)
 last=$(tail -n 1 <<< "$result")
 if [[ ! "$last" =~ ^LAYOUT\ ([0-9]+)\ defects ]]; then
   echo "layout_check: the browser gave no verdict (Chromium's log: $work/chromium.log):" >&2

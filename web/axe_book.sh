@@ -9,6 +9,8 @@
 # Exit 0 iff none; 1 on a violation or no verdict; 2 on bad arguments; 77 (a skipped ctest
 # entry) when the directory holds no page with a live figure (the book was not built).
 set -euo pipefail
+# shellcheck source=SCRIPTDIR/../book/headless.sh
+. "$(cd "$(dirname "$0")/../book" && pwd)/headless.sh"
 [ $# -eq 2 ] || { echo "usage: axe_book.sh HTML_DIR AXE.js" >&2; exit 2; }
 dir=$(cd "$1" 2>/dev/null && pwd) || { echo "axe_book: no directory '$1'" >&2; exit 77; }
 axe=$(cd "$(dirname "$2")" && pwd)/$(basename "$2")
@@ -78,13 +80,7 @@ next(0);
 </script></body></html>
 EOF
 budget=$(( ${#pages[@]} * 120000 + 10000 ))
-chromium --headless --no-sandbox --disable-gpu --disable-background-networking \
-  --disable-component-update --disable-sync --no-first-run --mute-audio \
-  --user-data-dir="$work/profile" --allow-file-access-from-files --window-size=1300,1100 \
-  --virtual-time-budget="$budget" --dump-dom "file://$work/harness.html" \
-  > "$work/dom.html" 2> "$work/chromium.log" || true
-result=$(sed -n '/<pre id="result">/,/<\/pre>/p' "$work/dom.html" | sed 's/<[^>]*>//g' |
-         sed -e 's/&lt;/</g' -e 's/&gt;/>/g' -e 's/&quot;/"/g' -e 's/&amp;/\&/g')
+result=$(headless_verdict "$work" "$budget" 1300,1100 result)
 printf '%s\n' "$result"
 last=$(tail -n 1 <<< "$result")
 [[ "$last" =~ ^AXE\ ([0-9]+)\ violations ]] || { echo "axe_book: the browser gave no verdict" >&2; exit 1; }
