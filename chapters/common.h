@@ -527,12 +527,24 @@ class Values {
   }
   /// A number, printf-formatted (e.g. "%.1f").
   void num(const std::string& key, double v, const char* format) { set(key, fmt(format, v)); }
+  /// How a measured `last` compares with `first`, in three ways (a cost can fall as well as rise).
+  void trend(const std::string& key, double first, double last) {
+    set(key, last > 1.25 * first   ? "rises by more than a quarter"
+             : last < 0.75 * first ? "falls by more than a quarter"
+                                   : "stays within a quarter of its first value");
+  }
   /// One of two words, as the measured condition says.
   void verdict(const std::string& key, bool condition, const char* ifTrue, const char* ifFalse) {
     set(key, condition ? ifTrue : ifFalse);
   }
   /// Writes values_<program>.txt into the output directory.
   /// Nothing with --only: the values of the last full run stay as they are.
+  /// The value recorded under `key` (a test reads a verdict back with it).
+  const std::string& get(const std::string& key) const {
+    for (const auto& kv : kv_)
+      if (kv.first == key) return kv.second;
+    throw std::invalid_argument("no value under '" + key + "'");
+  }
   void write() const {
     if (!o_.everything()) return;
     std::string text;

@@ -370,3 +370,17 @@ TEST_CASE("chapter options a table's page form sets its ASCII mathematics and es
         std::string::npos);
   CHECK(t.csv() == "n_h\na & b\n");
 }
+
+TEST_CASE("chapter options a trend verdict follows the measured ratio in three ways") {
+  ch::Options o;
+  ch::Values v(o, "trend_test");
+  v.trend("up", 10.0, 12.6);
+  v.trend("flat_up", 10.0, 12.4);
+  v.trend("flat_down", 10.0, 7.6);
+  v.trend("down", 10.0, 7.4);
+  CHECK(v.get("up") == "rises by more than a quarter");
+  CHECK(v.get("flat_up") == "stays within a quarter of its first value");
+  CHECK(v.get("flat_down") == "stays within a quarter of its first value");
+  CHECK(v.get("down") == "falls by more than a quarter");
+  CHECK_THROWS_AS(v.get("missing"), std::invalid_argument);
+}

@@ -302,9 +302,7 @@ void table21(const ch::Options& o, ch::Values& v) {
     v.num("s234.ns_step_last", nsLast, "%.1f");
     v.num("s234.ns_step_ratio", nsLast / nsFirst, "%.1f");
     // Three ways, since the cost per face can fall as well as rise between the two sizes.
-    v.set("s234.ns_step_trend", nsLast > 1.25 * nsFirst  ? "rises by more than a quarter"
-                                : nsLast < 0.75 * nsFirst ? "falls by more than a quarter"
-                                                          : "stays within a quarter of its first value");
+    v.trend("s234.ns_step_trend", nsFirst, nsLast);
     v.verdict("s234.exp_time_comment", faster,
               "The time outgrows the step count because each step gets dearer, as the cost per face "
               "visited shows",

@@ -236,9 +236,7 @@ void table22(const ch::Options& o, const std::vector<std::size_t>& sizes,
     v.num("s235.t22_us_first", usFirst, "%.2f");
     v.num("s235.t22_us_last", usLast, "%.2f");
     v.num("s235.t22_us_ratio", usLast / usFirst, "%.2f");
-    v.set("s235.t22_us_trend", usLast > 1.25 * usFirst  ? "rises by more than a quarter"
-                               : usLast < 0.75 * usFirst ? "falls by more than a quarter"
-                                                         : "stays within a quarter of its first value");
+    v.trend("s235.t22_us_trend", usFirst, usLast);
   }
   tab.emit(o, "table2_2");
   ch::writeOut(o, "table2_2.dat", dat.str());
