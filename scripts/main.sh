@@ -49,10 +49,11 @@ programs_secs=$(seconds_since "$t_built")
 } > "$out/run_summary.md"
 # What the tables cover, for the book's first page: a smaller run says so.
 scope="full run, at the sizes of the notes' tables"
+bt='`'  # a code span in the page: Doxygen would set "--" as a dash
 for a in "$@"; do
   case $a in
-    --quick) scope="quick run (--quick), whose tables stop at smaller sizes than the notes' tables" ;;
-    --max-n | --max-n=*) scope="run limited by --max-n, whose tables stop at that size" ;;
+    --quick) scope="quick run (${bt}--quick${bt}), whose tables stop at smaller sizes than the notes' tables" ;;
+    --max-n | --max-n=*) scope="run limited by ${bt}--max-n${bt}, whose tables stop at that size" ;;
   esac
 done
 printf '%s\n' "${values[@]}" "run.programs_seconds $programs_secs" "run.options ${*:-none}" "run.scope $scope" \
