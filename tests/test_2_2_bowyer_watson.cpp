@@ -143,7 +143,9 @@ TEST_CASE("2.2.1 a size computed from the input suffices: super-triangles beyond
     std::mt19937 g(seed);
     std::uniform_int_distribution<int> c(0, 1 << 20);
     for (int i = 0; i < 10; ++i) p.insert(p.end(), {std::ldexp(c(g), -20), std::ldexp(c(g), -20)});
+    // BEGIN SOLUTION 2.2-2 (remove)
     p.insert(p.end(), {0, -0.5, 1, -0.5, 0.5, -0.5 + std::ldexp(1.0, -20)});  // flat hull triangle
+    // END SOLUTION 2.2-2
     sets.push_back(p);
   }
   for (const XY& p : sets) {
@@ -180,6 +182,7 @@ TEST_CASE("2.2.1 a size computed from the input suffices: super-triangles beyond
 }
 
 TEST_CASE("2.2.1 no super-triangle size is right a priori: for every factor the test builds a point set that defeats it") {
+  // Its body is the answer to exercise 2.2-2: the student's edition leaves it out.
   // BEGIN SOLUTION 2.2-2 (remove)
   for (double factor : {1.5, 10.0, 1e3, 1e6}) {
     // (0,0) (1,0) (1/2, d) is a triangle of DT(S) on the hull edge y = 0; its circumradius is
