@@ -218,9 +218,23 @@ void judgeHilbert(std::uint64_t seed) {
   }
 }
 
+}  // namespace
+
+// The other judges, by section (one translation unit: grade compiles and links one object).
+#include "judge_2_1.h"
+#include "judge_2_2.h"
+#include "judge_2_3.h"
+
+namespace {
+
 const std::map<std::string, std::function<void(std::uint64_t)>>& judges() {
   static const std::map<std::string, std::function<void(std::uint64_t)>> j = {
-      {"2.1-1", judgeKernel}, {"2.3.4-1", judgeAdjacencies}, {"2.3.5-5", judgeHilbert}};
+      {"2.1-1", judgeKernel},           {"2.1-2", judgeCheckCavity},      {"2.2-1", judgeBowyerWatson},
+      {"2.2-3", judgeHullEdges},        {"2.2.2-1", judgeOneEdgeRegion},  {"2.3.1-1", judgeOrientCanonical},
+      {"2.3.1-2", judgeExactBits},      {"2.3.1-3", judgeSegments},       {"2.3.2-1", judgeGridCounts},
+      {"2.3.2-2", judgeLowDegree},      {"2.3.3-1", judgeHalfEdge},       {"2.3.3-2", judgeVertexStar},
+      {"2.3.4-1", judgeAdjacencies},    {"2.3.4-2", judgeBackwardMean},   {"2.3.5-5", judgeHilbert},
+      {"2.3.6-1", judgeStuckRecovery}};
   return j;
 }
 

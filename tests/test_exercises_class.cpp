@@ -1,4 +1,4 @@
-/// \file test_exercises_class.cpp The teacher's path of the classroom (scripts/exercise.sh): a release holds no solution line of any exercise (string literals and mutant lines read piece by piece) and is refused inside the repository; a class of 30 workspaces of 2.3.4-1 (correct ones, planted bugs, an endless loop, a crash, an early exit, a lost END line, a compile error and every known cheat) is graded in one command, every row right, in a sandbox that leaves no file changed and no process behind; the cheats graded with the static checks off still fail; the exports follow their formats; prove answers are collected beside the teacher's sheet.
+/// \file test_exercises_class.cpp The teacher's path of the classroom (scripts/exercise.sh): a release holds no solution line of any exercise (string literals and mutant lines read piece by piece) and is refused inside the repository; a class of 30 workspaces of 2.3.4-1 (correct ones, planted bugs, an endless loop, a crash, an early exit, a lost END line, a compile error and every known cheat) is graded in one command, every row right, in a sandbox that leaves no file changed and no process behind; the cheats graded with the static checks off still fail; the exports follow their formats; prove answers are collected beside the teacher's sheet; a bug the doctest tests miss (2.2-3 dropping collinear hull points) fails by the judge alone.
 #include <doctest/doctest.h>
 
 #include <chrono>
@@ -750,5 +750,40 @@ TEST_CASE("exercises class grade reads operators as tokens checks the called fun
   CHECK(urows[1][1] == "PASS");
   CHECK(contains(urows[1][6], "UNSANDBOXED"));
   CHECK(contains(unsafe.err, "WITHOUT the sandbox"));
+  fs::remove_all(root);
+}
+
+TEST_CASE("exercises class grade fails a hull test that drops collinear points by the judge where the doctest passes") {
+  // 2.2-3 with its hull's collinear points popped: the doctest's random sets have none, so its
+  // report says pass; the judge's grids have them, and grade fails the row on the judge alone.
+  const std::string root = outsideTmp("class_hull");
+  freshDirectory(root);
+  const Run rel = exercise({"release", "2.2-3", root + "/release"});
+  REQUIRE(rel.status == 0);
+  const std::string teacher = dttest::readText(std::string(DT_SOURCE_DIR) + "/code/bowyer_watson.cpp");
+  const std::string solution = region(teacher, "2.2-3", 0);
+  const std::string released = dttest::readText(root + "/release/code/bowyer_watson.cpp");
+  const std::vector<std::pair<std::string, std::string>> cls = {
+      {"correct", solution},
+      {"collinear_dropped", replaced(solution, "Y(hull.back()), X(p), Y(p)) < 0)", "Y(hull.back()), X(p), Y(p)) <= 0)")}};
+  std::vector<std::string> args = {"grade", "2.2-3"};
+  for (const auto& s : cls) {
+    const std::string d = root + "/" + s.first;
+    fs::copy(root + "/release", d, fs::copy_options::recursive | fs::copy_options::copy_symlinks);
+    dttest::writeText(d + "/code/bowyer_watson.cpp", withRegion(released, "2.2-3", 0, s.second));
+    args.push_back(d);
+  }
+  const Run g = exercise(args, {{"DT_GRADE_NO_BUILD", "1"}, {"DT_GRADE_BUILD", buildDir()}});
+  INFO(g.out << g.err);
+  REQUIRE(g.status == 0);
+  const auto rows = tsv(g.out);
+  REQUIRE(rows.size() == 3);
+  REQUIRE(rows[1].size() == 8);
+  CHECK(rows[1][1] == "PASS");
+  CHECK(rows[1][4] == "match");
+  CHECK(rows[2][1] == "FAIL");
+  CHECK(rows[2][3] == "fail");
+  CHECK(rows[2][4] == "differ");
+  CHECK(contains(rows[2][5], "the judge printed \"t1 grid "));
   fs::remove_all(root);
 }
