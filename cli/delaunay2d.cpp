@@ -61,7 +61,7 @@ const char* kUsage =
     "                 'input' (file order: walks grow like sqrt(n), like n on sorted input);\n"
     "                 when a run turns quadratic (any order, either kernel), a warning on\n"
     "                 stderr says so once and what to try instead\n"
-    "  --kernel K     'fast' (default: code/fast_delaunay.h, index arrays, inlined filters,\n"
+    "  --kernel K     'fast' (default: code/fast/fast_delaunay.h, index arrays, inlined filters,\n"
     "                 its own Hilbert sort) or 'listings' (the corrected Listings 2.4-2.7);\n"
     "                 both give the exact DT(S); --method super always uses the listings\n"
     "  --threads N    at most N threads for the fast kernel with --order brio ('auto': the\n"

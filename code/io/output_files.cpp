@@ -1,4 +1,4 @@
-// The outputs of code/output_files.h: what a path is (classifyOutput, sameFile), temporaries
+// The outputs of code/io/output_files.h: what a path is (classifyOutput, sameFile), temporaries
 // beside their targets, the signal handlers that remove them, and the locked commit.
 #include "output_files.h"
 
