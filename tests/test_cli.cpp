@@ -986,7 +986,7 @@ int runScriptAsNobody(const std::string& dir, const std::string& name, const std
   dttest::writeText(dir + "/" + name + ".sh", script + "\n");
   ::chmod((dir + "/" + name + ".sh").c_str(), 0644);
   ch::ProcessIo io;
-  io.env = {{"DT_CLI_BIN", DT_CLI}};
+  io.env = {{"DT_CLI_BIN", DT_CLI}, {"DT_CLI_HOOKED_BIN", DT_CLI_HOOKED}};
   const int rc = ch::runProgram({"setpriv", "--reuid=65534", "--regid=65534", "--clear-groups", "sh",
                                  dir + "/" + name + ".sh"}, io);
   return rc >= 0 && rc < 127 ? rc : -1;

@@ -469,7 +469,13 @@ struct OutputFiles::File {
 };
 
 OutputFiles::OutputFiles(const OutputPlan& plan) {
-  for (const OutputTarget& t : plan.targets) open(t);
+  // A constructor that throws runs no destructor: the temporaries made so far go here.
+  try {
+    for (const OutputTarget& t : plan.targets) open(t);
+  } catch (...) {
+    removeAll();
+    throw;
+  }
 }
 
 Writer& OutputFiles::writer(std::size_t i) { return *files_.at(i)->w; }
