@@ -240,7 +240,7 @@ TEST_CASE("cli an output that is the input file or another output is refused") {
   CHECK(dttest::readText(d + "/pts.ele") == kSquare);
 }
 
-TEST_CASE("outputs a plan classifies each path once and names the option of a conflict") {
+TEST_CASE("cli outputs are planned once and a refusal names the option that asked") {
   const std::string d = freshDir("plan"), in = d + "/in.xy";
   dttest::writeText(in, kSquare);
   dttest::writeText(d + "/old.svg", "OLD\n");
