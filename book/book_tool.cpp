@@ -243,16 +243,27 @@ int prepare(const std::string& bookDir, const std::string& valuesDir, const std:
   return 0;
 }
 
+// The folders of sources an edition copies: code/, each room of code/ (code/rooms.txt) and tests/.
+std::vector<std::string> sourceDirs(const std::string& srcRoot) {
+  std::vector<std::string> dirs{"code"};
+  std::istringstream rooms(booktool::readFile(srcRoot + "/code/rooms.txt"));
+  std::string l;
+  while (std::getline(rooms, l))
+    if (!l.empty() && l.find_first_not_of("abcdefghijklmnopqrstuvwxyz_") == std::string::npos) dirs.push_back("code/" + l);
+  dirs.push_back("tests");
+  return dirs;
+}
+
 // The sources as an edition shows them (see booktool::editionCode).
 int sources(const std::string& srcRoot, const std::string& outRoot, booktool::Edition edition) {
   mkdir(outRoot.c_str(), 0755);
   int n = 0;
-  for (const char* dir : {"code", "tests"}) {
+  for (const std::string& dir : sourceDirs(srcRoot)) {
     const std::string from = srcRoot + "/" + dir, to = outRoot + "/" + dir;
     mkdir(to.c_str(), 0755);
     for (const char* ext : {".h", ".cpp"})
       for (const std::string& f : listDir(from, ext)) {
-        const std::string rel = std::string(dir) + "/" + f;
+        const std::string rel = dir + "/" + f;
         writeFile(to + "/" + f, booktool::editionCode(booktool::readFile(from + "/" + f), rel, edition));
         ++n;
       }
@@ -272,10 +283,10 @@ std::string editionText(const std::string& htmlDir) {
 
 int checkEditions(const std::string& srcRoot, const std::string& studentDir, const std::string& teacherDir) {
   std::map<std::string, std::string> code, pages;
-  for (const char* dir : {"code", "tests"})
+  for (const std::string& dir : sourceDirs(srcRoot))
     for (const char* ext : {".h", ".cpp"})
       for (const std::string& f : listDir(srcRoot + "/" + dir, ext))
-        code[std::string(dir) + "/" + f] = booktool::readFile(srcRoot + "/" + dir + "/" + f);
+        code[dir + "/" + f] = booktool::readFile(srcRoot + "/" + dir + "/" + f);
   for (const std::string& f : listDir(srcRoot + "/book", ".md"))
     pages["book/" + f] = booktool::readFile(srcRoot + "/book/" + f);
   std::vector<std::string> ids;

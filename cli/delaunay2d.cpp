@@ -29,9 +29,12 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "delaunay2d.h"
+
 #include "delaunay.h"
 #include "fast_parallel.h"
 #include "io.h"
+#include "output_files.h"
 #include "triangulate.h"
 
 namespace {
@@ -61,7 +64,7 @@ const char* kUsage =
     "                 'input' (file order: walks grow like sqrt(n), like n on sorted input);\n"
     "                 when a run turns quadratic (any order, either kernel), a warning on\n"
     "                 stderr says so once and what to try instead\n"
-    "  --kernel K     'fast' (default: code/fast_delaunay.h, index arrays, inlined filters,\n"
+    "  --kernel K     'fast' (default: code/fast/fast_delaunay.h, index arrays, inlined filters,\n"
     "                 its own Hilbert sort) or 'listings' (the corrected Listings 2.4-2.7);\n"
     "                 both give the exact DT(S); --method super always uses the listings\n"
     "  --threads N    at most N threads for the fast kernel with --order brio ('auto': the\n"
@@ -349,7 +352,7 @@ Options parse(int argc, char** argv) {
                "mesh writes " + dir + "mesh.ele)");
   }
   // "-o /dev/null" discards the .ele rather than create /dev/null.ele; a pipe or a device is
-  // written into like "-o -" (outputsOf reports a path that cannot be classified).
+  // written into like "-o -" (dt::planOutputs reports a path that cannot be classified).
   try {
     o.eleIntoOut = o.out == "-" || dt::classifyOutput(o.out).kind == dt::OutputTarget::Stream;
   } catch (const std::exception&) {
@@ -357,55 +360,27 @@ Options parse(int argc, char** argv) {
   return o;
 }
 
-// The outputs as (option, path). Before anything is read, refuses (exit 2) an output that is
-// a directory, a socket or a block device (dt::classifyOutput), two outputs on '-', one that is
-// the input file, and two that are the same file (dt::sameFile: device and inode, through
-// symlinks). Sets opt.statsOnStderr when an output is standard output.
-std::vector<std::pair<std::string, std::string>> outputsOf(Options& opt, const bool closedAtStart[3]) {
-  std::vector<std::pair<std::string, std::string>> out = {
-      {"-o " + opt.out, opt.eleIntoOut ? opt.out : opt.out + ".ele"}};
-  if (!opt.svg.empty()) out.emplace_back("--svg", opt.svg);
-  if (!opt.msh.empty()) out.emplace_back("--msh", opt.msh);
-  const std::string input = opt.input == "-" ? "/dev/stdin" : opt.input;
-  for (std::size_t i = 0; i < out.size(); ++i) {
-    const std::string option = out[i].first.substr(0, out[i].first.find(' '));
-    // Standard output or error closed by the caller (held by /dev/null since): not a sink.
-    const std::string& p = out[i].second;
-    for (int fd : {1, 2}) {
-      const std::string n = std::to_string(fd);
-      if (closedAtStart[fd] && ((fd == 1 && (p == "-" || p == "/dev/stdout")) ||
-                                (fd == 2 && p == "/dev/stderr") || p == "/dev/fd/" + n ||
-                                p == "/proc/self/fd/" + n)) {
-        errorLine(option + " " + p + ": cannot write to descriptor " + n + ": " +
-                  std::strerror(EBADF));
-        std::exit(1);
-      }
-    }
-    try {
-      dt::classifyOutput(out[i].second);
-    } catch (const dt::OutputRefused& e) {
-      errorLine(option + " " + e.what());
-      std::exit(2);
-    } catch (const std::exception& e) {
-      errorLine(option + " " + e.what());
-      std::exit(1);
-    }
-    if (out[i].second == "-")
-      for (std::size_t j = 0; j < i; ++j)
-        if (out[j].second == "-")
-          usageError(out[j].first + " and " + out[i].first + " both write to standard output");
-    if (dt::sameFile(out[i].second, "-")) opt.statsOnStderr = true;
-    if (dt::sameFile(out[i].second, input)) {
-      errorLine(out[i].first + ": " + out[i].second + " is the input file; refusing to overwrite it");
-      std::exit(2);
-    }
-    for (std::size_t j = 0; j < i; ++j)
-      if (dt::sameFile(out[i].second, out[j].second)) {
-        errorLine(out[j].first + " and " + out[i].first + " name the same file " + out[i].second);
-        std::exit(2);
-      }
-  }
+// The outputs asked for, in the order they are written: the .ele first.
+std::vector<dt::OutputRequest> outputRequests(const Options& opt) {
+  std::vector<dt::OutputRequest> out = {{"-o " + opt.out, opt.eleIntoOut ? opt.out : opt.out + ".ele"}};
+  if (!opt.svg.empty()) out.push_back({"--svg", opt.svg});
+  if (!opt.msh.empty()) out.push_back({"--msh", opt.msh});
   return out;
+}
+
+// Why an output cannot be written because it names standard output or error that the caller
+// closed (held by /dev/null since: not a sink); empty if it can.
+std::string closedDescriptor(const dt::OutputRequest& r, const bool closedAtStart[3]) {
+  const std::string& p = r.path;
+  for (int fd : {1, 2}) {
+    const std::string n = std::to_string(fd);
+    if (closedAtStart[fd] && ((fd == 1 && (p == "-" || p == "/dev/stdout")) ||
+                              (fd == 2 && p == "/dev/stderr") || p == "/dev/fd/" + n ||
+                              p == "/proc/self/fd/" + n))
+      return r.option.substr(0, r.option.find(' ')) + " " + p + ": cannot write to descriptor " +
+             n + ": " + std::strerror(EBADF);
+  }
+  return "";
 }
 
 // The mesh with its vertices in input order and without the merged duplicates (the .msh numbers
@@ -433,20 +408,17 @@ dt::PlainMesh inputOrder(const std::vector<double>& xy, const std::vector<dt::Tr
   return m;
 }
 
-// Tests only (DELAUNAY2D_TEST_COMMIT_PAUSE_MS): a pause inside the commit after each rename
-// ("committing N"), and one after the commit ("committed", renamed = 0), announced on stderr,
-// so that a test can send a signal or start a second run right then.
-void commitPause(std::size_t renamed) {
-  static const long ms = std::atol(std::getenv("DELAUNAY2D_TEST_COMMIT_PAUSE_MS"));
+// A pause inside the commit after each rename ("committing N"), and one after the commit
+// ("committed", renamed = 0), announced on stderr, so that a test can send a signal or start a
+// second run right then.
+void commitPause(std::size_t renamed, long ms) {
   const std::string line = renamed == 0 ? std::string("delaunay2d: committed\n")
                                         : "delaunay2d: committing " + std::to_string(renamed) + "\n";
   (void)!::write(STDERR_FILENO, line.data(), line.size());
   ::usleep(useconds_t(ms * 1000));
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
+int delaunay2d(int argc, char** argv, const dt::cli::TestHooks& hooks) {
   // A standard descriptor closed by the caller (>&-) is held by /dev/null, so that no output
   // or temporary opened later takes its number and receives messages; --stats meant for a
   // closed one is reported as lost.
@@ -469,7 +441,28 @@ int main(int argc, char** argv) {
               std::to_string(usable) + ", the CPUs this process may run on");
     parsed.threads = usable;
   }
-  const std::vector<std::pair<std::string, std::string>> outputs = outputsOf(parsed, closedAtStart);
+  // Every output is classified once, before anything is read; the plan is what is written.
+  const std::vector<dt::OutputRequest> requests = outputRequests(parsed);
+  for (const dt::OutputRequest& r : requests) {
+    const std::string why = closedDescriptor(r, closedAtStart);
+    if (!why.empty()) {
+      errorLine(why);
+      return 1;
+    }
+  }
+  dt::OutputPlan plan;
+  try {
+    plan = dt::planOutputs(requests, parsed.input);
+  } catch (const dt::OutputConflict& e) {
+    usageError(e.what());
+  } catch (const dt::OutputRefused& e) {
+    errorLine(e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    errorLine(e.what());
+    return 1;
+  }
+  if (plan.toStandardOutput) parsed.statsOnStderr = true;
   const Options& opt = parsed;
   Progress progress(opt.progress);
   // Notes on merged duplicates: printed after the run, or after the error line if it fails.
@@ -517,32 +510,31 @@ int main(int argc, char** argv) {
       notes += "delaunay2d: " + oneLine(ps.path) + ": " + std::to_string(nDup - kNamedDuplicates) +
                " more duplicate points merged (" + std::to_string(nDup) + " in all)\n";
     const std::vector<double>& xy = r.xy;
-    progress.phase("writing " + oneLine(outputs[0].second));
+    progress.phase("writing " + oneLine(plan.requests[0].path));
     // All or nothing (dt::OutputFiles): every file is written beside its target, then all are
     // renamed into place; on any failure the old files stay as they were.
-    dt::OutputFiles files;
-    std::vector<dt::Writer*> w;
-    for (const auto& o : outputs) w.push_back(&files.open(o.second));
-    dt::writeEle(*w[0], tri, r.input, ps.firstIndex);
+    dt::OutputFiles files(plan);
+    dt::writeEle(files.writer(0), tri, r.input, ps.firstIndex);
     std::size_t next = 1;
-    if (!opt.svg.empty()) dt::writeSvg(*w[next++], xy, tri);
+    if (!opt.svg.empty()) dt::writeSvg(files.writer(next++), xy, tri);
     if (!opt.msh.empty()) {
       const dt::PlainMesh m = inputOrder(xy, tri, r.input, r.used);
-      dt::writeMsh(*w[next++], m.xy, m.tri);
+      dt::writeMsh(files.writer(next++), m.xy, m.tri);
     }
-    if (const char* hold = std::getenv("DELAUNAY2D_TEST_HOLD_OUTPUTS")) {
-      // Tests only: the outputs are written but not in place; a signal now must remove them.
-      for (dt::Writer* x : w) x->flush();
+    if (hooks.holdOutputsSeconds >= 0) {
+      // The outputs are written but not in place; a signal now must remove them.
+      for (std::size_t i = 0; i < plan.targets.size(); ++i) files.writer(i).flush();
       std::fprintf(stderr, "delaunay2d: holding\n");
       std::fflush(stderr);
-      ::sleep(unsigned(std::atoi(hold)));
+      ::sleep(unsigned(hooks.holdOutputsSeconds));
     }
-    if (std::getenv("DELAUNAY2D_TEST_COMMIT_PAUSE_MS") != nullptr)
-      dt::OutputFiles::setCommitHook(commitPause);
+    dt::OutputHooks commitHooks;
+    if (hooks.commitPauseMs >= 0)
+      commitHooks.afterRename = [&](std::size_t renamed) { commitPause(renamed, hooks.commitPauseMs); };
     // Once the first output is renamed the run has succeeded: a signal from then on is kept
     // blocked (and dropped at exit), so the exit status and --stats still say so.
-    files.commit(dt::OutputFiles::AfterCommit::KeepSignalsBlocked);
-    if (std::getenv("DELAUNAY2D_TEST_COMMIT_PAUSE_MS") != nullptr) commitPause(0);
+    files.commit(dt::OutputFiles::AfterCommit::KeepSignalsBlocked, commitHooks);
+    if (hooks.commitPauseMs >= 0) commitPause(0, hooks.commitPauseMs);
     // The outputs are final: a reader that has gone (stdout or stderr a closed pipe) must not
     // turn that into a death by SIGPIPE. Lost notes leave the status 0; lost --stats do not.
     std::signal(SIGPIPE, SIG_IGN);
@@ -594,3 +586,7 @@ int main(int argc, char** argv) {
   std::cerr << notes;
   return status;
 }
+
+}  // namespace
+
+int dt::cli::run(int argc, char** argv, const TestHooks& hooks) { return delaunay2d(argc, argv, hooks); }

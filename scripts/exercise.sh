@@ -807,7 +807,8 @@ grade_prepare() {
   GRADE_BUILD="$build"
   GRADE_CXX="$(sed -n 's/^CMAKE_CXX_COMPILER:[A-Z]*=//p' "$build/CMakeCache.txt")"
   mkdir -p "$work/inc" "$work/judge"
-  cp "$HERE"/code/*.h "$work/inc/"
+  # Includes are bare names: the headers of every room of code/ side by side.
+  cp "$HERE"/code/*.h "$HERE"/code/*/*.h "$work/inc/"
   chmod 755 "$work" "$work/inc" "$work/judge"
   local defines flags
   mapfile -t defines < <(flags_of "$build" CXX_DEFINES)
@@ -856,7 +857,7 @@ grade_prepare() {
   "$work/judge_ref" --list | grep -qxF -- "$id" ||
     die "exercise $id has no judge in exercises/judge.cpp: grading it would trust the student's process"
   GRADE_FILES="$(region_files "$id" "$HERE" | grep -E '^code/.*\.cpp$' || true)"
-  [ -n "$GRADE_FILES" ] || die "exercise $id has no solution region in code/*.cpp"
+  [ -n "$GRADE_FILES" ] || die "exercise $id has no solution region in a .cpp of code/"
   for f in $GRADE_FILES; do
     o="$(basename "$f" .cpp).o"
     strip_file "$id" "$HERE/$f" >"$work/stub_$(basename "$f")"
@@ -1231,8 +1232,8 @@ statement() {
 # FUNCTION in the first header of code/ that declares it.
 signature() {
   local h
-  for h in "$HERE"/code/*.h; do
-    awk -v fn="$1" -v file="code/$(basename "$h")" '
+  for h in "$HERE"/code/*.h "$HERE"/code/*/*.h; do
+    awk -v fn="$1" -v file="${h#"$HERE"/}" '
       /^[ \t]*\/\/\// { doc = doc $0 "\n"; next }
       !decl && $0 ~ ("(^|[ *&:])" fn "\\(") && $0 !~ /^[ \t]*\/\// { decl = 1 }
       decl { text = text $0 "\n"; if (index($0, ";") || index($0, "{")) { printf "%s\n%s%s", file, doc, text; exit 1 } next }
@@ -1311,7 +1312,7 @@ cmd_handout() {
                "(keep those lines: the grading cuts your code out between them)."
           for fn in $(field "$id" functions); do
             local sig; sig="$(signature "$fn" || true)"
-            [ -n "$sig" ] || die "exercise $id: no declaration of $fn in code/*.h"
+            [ -n "$sig" ] || die "exercise $id: no declaration of $fn in a header of code/"
             echo
             echo "**Signature and contract** (\`$(head -n 1 <<<"$sig")\`):"
             echo
@@ -1366,21 +1367,24 @@ cmd_selftest() {
   done
   work="$(mktemp -d)"
   trap 'rm -rf "$work"' RETURN
+  # The library's headers are found by bare name in code/ and each of its rooms.
+  local code_inc=() d
+  for d in "$HERE"/code "$HERE"/code/*/; do code_inc+=(-I"${d%/}"); done
   # The judges of grade (exercises/judge.cpp) and the library's output for each.
-  g++ -std=c++17 -O1 -ffp-contract=off -I"$HERE/code" -c "$HERE/exercises/judge.cpp" -o "$work/judge.o" &&
+  g++ -std=c++17 -O1 -ffp-contract=off "${code_inc[@]}" -c "$HERE/exercises/judge.cpp" -o "$work/judge.o" &&
     g++ -o "$work/judge_ref" "$work/judge.o" "$build/libdt.a" -lmpfr -lgmp -pthread ||
     die "exercises/judge.cpp does not compile or link with $build/libdt.a"
   local judged; judged="$("$work/judge_ref" --list)"
   for id in $sel; do
     local files; files="$(region_files "$id" "$HERE" | grep '^code/.*\.cpp$' || true)"
-    if [ -z "$files" ]; then echo "FAIL $id: no solution region in code/*.cpp"; fail=1; continue; fi
+    if [ -z "$files" ]; then echo "FAIL $id: no solution region in a .cpp of code/"; fail=1; continue; fi
     for variant in stub restored; do
       local o_list=() ok=1
       for f in $files; do
         o="$work/$(basename "$f" .cpp).$variant.o"
         if [ $variant = stub ]; then strip_file "$id" "$HERE/$f" >"$work/$(basename "$f")"
         else cp "$HERE/$f" "$work/$(basename "$f")"; fi
-        if ! g++ -std=c++17 -O1 -ffp-contract=off -I"$HERE/code" -c "$work/$(basename "$f")" -o "$o" \
+        if ! g++ -std=c++17 -O1 -ffp-contract=off "${code_inc[@]}" -c "$work/$(basename "$f")" -o "$o" \
              2>"$work/cc.log"; then
           echo "FAIL $id: the $variant copy of $f does not compile:"; head -n 20 "$work/cc.log"; ok=0
         fi
@@ -1439,7 +1443,7 @@ cmd_lint() {
       region_files "$id" "$HERE" | grep -q '^code/' || { echo "$id: no solution region in code/"; fail=1; }
       [ -n "$(field "$id" functions)" ] || { echo "$id: no 'functions:' (the handout quotes their contract)"; fail=1; }
       for fn in $(field "$id" functions); do
-        signature "$fn" >/dev/null || { echo "$id: no declaration of $fn in code/*.h"; fail=1; }
+        signature "$fn" >/dev/null || { echo "$id: no declaration of $fn in a header of code/"; fail=1; }
       done
     fi
     grep -q "BEGIN SOLUTION $id " "$HERE/book/solutions.md" || { echo "$id: no entry in book/solutions.md"; fail=1; }

@@ -100,7 +100,7 @@ if [ $mode = selftest ]; then
     { echo "mutants self-test: a comment-only change was not reported SURVIVED"; ok=0; }
   grep -Eq '^KILLED    selftest-hang .*timed out after [0-9]+ s \(' "$log" ||
     { echo "mutants self-test: the endless loop was not KILLED as a timeout"; ok=0; }
-  grep -q '^SURVIVED  selftest-unreached .*no test file of the suite reaches code/writers.cpp' "$log" ||
+  grep -q '^SURVIVED  selftest-unreached .*no test file of the suite reaches code/io/writers.cpp' "$log" ||
     { echo "mutants self-test: a file no test reaches was not skipped"; ok=0; }
   grep -q '^INVALID   selftest-stale' "$log" || { echo "mutants self-test: the stale mutant was not INVALID"; ok=0; }
   [ "$status" = 1 ] || { echo "mutants self-test: exit status $status, not 1"; ok=0; }
@@ -221,18 +221,20 @@ cmake -S "$src" -B "$build" -DCMAKE_BUILD_TYPE=Release ${MUTANTS_CMAKE_ARGS:-} >
   { cat "$work/configure.log"; exit 2; }
 # ---- which test files can reach a file --------------------------------------------------------
 # Edges of the include graph, read once: a file leads to the repository files it includes with
-# "..." (looked up beside it, then in tests/ and code/), and a header to the code/ files that
+# "..." (looked up beside it, then in tests/, code/ and each room of code/), and a header to the code/ files that
 # implement it (include it first). reached_by[F] lists the files with an edge to F.
 declare -A reached_by=()
 starts_programs=""  # test files that run programs: they reach every file
-for f in "$src"/code/*.h "$src"/code/*.cpp "$src"/tests/*.h "$src"/tests/*.cpp "$src"/tests/fuzz/*.h \
+code_dirs=(code)
+for d in "$src"/code/*/; do code_dirs+=("code/$(basename "$d")"); done
+for f in "$src"/code/*.h "$src"/code/*.cpp "$src"/code/*/*.h "$src"/code/*/*.cpp "$src"/tests/*.h "$src"/tests/*.cpp "$src"/tests/fuzz/*.h \
          "$src"/book/*.h "$src"/chapters/*.h; do
   [ -f "$f" ] || continue
   rel=${f#"$src"/}
   dir=$(dirname "$rel")
   first=1
   while IFS= read -r inc; do
-    for cand in "$dir/$inc" "tests/$inc" "code/$inc"; do
+    for cand in "$dir/$inc" "tests/$inc" "${code_dirs[@]/%//$inc}"; do
       if [ -f "$src/$cand" ]; then
         cand=$(realpath -m --relative-to="$src" "$src/$cand")
         reached_by[$cand]+=" $rel"

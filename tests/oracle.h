@@ -1,5 +1,5 @@
 // An exact oracle for the predicates of section 2.3.1 that shares no code with the predicate
-// core (code/predicates_inline.h, code/predicates.cpp): GMP rationals, the determinants as the
+// core (code/predicates/predicates_inline.h, code/predicates/predicates.cpp): GMP rationals, the determinants as the
 // notes write them. Every finite double is a rational, and mpq_set_d converts it exactly, so
 // the sign below is the true sign for any input, subnormals and 2^1000 included.
 //

@@ -7,7 +7,7 @@
 //  - Listing 2.7 reads bnd[i].V[0] and bnd[i].V[1], members Listing 2.2's Edge does not have:
 //    the only members it has, vmin and vmax, are used instead;
 //  - the three functions the text assumes but never defines (Face::inCircle, Face::centroid,
-//    orientationTest) are given the exact predicates of code/predicates.h, as the text asks
+//    orientationTest) are given the exact predicates of code/predicates/predicates.h, as the text asks
 //    ("it assumes that a robust orientation test is available").
 // Nothing else is corrected: the faults the errata page lists stay, on purpose.
 // The project's corrected code is in code/ (mesh.h, adjacency.cpp, cavity.cpp, search.cpp,

@@ -1,7 +1,7 @@
-// Which stage of the predicate core (code/predicates_inline.h) decided each call: a tally that
+// Which stage of the predicate core (code/predicates/predicates_inline.h) decided each call: a tally that
 // the exactness tests print and check, so that an agreement with the oracle says something
 // about every stage, not just the filter. It reads the one record of stages
-// (code/predicate_stages.h): the enum in run order, its names, kStageCount. A stage number
+// (code/predicates/predicate_stages.h): the enum in run order, its names, kStageCount. A stage number
 // outside the enum is counted apart, and the tests fail on it.
 #pragma once
 

@@ -24,7 +24,7 @@ namespace dttest {
 
 using dt::XY;  // x0 y0 x1 y1 ...
 
-// The point families live in code/generators.h; these names stay for the tests that still
+// The point families live in code/orders/generators.h; these names stay for the tests that still
 // spell them dttest:: (degenerate, bad-input, progress, fast-kernel and Hilbert tests).
 using dt::circlePoints;
 using dt::gridPoints;

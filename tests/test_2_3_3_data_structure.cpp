@@ -96,7 +96,7 @@ TEST_CASE("2.3.3 in 3D a facet has 1 or 2 tetrahedra but the tetrahedra around a
   // The notes: the face-based structure "can be extended in 3D", the edge-based ones cannot.
   // The errata corrects the second half: an edge-based record extends too, but around a 3D
   // edge it must hold a cycle of tetrahedra instead of two faces. Both halves on the library's
-  // Kuhn mesh (code/mesh3d.h) of a 4 x 4 x 4 grid of cubes: every facet has 1 or 2
+  // Kuhn mesh (code/checks/mesh3d.h) of a 4 x 4 x 4 grid of cubes: every facet has 1 or 2
   // tetrahedra (4 vertices + 4 neighbours per tetrahedron, a fixed record), every edge's
   // tetrahedra form one cycle (inside) or one path (on the boundary), of several lengths.
   const int k = 4;

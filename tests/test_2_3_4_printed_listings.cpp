@@ -159,7 +159,7 @@ TEST_CASE("2.3.4 the printed walk never ends when its line passes through a vert
 }
 
 TEST_CASE("2.3.4 the printed HilbertCoord (Listing 2.8) gives the corrected digits on finite input") {
-  // Listing 2.8 itself works as printed on finite coordinates: same digits as code/hilbert.cpp,
+  // Listing 2.8 itself works as printed on finite coordinates: same digits as code/orders/hilbert.cpp,
   // ties on the dividing lines included (both send them to the lower quadrant).
   const dt::XY p = dt::uniformPoints(2000, 11);
   const int d = 12;

@@ -151,7 +151,7 @@ TEST_CASE("2.3 Algorithm 1 with precomputed circumcircles is still quadratic") {
     std::vector<long> ids(xy.size() / 2);
     for (std::size_t i = 0; i < ids.size(); ++i) ids[i] = long(i);
     CHECK(dt::canonicalTriangles(ids, pre) == dt::canonicalTriangles(ids, exact));
-    // The library's Algorithm 1 (code/bowyer_watson.cpp) counts its own incircle calls: the
+    // The library's Algorithm 1 (code/listings/bowyer_watson.cpp) counts its own incircle calls: the
     // same n(n+1), whatever a single test costs (2 + 2k triangles at step k, each tested).
     const dt::BowyerWatsonResult bw = dt::bowyerWatson(p);
     CHECK(bw.incircleTests == n * (n + 1));

@@ -39,6 +39,15 @@ std::vector<fs::path> filesIn(const fs::path& dir, const std::string& ext) {
   return out;
 }
 
+// The library's folders by repository path: code/ and its rooms (code/<room>/).
+std::vector<std::string> codeDirs() {
+  std::vector<std::string> out{"code"};
+  for (const auto& e : fs::directory_iterator(kRoot / "code"))
+    if (e.is_directory()) out.push_back("code/" + e.path().filename().string());
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
 struct Line {
   std::string file;  // book/<name>.md
   int number;        // 1-based
@@ -143,8 +152,9 @@ std::set<std::string> bookLabels() {
 const std::string& codeText() {
   static const std::string text = [] {
     std::string t;
-    for (const char* ext : {".h", ".cpp"})
-      for (const fs::path& p : filesIn(kRoot / "code", ext)) t += readAll(p);
+    for (const std::string& dir : codeDirs())
+      for (const char* ext : {".h", ".cpp"})
+        for (const fs::path& p : filesIn(kRoot / dir, ext)) t += readAll(p);
     return t;
   }();
   return text;
@@ -229,7 +239,8 @@ TEST_CASE("book every \\ref resolves to a page or an anchor or a file or a symbo
     const std::string target = m[1];
     bool ok = labels.count(target) > 0;
     if (!ok && target.find('.') != std::string::npos) {  // a file: tests/x.cpp or code/x.h
-      ok = fs::exists(kRoot / "tests" / target) || fs::exists(kRoot / "code" / target);
+      ok = fs::exists(kRoot / "tests" / target);
+      for (const std::string& dir : codeDirs()) ok = ok || fs::exists(kRoot / dir / target);
       // A test file's page exists only if the file documents itself with \file.
       if (ok && fs::exists(kRoot / "tests" / target))
         CHECK_MESSAGE(readAll(kRoot / "tests" / target).find("\\file") != std::string::npos,
@@ -365,7 +376,7 @@ TEST_CASE("book the rendered check finds every kind of raw markup a reader saw")
       {"escaped bars in a table (2.3.4)", "<table class=\"markdownTable\"><tr><td>a cavity of size \\|C\\| gives</td></tr></table>"},
       {"subscript in a caption (Fig. 2.1)", "<div class=\"caption\">the cavity C(DT_n, p_{n+1})</div>"},
       {"unrendered formula", "<p>the point \\f$p\\f$ here</p>"},
-      {"unprocessed snippet", "<p>\\snippet code/mesh.cpp inCircle</p>"},
+      {"unprocessed snippet", "<p>\\snippet code/listings/mesh.cpp inCircle</p>"},
       {"unsubstituted value", "<p>N_search is @{s234.nsearch_ours}.</p>"},
       {"entity escaped twice (first claims index)", "<td>eq. (2.1): DT&amp;#95;n</td>"}};
   for (const auto& [what, body] : broken) {
@@ -492,9 +503,11 @@ namespace {
 
 // Every source file of code/ and tests/ and every page of book/, by repository path.
 void readSources(std::map<std::string, std::string>& code, std::map<std::string, std::string>& pages) {
-  for (const char* dir : {"code", "tests"})
+  std::vector<std::string> dirs = codeDirs();
+  dirs.push_back("tests");
+  for (const std::string& dir : dirs)
     for (const char* ext : {".h", ".cpp"})
-      for (const fs::path& p : filesIn(kRoot / dir, ext)) code[std::string(dir) + "/" + p.filename().string()] = readAll(p);
+      for (const fs::path& p : filesIn(kRoot / dir, ext)) code[dir + "/" + p.filename().string()] = readAll(p);
   for (const fs::path& p : filesIn(kRoot / "book", ".md")) pages["book/" + p.filename().string()] = readAll(p);
 }
 
@@ -566,7 +579,7 @@ TEST_CASE("book the student edition shows no line or value of any answer and the
   std::map<std::string, std::string> code, pages;
   readSources(code, pages);
   REQUIRE(pages.count("book/sec2_2.md"));
-  REQUIRE(code.count("code/star.cpp"));
+  REQUIRE(code.count("code/listings/star.cpp"));
   const std::vector<std::string> ok = editionDefects(code, pages);
   for (const std::string& d : ok) CHECK_MESSAGE(false, d);
   // Every exercise has an answer key the check can look for.
@@ -595,7 +608,7 @@ TEST_CASE("book the student edition shows no line or value of any answer and the
   }
   SUBCASE("a code region left unmarked is found") {
     auto bad = code;
-    bad["code/star.cpp"] = unmark(bad["code/star.cpp"], "2.1-1", false);
+    bad["code/listings/star.cpp"] = unmark(bad["code/listings/star.cpp"], "2.1-1", false);
     CHECK(mentions(editionDefects(bad, pages), "2.1-1: the student edition shows the answer's snippet"));
   }
   SUBCASE("an exercise whose every block is unmarked is found") {
@@ -738,7 +751,7 @@ TEST_CASE("book the edition check finds each answer a student once read in a tes
   }
   SUBCASE("2.3.5-1's claim in the comment of the Hilbert table") {
     auto bad = code;
-    bad["code/hilbert.cpp"] = unmark(bad["code/hilbert.cpp"], "2.3.5-1", false);
+    bad["code/orders/hilbert.cpp"] = unmark(bad["code/orders/hilbert.cpp"], "2.3.5-1", false);
     CHECK(mentions(editionDefects(bad, pages), "2.3.5-1: the student edition shows"));
   }
   SUBCASE("2.3.2-1's hull count typed in the prose of 2.3.2") {

@@ -24,6 +24,7 @@
 
 #include "support.h"
 #include "fast_parallel.h"
+#include "output_files.h"
 #include "parallel_for.h"
 // The chapter programs' plumbing (the figure check); its default output directory is unused.
 #ifndef DT_OUTPUT_DIR
@@ -239,22 +240,67 @@ TEST_CASE("cli an output that is the input file or another output is refused") {
   CHECK(dttest::readText(d + "/pts.ele") == kSquare);
 }
 
+TEST_CASE("cli outputs are planned once and a refusal names the option that asked") {
+  const std::string d = freshDir("plan"), in = d + "/in.xy";
+  dttest::writeText(in, kSquare);
+  dttest::writeText(d + "/old.svg", "OLD\n");
+  const dt::OutputPlan plan = dt::planOutputs({{"-o " + d + "/o", d + "/o.ele"}, {"--svg", d + "/old.svg"},
+                                               {"--msh", "-"}}, in);
+  REQUIRE(plan.targets.size() == 3);
+  CHECK(plan.targets[0].kind == dt::OutputTarget::File);
+  CHECK_FALSE(plan.targets[0].exists);
+  CHECK(plan.targets[1].exists);
+  CHECK(plan.targets[2].kind == dt::OutputTarget::Stream);
+  CHECK(plan.toStandardOutput);
+  CHECK_FALSE(dt::planOutputs({{"--svg", d + "/a.svg"}}, "-").toStandardOutput);
+  // Each refusal names the option (or both options) that asked for the path.
+  auto refusal = [&](const std::vector<dt::OutputRequest>& list, const std::string& input) {
+    try {
+      dt::planOutputs(list, input);
+    } catch (const dt::OutputConflict& e) {
+      return std::string("conflict: ") + e.what();
+    } catch (const dt::OutputRefused& e) {
+      return std::string("refused: ") + e.what();
+    }
+    return std::string("planned");
+  };
+  CHECK(refusal({{"-o x", d + "/x.ele"}, {"--svg", in}}, in) == "refused: --svg: " + in + " is the input file; refusing to overwrite it");
+  CHECK(refusal({{"--svg", d + "/f"}, {"--msh", d + "/./f"}}, in) == "refused: --svg and --msh name the same file " + d + "/./f");
+  CHECK(refusal({{"-o -", "-"}, {"--svg", "-"}}, in) == "conflict: -o - and --svg both write to standard output");
+  CHECK(refusal({{"--svg", d}}, in).rfind("refused: --svg " + d + ": is a directory", 0) == 0);
+  // The plan is what is opened: a hook passed to the commit sees every rename, in order.
+  const dt::OutputPlan two = dt::planOutputs({{"--svg", d + "/a.svg"}, {"--msh", d + "/old.svg"}}, in);
+  dt::OutputFiles files(two);
+  files.writer(0).put("A\n");
+  files.writer(1).put("B\n");
+  std::vector<std::size_t> seen;
+  dt::OutputHooks hooks;
+  hooks.afterRename = [&](std::size_t renamed) {
+    seen.push_back(renamed);
+    CHECK(dttest::fileExists(d + "/a.svg"));
+  };
+  files.commit(dt::OutputFiles::AfterCommit::RestoreSignals, hooks);
+  CHECK(seen == std::vector<std::size_t>{1, 2});
+  CHECK(dttest::readText(d + "/a.svg") == "A\n");
+  CHECK(dttest::readText(d + "/old.svg") == "B\n");
+}
+
 TEST_CASE("cli killed while its outputs are written it leaves no temporary and keeps the old files") {
   const std::string d = freshDir("killed"), in = d + "/in.xy", out = d + "/out";
   dttest::writeText(in, kSquare);
   dttest::writeText(out + ".ele", "OLD ELE\n");
-  // DELAUNAY2D_TEST_HOLD_OUTPUTS: the CLI stops once the temporaries are written, says
-  // "holding", and waits; the signal comes then.
-  // The paths reach the script through the environment (D, DT_CLI_BIN), never as code.
+  // --hold-outputs (the tests' driver, tests/hooks): the CLI stops once the temporaries are
+  // written, says "holding", and waits; the signal comes then.
+  // The paths reach the script through the environment (D, DT_CLI_HOOKED_BIN), never as code.
   const std::string script =
-      "DELAUNAY2D_TEST_HOLD_OUTPUTS=60 \"$DT_CLI_BIN\" \"$D/in.xy\" -o \"$D/out\" "
+      "\"$DT_CLI_HOOKED_BIN\" --hold-outputs 60 \"$D/in.xy\" -o \"$D/out\" "
       "--svg \"$D/s.svg\" 2> \"$D/err\" & pid=$!; "
       "for i in $(seq 300); do grep -q holding \"$D/err\" && break; sleep 0.1; done; "
       "ls -a \"$D\" > \"$D/during\"; kill -TERM $pid; wait $pid; echo $? > \"$D/status\"";
   dttest::writeText(d + "/kill.sh", script + "\n");
   ch::ProcessIo io;
   io.stderrPath = "/dev/null";
-  io.env = {{"D", d}, {"DT_CLI_BIN", DT_CLI}};
+  io.env = {{"D", d}, {"DT_CLI_HOOKED_BIN", DT_CLI_HOOKED}};
   REQUIRE(ch::runProgram({"sh", d + "/kill.sh"}, io) == 0);
   const std::string during = dttest::readText(d + "/during");
   // The signal came while both temporaries existed.
@@ -381,13 +427,17 @@ std::string linkText(const std::string& path) {
 int runScript(const std::string& dir, const std::string& name, const std::string& script) {
   dttest::writeText(dir + "/" + name + ".sh", script + "\n");
   ch::ProcessIo io;
-  io.env = {{"DT_CLI_BIN", DT_CLI}};
+  io.env = {{"DT_CLI_BIN", DT_CLI}, {"DT_CLI_HOOKED_BIN", DT_CLI_HOOKED}};
   const int rc = ch::runProgram({"sh", dir + "/" + name + ".sh"}, io);
   return rc >= 0 && rc < 128 ? rc : -1;
 }
 
 // The triangulator in a script of runScript: its path, expanded by the shell, never parsed.
 std::string cli() { return "\"$DT_CLI_BIN\""; }
+
+// The same program with test hooks (tests/hooks/delaunay2d_hooked.cpp), in a script of
+// runScript: its options --hold-outputs and --commit-pause-ms come first.
+std::string hookedCli() { return "\"$DT_CLI_HOOKED_BIN\""; }
 
 // Every name in `dir` containing ".dttmp-": temporaries (or their backups) left behind.
 std::vector<std::string> temporariesIn(const std::string& dir) {
@@ -667,7 +717,7 @@ TEST_CASE("cli outputs that reach one file through symlinks are refused") {
 TEST_CASE("cli a signal after the first rename leaves the new outputs and exit status 0 and --stats") {
   const std::string d = freshDir("final");
   const Reference ref = reference(d);
-  // DELAUNAY2D_TEST_COMMIT_PAUSE_MS: the CLI pauses after each rename and says "committing N";
+  // --commit-pause-ms: the CLI pauses after each rename and says "committing N";
   // the signal comes during the pause after the first one, when the commit is under way, or
   // during the pause after the commit ("committed"), before --stats is printed. (Not SIGINT: a
   // shell starts a background job with SIGINT ignored.)
@@ -681,7 +731,7 @@ TEST_CASE("cli a signal after the first rename leaves the new outputs and exit s
     // and the last case's err holds the same words (it sent the signal at once: seen in CI).
     for (const char* f : {"/err", "/out"}) dttest::writeText(d + f, "");
     const int rc = runScript(d, "final",
-        "DELAUNAY2D_TEST_COMMIT_PAUSE_MS=800 " + cli() + " '" + ref.in + "' -o '" + d +
+        hookedCli() + " --commit-pause-ms 800 '" + ref.in + "' -o '" + d +
         "/o' --svg '" + d + "/o.svg' --msh '" + d + "/o.msh' --stats > '" + d + "/out' 2> '" + d +
         "/err' & pid=$!\n"
         "for i in $(seq 300); do grep -q '" + std::string(when) + "' '" + d + "/err' && break; "
@@ -709,7 +759,7 @@ TEST_CASE("cli signals at every 10 ms of a run give the old set or the new one w
     CAPTURE(ms);
     for (const char* f : {"/o.ele", "/o.svg", "/o.msh"}) dttest::writeText(d + f, "OLD\n");
     const int rc = runScript(d, "sweep",
-        "DELAUNAY2D_TEST_COMMIT_PAUSE_MS=30 " + cli() + " '" + in + "' -o '" + d + "/o' --svg '" +
+        hookedCli() + " --commit-pause-ms 30 '" + in + "' -o '" + d + "/o' --svg '" +
         d + "/o.svg' --msh '" + d + "/o.msh' 2> /dev/null & pid=$!\n"
         "sleep " + std::to_string(ms / 1000.0) + "; kill -TERM $pid; wait $pid; echo $? > '" + d +
         "/status'");
@@ -748,10 +798,10 @@ namespace {
 std::string pairsScript(const std::string& in, const std::string& out, int pairs) {
   const std::string args = " -o '" + out + "/o' --svg '" + out + "/o.svg' --msh '" + out + "/o.msh'";
   return "for i in $(seq " + std::to_string(pairs) + "); do\n"
-         "pa=$((i % 2 * 40)); pb=$((40 - pa))\n"
-         "DELAUNAY2D_TEST_COMMIT_PAUSE_MS=$pa " + cli() + " '" + in + "/a.node'" + args +
-         " 2> /dev/null & a=$!\n"
-         "DELAUNAY2D_TEST_COMMIT_PAUSE_MS=$pb " + cli() + " '" + in + "/b.node'" + args +
+         "pa=$((i % 2 * 40)); pb=$((40 - pa))\n" +
+         hookedCli() + " --commit-pause-ms $pa '" + in + "/a.node'" + args +
+         " 2> /dev/null & a=$!\n" +
+         hookedCli() + " --commit-pause-ms $pb '" + in + "/b.node'" + args +
          " 2> /dev/null & b=$!\n"
          "wait $a || exit 1; wait $b || exit 1\n"
          "{ head -1 '" + out + "/o.ele'; grep -c '<polygon' '" + out + "/o.svg'; sed -n '/^\\$Elements/{n;p;}' '" +
@@ -936,7 +986,7 @@ int runScriptAsNobody(const std::string& dir, const std::string& name, const std
   dttest::writeText(dir + "/" + name + ".sh", script + "\n");
   ::chmod((dir + "/" + name + ".sh").c_str(), 0644);
   ch::ProcessIo io;
-  io.env = {{"DT_CLI_BIN", DT_CLI}};
+  io.env = {{"DT_CLI_BIN", DT_CLI}, {"DT_CLI_HOOKED_BIN", DT_CLI_HOOKED}};
   const int rc = ch::runProgram({"setpriv", "--reuid=65534", "--regid=65534", "--clear-groups", "sh",
                                  dir + "/" + name + ".sh"}, io);
   return rc >= 0 && rc < 127 ? rc : -1;
@@ -978,7 +1028,7 @@ TEST_CASE("cli base names of 234 to 251 bytes are written and a failed commit pu
       CHECK(dttest::readText(d + "/" + base + ".ele").rfind("2 3 0\n", 0) == 0);
     }
     // The data-loss case: an existing .ele, and a second output that turns into a directory
-    // after the .ele is in place (DELAUNAY2D_TEST_COMMIT_PAUSE_MS pauses after each rename: long
+    // after the .ele is in place (--commit-pause-ms pauses after each rename: long
     // enough for the script's rm and mkdir on a loaded machine).
     const std::string precious = "precious\n\x01\xff bytes " + std::to_string(len) + "\n";
     dttest::writeText(d + "/" + base + ".ele", precious);
@@ -986,7 +1036,7 @@ TEST_CASE("cli base names of 234 to 251 bytes are written and a failed commit pu
     dttest::writeText(d + "/app.svg", "OLD SVG\n");
     dttest::writeText(d + "/err", "");
     const int rc = runScript(d, "turn",
-        "DELAUNAY2D_TEST_COMMIT_PAUSE_MS=1500 " + cli() + " '" + d + "/in.xy' -o '" + d + "/" + base +
+        hookedCli() + " --commit-pause-ms 1500 '" + d + "/in.xy' -o '" + d + "/" + base +
         "' --svg '" + d + "/app.svg' 2> '" + d + "/err' & pid=$!\n"
         "for i in $(seq 300); do grep -q 'committing 1' '" + d + "/err' && break; sleep 0.02; done\n"
         "rm '" + d + "/app.svg'; mkdir '" + d + "/app.svg'\n"

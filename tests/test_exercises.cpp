@@ -57,7 +57,7 @@ TEST_CASE("exercises release check hint and watch end to end in a temporary dire
   const Run s = exercise({"release", "2.3.2-1", dir});
   INFO(s.out);
   REQUIRE(s.status == 0);
-  const std::string stats = dttest::readText(dir + "/code/stats.cpp");
+  const std::string stats = dttest::readText(dir + "/code/checks/stats.cpp");
   // (The marker is spelled in two literals so that the book's source pages never show it.)
   CHECK(contains(stats, "  // BEGIN " "SOLUTION 2.3.2-1\n  throw std::logic_error(\"exercise 2.3.2-1: not implemented yet\");\n"));
   CHECK_FALSE(contains(stats, "2 * (nx + ny) - 4"));  // the solution's hull count
@@ -67,7 +67,7 @@ TEST_CASE("exercises release check hint and watch end to end in a temporary dire
   CHECK_FALSE(contains(solutions, "sol_2_3_2_1"));
   CHECK_FALSE(contains(solutions, "sol_2_3_2_2"));
   // No page quotes the stripped code or links to the removed solution.
-  CHECK(ch::runProgram({"grep", "-rqE", "snippet code/stats.cpp gridCounts|ref sol_2_3_2_1", dir + "/book"}) == 1);
+  CHECK(ch::runProgram({"grep", "-rqE", "snippet code/checks/stats.cpp gridCounts|ref sol_2_3_2_1", dir + "/book"}) == 1);
   CHECK(contains(dttest::readText(dir + "/book/sec2_3_2.md"), "<!-- EXERCISE 2.3.2-1 -->"));
 
   // No exercise named: the workspace's own (.exercise).
@@ -85,8 +85,8 @@ TEST_CASE("exercises release check hint and watch end to end in a temporary dire
   const Run h3 = exercise({"hint", dir});
   CHECK(contains(h3.out, "no more hints for 2.3.2-1"));
 
-  dttest::writeText(dir + "/code/stats.cpp",
-                    dttest::readText(std::string(DT_SOURCE_DIR) + "/code/stats.cpp"));
+  dttest::writeText(dir + "/code/checks/stats.cpp",
+                    dttest::readText(std::string(DT_SOURCE_DIR) + "/code/checks/stats.cpp"));
   const Run pass = exercise({"watch", dir}, {{"DT_WATCH_ROUNDS", "1"}});
   INFO(pass.out);
   CHECK(pass.status == 0);
@@ -114,8 +114,8 @@ TEST_CASE("exercises a handout is self-contained and stops on a missing figure")
   const std::string sheet = dttest::readText(out + "/exercises_2.3.4.md");
   INFO(sheet);
   // The file, the signature and contract from the header, what a pass looks like.
-  CHECK(contains(sheet, "`// BEGIN " "SOLUTION 2.3.4-1` and `// END " "SOLUTION 2.3.4-1` of `code/stats.cpp`"));
-  CHECK(contains(sheet, "**Signature and contract** (`code/stats.h`):"));
+  CHECK(contains(sheet, "`// BEGIN " "SOLUTION 2.3.4-1` and `// END " "SOLUTION 2.3.4-1` of `code/checks/stats.cpp`"));
+  CHECK(contains(sheet, "**Signature and contract** (`code/checks/stats.h`):"));
   CHECK(contains(sheet, "// borders a face outside the list). Throws std::logic_error if an edge is shared by more than"));
   CHECK(contains(sheet, "void computeAdjacenciesSorted(std::vector<Face*>& faces);"));
   CHECK(contains(sheet, "then `PASS 2.3.4-1`"));

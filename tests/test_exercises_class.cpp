@@ -180,13 +180,13 @@ TEST_CASE("exercises class a release holds no line of any solution and is refuse
   const std::string pid = std::to_string(::getpid());
   const std::string nested = std::string(DT_SOURCE_DIR) + "/nested_ws_" + pid;
   const std::string oddBuild = std::string(DT_SOURCE_DIR) + "/objects_" + pid;
-  for (const std::string& d : {nested + "/code", nested + "/scripts", oddBuild}) fs::create_directories(d);
+  for (const std::string& d : {nested + "/code/checks", nested + "/scripts", oddBuild}) fs::create_directories(d);
   dttest::writeText(nested + "/CMakeLists.txt", "project(x)\n");
   dttest::writeText(nested + "/scripts/exercise.sh", "\n");
-  dttest::writeText(nested + "/code/stats.cpp",
-                    dttest::readText(std::string(DT_SOURCE_DIR) + "/code/stats.cpp"));
+  dttest::writeText(nested + "/code/checks/stats.cpp",
+                    dttest::readText(std::string(DT_SOURCE_DIR) + "/code/checks/stats.cpp"));
   dttest::writeText(oddBuild + "/CMakeCache.txt", "\n");
-  dttest::writeText(oddBuild + "/star.cpp", dttest::readText(std::string(DT_SOURCE_DIR) + "/code/star.cpp"));
+  dttest::writeText(oddBuild + "/star.cpp", dttest::readText(std::string(DT_SOURCE_DIR) + "/code/listings/star.cpp"));
   // And the folder grade writes prove answers to, with the teacher's sheet.
   const std::string answers = std::string(DT_SOURCE_DIR) + "/answers_" + pid;
   fs::create_directories(answers);
@@ -203,7 +203,7 @@ TEST_CASE("exercises class a release holds no line of any solution and is refuse
   CHECK_FALSE(fs::exists(root + "/.git"));
   CHECK_FALSE(fs::exists(root + "/build"));
   // The markers stay around the stub, so that grade can cut the student's code out.
-  const std::string stats = dttest::readText(root + "/code/stats.cpp");
+  const std::string stats = dttest::readText(root + "/code/checks/stats.cpp");
   CHECK(contains(stats, "// BEGIN " "SOLUTION 2.3.4-1\n  throw std::logic_error(\"exercise 2.3.4-1: not implemented yet\");\n  // END " "SOLUTION 2.3.4-1"));
   CHECK(contains(stats, "exercise 2.3.2-1: not implemented yet"));  // not released, stripped too
 
@@ -345,7 +345,7 @@ std::vector<Student> cheats(const std::string& victim, const std::string& marker
            "run_out_*; sleep 1; done >/dev/null 2>&1 &\");\n  return;\n",
        "FORBIDDEN", "0/4", "-\t-\t-\t-", "'system'"},
       // Another student's solution broken.
-      {"sabotage", "  std::system(\"echo broken >> " + victim + "/code/stats.cpp; rm -f " + victim + "/code/stats.h\");\n  return;\n",
+      {"sabotage", "  std::system(\"echo broken >> " + victim + "/code/checks/stats.cpp; rm -f " + victim + "/code/checks/stats.h\");\n  return;\n",
        "FORBIDDEN", "0/4", "-\t-\t-\t-", "'system'"},
       // Processes that outlive the grading.
       {"lingering", "  std::system(\"sleep 917" + marker + " & sleep 917" + marker + " &\");\n  return;\n", "FORBIDDEN", "0/4",
@@ -369,9 +369,9 @@ TEST_CASE("exercises class 30 workspaces are graded in one command into a TSV ri
   INFO(rel.out << rel.err);
   REQUIRE(rel.status == 0);
 
-  const std::string teacher = dttest::readText(std::string(DT_SOURCE_DIR) + "/code/stats.cpp");
+  const std::string teacher = dttest::readText(std::string(DT_SOURCE_DIR) + "/code/checks/stats.cpp");
   const std::string solution = region(teacher, "2.3.4-1", 0);
-  const std::string released = dttest::readText(root + "/release/code/stats.cpp");
+  const std::string released = dttest::readText(root + "/release/code/checks/stats.cpp");
   // The planted bugs, made from the teacher's own solution.
   const std::string noOrientation = replaced(solution, "if (s.forward == t.forward)", "if (false)");
   const std::string nulls = "  for (Face* f : faces) f->F[0] = f->F[1] = f->F[2] = nullptr;\n" + solution;
@@ -440,7 +440,7 @@ TEST_CASE("exercises class 30 workspaces are graded in one command into a TSV ri
       if (contains(line, "BEGIN SOLUTION 2.3.4-1")) beginLine = n;
   }
   cls.push_back({"compile_error", "  int x = ;\n", "COMPILE-ERROR", "0/4", none,
-                 "code/stats.cpp:" + std::to_string(beginLine + 1) + ":"});
+                 "code/checks/stats.cpp:" + std::to_string(beginLine + 1) + ":"});
   cls.push_back({"forbidden_call", "  computeAdjacencies(faces);  // the library's, with its map\n", "FORBIDDEN", "0/4",
                  none, "'computeAdjacencies'"});
   // "//" or "/*" inside a string literal does not start a comment.
@@ -463,7 +463,7 @@ TEST_CASE("exercises class 30 workspaces are graded in one command into a TSV ri
     fs::copy(root + "/release", d, fs::copy_options::recursive | fs::copy_options::copy_symlinks);
     std::string text = s.body.empty() ? released : withRegion(released, "2.3.4-1", 0, s.body);
     if (s.dropEnd) text = replaced(text, "  // END " "SOLUTION 2.3.4-1\n", "");
-    dttest::writeText(d + "/code/stats.cpp", text);
+    dttest::writeText(d + "/code/checks/stats.cpp", text);
     if (s.editTest) {
       // The student's tests of the same names, made to pass on the stub: grade never uses them.
       dttest::writeText(d + "/tests/test_2_3_4_exercises.cpp",
@@ -583,9 +583,9 @@ TEST_CASE("exercises class grade catches the planted bugs of 2.1-1 and collects 
   freshDirectory(root);
   const Run rel = exercise({"release", "2.1-1", "2.3.5-1", root + "/release"});
   REQUIRE(rel.status == 0);
-  const std::string teacher = dttest::readText(std::string(DT_SOURCE_DIR) + "/code/star.cpp");
+  const std::string teacher = dttest::readText(std::string(DT_SOURCE_DIR) + "/code/listings/star.cpp");
   const std::string kernel = region(teacher, "2.1-1", 0), open = region(teacher, "2.1-1", 1);
-  const std::string released = dttest::readText(root + "/release/code/star.cpp");
+  const std::string released = dttest::readText(root + "/release/code/listings/star.cpp");
   const std::string lastEdge = replaced(kernel, "for (std::size_t i = 0; i < m && !K.empty(); ++i)",
                                         "for (std::size_t i = 0; i + 1 < m && !K.empty(); ++i)");
   const std::string flat = replaced(replaced(kernel, "if (!hasArea) K.clear();", ""),
@@ -601,7 +601,7 @@ TEST_CASE("exercises class grade catches the planted bugs of 2.1-1 and collects 
   for (const Student& s : cls) {
     const std::string d = root + "/" + s.name;
     fs::copy(root + "/release", d, fs::copy_options::recursive | fs::copy_options::copy_symlinks);
-    dttest::writeText(d + "/code/star.cpp",
+    dttest::writeText(d + "/code/listings/star.cpp",
                       withRegion(withRegion(released, "2.1-1", 0, s.body), "2.1-1", 1, open));
     dirs.push_back(d);
   }
@@ -705,9 +705,9 @@ TEST_CASE("exercises class grade reads operators as tokens checks the called fun
   freshDirectory(root);
   const Run rel = exercise({"release", "2.3.5-5", root + "/release"});
   REQUIRE(rel.status == 0);
-  const std::string teacher = dttest::readText(std::string(DT_SOURCE_DIR) + "/code/ex_hilbert.cpp");
+  const std::string teacher = dttest::readText(std::string(DT_SOURCE_DIR) + "/code/exercises/ex_hilbert.cpp");
   const std::string solution = region(teacher, "2.3.5-5", 0);
-  const std::string released = dttest::readText(root + "/release/code/ex_hilbert.cpp");
+  const std::string released = dttest::readText(root + "/release/code/exercises/ex_hilbert.cpp");
   // '?' is forbidden as an operator: inside a string it is no operator. The library's fast keys
   // are no forbidden word, but the object file calls them: refused by the symbol check.
   const std::vector<std::pair<std::string, std::string>> cls = {
@@ -719,7 +719,7 @@ TEST_CASE("exercises class grade reads operators as tokens checks the called fun
   for (const auto& s : cls) {
     const std::string d = root + "/" + s.first;
     fs::copy(root + "/release", d, fs::copy_options::recursive | fs::copy_options::copy_symlinks);
-    dttest::writeText(d + "/code/ex_hilbert.cpp", withRegion(released, "2.3.5-5", 0, s.second));
+    dttest::writeText(d + "/code/exercises/ex_hilbert.cpp", withRegion(released, "2.3.5-5", 0, s.second));
     args.push_back(d);
   }
   const std::vector<std::pair<std::string, std::string>> env = {{"DT_GRADE_NO_BUILD", "1"}, {"DT_GRADE_BUILD", buildDir()}};
@@ -732,7 +732,7 @@ TEST_CASE("exercises class grade reads operators as tokens checks the called fun
   CHECK(rows[2][1] == "FORBIDDEN");
   CHECK(contains(rows[2][6], "calls dt::hilbertKeysFast("));
   CHECK(rows[3][1] == "FORBIDDEN");
-  CHECK(contains(rows[3][6], "code/ex_hilbert.cpp:"));
+  CHECK(contains(rows[3][6], "code/exercises/ex_hilbert.cpp:"));
   CHECK(contains(rows[3][6], ": '?'"));
 
   // No sandbox: no grading, and the reason; --unsandboxed grades with a warning on every row.

@@ -1,4 +1,4 @@
-/// \file test_fast_kernel.cpp Tests of the fast kernel (code/fast_delaunay.h): the same exact DT(S) as the corrected listings, on easy and degenerate inputs.
+/// \file test_fast_kernel.cpp Tests of the fast kernel (code/fast/fast_delaunay.h): the same exact DT(S) as the corrected listings, on easy and degenerate inputs.
 #include <doctest/doctest.h>
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-/// \file test_hilbert_sort.cpp The one Hilbert sort (code/hilbert.cpp): table keys and radix sort give the same orders as keys one level at a time and std::sort; the adaptive refinement keeps a far outlier or a dense cluster from leaving points in input order.
+/// \file test_hilbert_sort.cpp The one Hilbert sort (code/orders/hilbert.cpp): table keys and radix sort give the same orders as keys one level at a time and std::sort; the adaptive refinement keeps a far outlier or a dense cluster from leaving points in input order.
 #include <doctest/doctest.h>
 
 #include <algorithm>

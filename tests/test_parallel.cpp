@@ -1,4 +1,4 @@
-/// \file test_parallel.cpp Tests of the parallel kernel (code/fast_parallel.h, the going-further page on both cores): the exact DT(S), the sequential kernel's triangulation in general position, a Delaunay triangulation on degenerate input.
+/// \file test_parallel.cpp Tests of the parallel kernel (code/fast/fast_parallel.h, the going-further page on both cores): the exact DT(S), the sequential kernel's triangulation in general position, a Delaunay triangulation on degenerate input.
 #include <doctest/doctest.h>
 
 #include <algorithm>

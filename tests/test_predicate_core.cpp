@@ -1,4 +1,4 @@
-/// \file test_predicate_core.cpp Tests of the one predicate core (code/predicates_inline.h): each stage (filter, small multiples, wide integers, extended exponent, GMP) is reached and agrees with the exact oracle.
+/// \file test_predicate_core.cpp Tests of the one predicate core (code/predicates/predicates_inline.h): each stage (filter, small multiples, wide integers, extended exponent, GMP) is reached and agrees with the exact oracle.
 #include <doctest/doctest.h>
 
 #include <cmath>

@@ -6,7 +6,7 @@
 # 1. GMP for wasm, once per build directory (WORK_DIR/deps/prefix), from Debian's own source
 #    package (scripts/deps.sh enables deb-src and fetches it with `apt-get source gmp` into
 #    /var/cache/dt-wasm-src). Never emscripten's ports (they download).
-# 2. The library code/*.cpp (but the command line's file code, see below), each object rebuilt only when its sources are newer.
+# 2. The library code/*.cpp and code/*/*.cpp (but the command line's file code, see below), each object rebuilt only when its sources are newer.
 # 3. web/dt_web.cpp linked into one JavaScript file with the wasm embedded (-sSINGLE_FILE=1),
 #    so that the book works from file:// with no server. --planted compiles the binding with
 #    DT_WEB_PLANTED_DEFECT (the browser test's self-check, ctest web_browser_planted).
@@ -74,11 +74,13 @@ fi
 # 2.3.1's naive predicates must compute what the source spells), exceptions caught (the
 # library reports bad input by throwing).
 flags=(-O2 -std=c++17 -fexceptions -ffp-contract=off -I"$src/code" -I"$prefix/include")
+# The library's includes are bare names, found in code/ and in each of its rooms.
+for d in "$src"/code/*/; do flags+=(-I"${d%/}"); done
 objdir=$work/obj
 mkdir -p "$objdir"
 objs=()
 pids=()
-for f in "$src"/code/*.cpp; do
+for f in "$src"/code/*.cpp "$src"/code/*/*.cpp; do
   # The command line's files: io.cpp (parsing: its std::from_chars for doubles is missing from
   # emscripten 3.1.6's libc++), writers.cpp (std::to_chars likewise), output_files.cpp (locks,
   # signals, renames) and peak_memory.cpp (/proc). No live figure reads or writes a file.

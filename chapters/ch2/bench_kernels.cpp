@@ -7,7 +7,7 @@
 // table_bench.{md,csv,html}.
 //
 // The fast kernel runs sequentially, with as many threads as the machine has where the cost
-// model of code/fast_parallel.h lets them run (what `--threads auto` does), and with them
+// model of code/fast/fast_parallel.h lets them run (what `--threads auto` does), and with them
 // forced; CPU time sums the threads, so the parallel gain shows in the wall time. The methods
 // run in turn, A B C D A B C D ..., so that a burst of load hits them all; each timing is the
 // median of the runs with their spread (min-max), and the threads' ratios to one thread are

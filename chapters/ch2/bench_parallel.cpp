@@ -1,6 +1,6 @@
 // bench_parallel (going further: the parallel page). Two measurements of the fast kernel on
 // uniform random points, each run in a child process of its own:
-//  1. time against threads (code/fast_parallel.h) at 10^6 points (and 10^7 with --max-n), wall
+//  1. time against threads (code/fast/fast_parallel.h) at 10^6 points (and 10^7 with --max-n), wall
 //     and CPU time, beside CGAL's Delaunay_triangulation_2 when it is installed; at the first n,
 //     the time budget of two threads (table_parallel_budget: sort, one thread alone, concurrent
 //     rounds, output, set-up) beside the sequential kernel and the parallel machinery run by

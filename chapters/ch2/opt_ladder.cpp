@@ -112,7 +112,7 @@ int main(int argc, char** argv) {
   steps.push_back({"coin BRIO", "BRIO rounds by a biased coin (dt::brioCoinOrder: 3/4 of the "
                    "points in the last round; a coarser curve, dt::brioCoinDepth)", false, f});
   // The last step changes no line of the kernel: it lets the insertions run in their second
-  // build, for x86-64-v3 processors (code/fast_core.h), where this processor has it.
+  // build, for x86-64-v3 processors (code/fast/fast_core.h), where this processor has it.
   f.baselineBuild = false;
   const bool v3 = dt::fastDelaunay({0, 0, 1, 0, 0, 1}, f).stats.x86_64_v3;
   steps.push_back({"x86-64-v3", v3 ? "the same insertion loops compiled for x86-64-v3 processors "

@@ -11,7 +11,7 @@
 #include "fast_core.h"
 #include "generators.h"
 #include "hilbert.h"
-#include "triangulate.h"
+#include "errors.h"
 
 namespace dt {
 

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <cstdint>
 
-#include "triangulate.h"
+#include "errors.h"
 
 namespace dt {
 namespace fast {

@@ -1,4 +1,4 @@
-// The outputs of code/output_files.h: what a path is (classifyOutput, sameFile), temporaries
+// The outputs of code/io/output_files.h: what a path is (classifyOutput, sameFile), temporaries
 // beside their targets, the signal handlers that remove them, and the locked commit.
 #include "output_files.h"
 
@@ -108,7 +108,6 @@ char g_tempName[kSlots][kNameMax];
 volatile std::sig_atomic_t g_tempUsed[kSlots];
 bool g_handlersInstalled = false;
 bool g_sigpipeIgnored = false;
-void (*g_commitHook)(std::size_t) = nullptr;
 constexpr int kCleanupSignals[] = {SIGINT, SIGTERM, SIGHUP};
 
 extern "C" void removeTemporariesAndDie(int sig) {
@@ -388,35 +387,73 @@ OutputTarget classifyOutput(const std::string& path) {
   refuse(path, t.file, st.st_mode);
 }
 
-bool sameFile(const std::string& a, const std::string& b) {
-  struct Key {
-    bool exists = false;
-    dev_t dev = 0;
-    ino_t ino = 0;
-    std::string name;
-  };
-  auto keyOf = [](const std::string& p) {
-    Key k;
-    struct stat st;
-    const int fd = inheritedFd(p);
-    if (fd >= 0 ? ::fstat(fd, &st) == 0 : ::stat(p.c_str(), &st) == 0) {
-      k.exists = true;
-      k.dev = st.st_dev;
-      k.ino = st.st_ino;
-      return k;
-    }
-    try {
-      bool viaProc = false;
-      k.name = canonicalNew(followLinks(p, viaProc));
-    } catch (const std::runtime_error&) {
-      k.name = canonicalNew(p);
-    }
+namespace {
+
+// What sameFile compares: device and inode of an existing file, else the canonical name of the
+// file the path would create.
+struct FileKey {
+  bool exists = false;
+  dev_t dev = 0;
+  ino_t ino = 0;
+  std::string name;
+  bool operator==(const FileKey& o) const {
+    if (exists && o.exists) return dev == o.dev && ino == o.ino;
+    return exists == o.exists && name == o.name;
+  }
+};
+
+FileKey keyOf(const std::string& p) {
+  FileKey k;
+  struct stat st;
+  const int fd = inheritedFd(p);
+  if (fd >= 0 ? ::fstat(fd, &st) == 0 : ::stat(p.c_str(), &st) == 0) {
+    k.exists = true;
+    k.dev = st.st_dev;
+    k.ino = st.st_ino;
     return k;
-  };
-  const Key ka = keyOf(a), kb = keyOf(b);
-  if (ka.exists && kb.exists) return ka.dev == kb.dev && ka.ino == kb.ino;
-  if (ka.exists != kb.exists) return false;
-  return ka.name == kb.name;
+  }
+  try {
+    bool viaProc = false;
+    k.name = canonicalNew(followLinks(p, viaProc));
+  } catch (const std::runtime_error&) {
+    k.name = canonicalNew(p);
+  }
+  return k;
+}
+
+}  // namespace
+
+bool sameFile(const std::string& a, const std::string& b) { return keyOf(a) == keyOf(b); }
+
+OutputPlan planOutputs(const std::vector<OutputRequest>& list, const std::string& input) {
+  OutputPlan plan;
+  plan.requests = list;
+  const FileKey in = keyOf(input == "-" ? "/dev/stdin" : input), out = keyOf("-");
+  std::vector<FileKey> keys;
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const OutputRequest& r = list[i];
+    // A path that is no output names the option alone: the message goes on with the path.
+    const std::string flag = r.option.substr(0, r.option.find(' '));
+    try {
+      plan.targets.push_back(classifyOutput(r.path));
+    } catch (const OutputRefused& e) {
+      throw OutputRefused(flag + " " + e.what());
+    } catch (const std::exception& e) {
+      throw std::runtime_error(flag + " " + e.what());
+    }
+    if (r.path == "-")
+      for (std::size_t j = 0; j < i; ++j)
+        if (list[j].path == "-")
+          throw OutputConflict(list[j].option + " and " + r.option + " both write to standard output");
+    keys.push_back(keyOf(r.path));
+    if (keys[i] == out) plan.toStandardOutput = true;
+    if (keys[i] == in)
+      throw OutputRefused(r.option + ": " + r.path + " is the input file; refusing to overwrite it");
+    for (std::size_t j = 0; j < i; ++j)
+      if (keys[j] == keys[i])
+        throw OutputRefused(list[j].option + " and " + r.option + " name the same file " + r.path);
+  }
+  return plan;
 }
 
 // ---- the set of outputs ----------------------------------------------------------------------
@@ -431,7 +468,19 @@ struct OutputFiles::File {
   std::unique_ptr<Writer> w;
 };
 
-void OutputFiles::setCommitHook(void (*hook)(std::size_t renamed)) { g_commitHook = hook; }
+OutputFiles::OutputFiles(const OutputPlan& plan) {
+  // A constructor that throws runs no destructor: the temporaries made so far go here.
+  try {
+    for (const OutputTarget& t : plan.targets) open(t);
+  } catch (...) {
+    removeAll();
+    throw;
+  }
+}
+
+Writer& OutputFiles::writer(std::size_t i) { return *files_.at(i)->w; }
+
+Writer& OutputFiles::open(const std::string& path) { return open(classifyOutput(path)); }
 
 OutputFiles::~OutputFiles() { removeAll(); }
 
@@ -446,11 +495,12 @@ void OutputFiles::removeAll() {
   files_.clear();
 }
 
-Writer& OutputFiles::open(const std::string& path) {
+Writer& OutputFiles::open(const OutputTarget& target) {
   installHandlers();
   auto f = std::make_unique<File>();
-  f->target = classifyOutput(path);
+  f->target = target;
   const OutputTarget& t = f->target;
+  const std::string& path = t.path;
   if (t.kind == OutputTarget::Stream) {
     if (t.fd >= 0) {
       f->fd = t.fd;
@@ -551,7 +601,7 @@ bool unsupported(int err) { return err == EINVAL || err == ENOSYS || err == EOPN
 
 }  // namespace
 
-void OutputFiles::commit(AfterCommit after) {
+void OutputFiles::commit(AfterCommit after, const OutputHooks& hooks) {
   // The temporaries first, then the streams' last bytes: a File that fails leaves a stream with
   // less, and a stream that fails leaves every File unrenamed.
   for (bool streams : {false, true})
@@ -643,7 +693,7 @@ void OutputFiles::commit(AfterCommit after) {
       blocked.keep();
     else
       blocked.dropPending();
-    if (g_commitHook != nullptr) g_commitHook(done + 1);
+    if (hooks.afterRename) hooks.afterRename(done + 1);
   }
   if (!why.empty()) {
     // Put back, newest first, what was replaced. An old file whose restore fails is kept under

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "errors.h"
 #include "mesh.h"
 
 namespace dt {
@@ -27,12 +28,6 @@ struct InsertionStats {
   std::uint64_t duplicates = 0;   ///< points skipped because they coincide with a vertex
   double meanSearch() const { return insertions ? double(searchSteps) / insertions : 0; }
   double meanCavity() const { return insertions ? double(cavityFaces) / insertions : 0; }
-};
-
-/// Input that has no Delaunay triangulation (fewer than three distinct points, or all points
-/// collinear), or that the chosen method cannot represent.
-struct DegenerateInput : std::runtime_error {
-  using std::runtime_error::runtime_error;
 };
 
 /// Reusable buffers of one insertion (so that a triangulation of 10^6 points does not allocate

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -15,6 +16,12 @@ namespace dt {
 /// block device. what() is one line naming the path and what it is.
 struct OutputRefused : std::runtime_error {
   using std::runtime_error::runtime_error;
+};
+
+/// Outputs that cannot go together as asked: two of them on standard output (a usage error of
+/// the caller, where the other refusals are about what a path is).
+struct OutputConflict : OutputRefused {
+  using OutputRefused::OutputRefused;
 };
 
 /// What an output path is, decided with lstat and stat before anything is written.
@@ -44,6 +51,35 @@ OutputTarget classifyOutput(const std::string& path);
 /// symlinks; "-" is standard output), the canonical parent directory and the name of the file a
 /// path would create (following a dangling symlink) otherwise.
 bool sameFile(const std::string& a, const std::string& b);
+
+/// One output a caller asks for: the option that asks for it, as messages name it ("--svg",
+/// "-o mesh"), and its path.
+struct OutputRequest {
+  std::string option;
+  std::string path;
+};
+
+/// The outputs of one run, each path classified once, in the order they were asked for.
+struct OutputPlan {
+  std::vector<OutputRequest> requests;
+  std::vector<OutputTarget> targets;  ///< targets[i]: what requests[i].path is
+  bool toStandardOutput = false;      ///< an output is standard output (report elsewhere)
+};
+
+/// Classifies every path of `list` once (classifyOutput), before anything is read or written,
+/// and refuses what cannot be written as asked, naming the option: OutputRefused for a path no
+/// output may be written to, for an output that is the file `input` ("-": standard input) and
+/// for two outputs that are the same file (sameFile); OutputConflict for two outputs on "-";
+/// std::runtime_error (the option, the path, the system's reason) for a path that cannot be
+/// classified.
+OutputPlan planOutputs(const std::vector<OutputRequest>& list, const std::string& input);
+
+/// Where a test steps into a commit: `afterRename` is called after each rename with the number
+/// done so far, with the cleanup signals blocked and the lock held (a test pauses there to send
+/// a signal or to start a concurrent run). Empty, as a program passes it: nothing is called.
+struct OutputHooks {
+  std::function<void(std::size_t renamed)> afterRename;
+};
 
 /// Writes `content` to `path` through a temporary file renamed into place, so that a failure
 /// leaves no partial file. Throws std::runtime_error naming the path and the system's reason.
@@ -80,23 +116,25 @@ class OutputFiles {
   enum class AfterCommit { RestoreSignals, KeepSignalsBlocked };
 
   OutputFiles() = default;
+  /// Opens every output of `plan` as planned (no path is classified again), in its order.
+  explicit OutputFiles(const OutputPlan& plan);
   OutputFiles(const OutputFiles&) = delete;
   OutputFiles& operator=(const OutputFiles&) = delete;
   ~OutputFiles();  ///< removes the temporaries not committed
-  /// Classifies `path` (classifyOutput), creates its temporary or opens its stream, and returns
-  /// a Writer on it (valid until commit). Throws OutputRefused or std::runtime_error.
+  /// Classifies `path` (classifyOutput) and opens it as open(const OutputTarget&) does.
   Writer& open(const std::string& path);
+  /// Creates the temporary of a classified output or opens its stream, and returns a Writer on
+  /// it (valid until commit). Throws OutputRefused or std::runtime_error.
+  Writer& open(const OutputTarget& target);
+  /// The Writer of output i (in the order of open, or of the plan).
+  Writer& writer(std::size_t i);
   /// Whether output i (in the order of open) is a Stream.
   bool streamed(std::size_t i) const;
   /// Sends every stream's last bytes and closes every temporary, then (locked, cleanup signals
-  /// blocked) renames the temporaries into place.
-  void commit(AfterCommit after = AfterCommit::RestoreSignals);
+  /// blocked) renames the temporaries into place, calling `hooks` as it goes.
+  void commit(AfterCommit after = AfterCommit::RestoreSignals, const OutputHooks& hooks = {});
   /// The temporary file names (for tests and messages).
   std::vector<std::string> temporaries() const;
-  /// Tests only: called inside commit() after each rename with the number done so far, with
-  /// the cleanup signals blocked and the lock held (a test pauses there to send a signal or to
-  /// start a concurrent run). nullptr (the default) for none.
-  static void setCommitHook(void (*hook)(std::size_t renamed));
 
  private:
   struct File;

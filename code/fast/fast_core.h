@@ -24,7 +24,7 @@
 #include <utility>
 #include <vector>
 
-#include "fast_delaunay.h"
+#include "fast_types.h"
 #include "hilbert.h"
 #include "huge_pages.h"
 #include "parallel_for.h"

@@ -1,4 +1,4 @@
-// The writers of code/writers.h: a buffered Writer and the .ele, .msh, SVG and gnuplot texts.
+// The writers of code/io/writers.h: a buffered Writer and the .ele, .msh, SVG and gnuplot texts.
 #include "writers.h"
 
 #include <algorithm>
