@@ -1,6 +1,6 @@
-# BRIO against Hilbert-only and random order (2.3.5): (a) mean cavity size (linear axis),
-# (b) mean walk length and (c) time per point against n, for Hilbert (dashed) and BRIO (solid)
-# order; (d) random order, in its own panel (it is only run at the small sizes). Colour and
+# BRIO against Hilbert-only and random order (2.3.5): (a) mean cavity size,
+# (b) mean walk length and (c) time per point against n (log axes: the series span decades),
+# for Hilbert (dashed) and BRIO (solid) order; (d) random order, in its own panel (it is only run at the small sizes). Colour and
 # marker: the input. A series whose work per point grew like n (N_search + N_cavity > 200) is
 # not run at the next size: its last point is circled.
 # Data (sec2_3_5_hilbert): brio_compare.dat (input n order nsearch ncavity t us_per_point),
@@ -14,14 +14,6 @@ stats f using 1 nooutput
 ninputs = int(STATS_max) + 1
 stats f using 2 nooutput
 nlo = STATS_min; nhi = STATS_max
-# The linear axes' tic step: the smallest of 1, 2, 5 x 10^k with at most 4 steps up to the top
-# value (gnuplot's own choice crowded the tick labels of a half-height panel on top of each other).
-nb(m) = 10**floor(log10(m / 4.0))
-nstep(m) = (m / nb(m) <= 4 ? nb(m) : m / (2 * nb(m)) <= 4 ? 2 * nb(m) : m / (5 * nb(m)) <= 4 ? 5 * nb(m) : 10 * nb(m))
-stats f using 5 nooutput
-cavstep = nstep(STATS_max)
-stats f using 7 nooutput
-timestep = nstep(STATS_max)
 # The legend of (d) sits at its top right, over the right 59 % of its width: random order's
 # data must end left of it. In a full run it does (random order stops at small sizes); when it
 # would not (a --quick run, where every series has the same few sizes), (d)'s x axis reaches
@@ -45,7 +37,7 @@ series(c, order, dash) = sprintf("for [i = 0:%d] f using ($1 == i && $3 == %d ? 
 # gnuplot, the svg terminal, which takes a line for taller than its text, made its panels a
 # fifth shorter than the PNG's, and (d)'s legend spread over the y axis.
 rows(r) = sprintf("set tmargin at screen %.4f; set bmargin at screen %.4f; ", 1 - (r - 1) / 2.0 - 2.6 * EM / FH, 1 - r / 2.0 + (r == 1 ? 2.4 : 4.4) * EM / FH) . \
-  (r == 1 ? "unset label 101" : sprintf("set label 101 'n' at graph 0.5, screen %.4f center", 0.6 * EM / FH))
+  (r == 1 ? "unset label 101" : sprintf("set label 101 \"%s\" at graph 0.5, screen %.4f center", M."𝑛}", 0.6 * EM / FH))
 do for [term in "png svg"] {
   eval fig_open(term, "fig_brio_compare")
   set output (term eq "png" ? outdir."/fig_brio_compare.png" : outdir."/fig_brio_compare.svg")
@@ -59,20 +51,15 @@ do for [term in "png svg"] {
   set xrange [xlo:xhi]
   eval layout(2, 2)
   eval rows(1)
-  eval panel(1, M."𝑁}_{cavity}: Hilbert (dashed) and BRIO (solid)")
-  set yrange [0:*]
-  set ytics cavstep
-  eval "plot " . series(5, 1, 2) . ", " . series(5, 2, 1) . stopped(5, 0)
-  eval panel(2, M."𝑁}_{search} (log scale)")
+  eval panel(1, M."𝑁}_{cavity}: Hilbert dashed, BRIO solid")
   set logscale y
   set yrange [*:*]
   set ytics autofreq
+  eval "plot " . series(5, 1, 2) . ", " . series(5, 2, 1) . stopped(5, 0)
+  eval panel(2, M."𝑁}_{search} (log scale)")
   eval "plot " . series(4, 1, 2) . ", " . series(4, 2, 1) . stopped(4, 0)
   eval rows(2)
-  eval panel(3, "time per point (µs)")
-  unset logscale y
-  set yrange [0:*]
-  set ytics timestep
+  eval panel(3, "time per point (µs, log scale)")
   eval "plot " . series(7, 1, 2) . ", " . series(7, 2, 1) . stopped(7, 0)
   eval panel(4, "random order: ".M."𝑁}_{search} (log scale)")
   set logscale y
