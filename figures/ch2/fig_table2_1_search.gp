@@ -11,7 +11,7 @@ do for [term in "png svg"] {
   set logscale xy
   set xlabel "n (random points, random order)"
   set ylabel "N_{search}"
-  set key top left
+  set key bottom right
   set grid lc rgb "#d8d8d8" lw 1
   set xrange [500:2e6]
   set format x "10^{%T}"
