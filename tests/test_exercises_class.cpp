@@ -760,9 +760,9 @@ TEST_CASE("exercises class grade fails a hull test that drops collinear points b
   freshDirectory(root);
   const Run rel = exercise({"release", "2.2-3", root + "/release"});
   REQUIRE(rel.status == 0);
-  const std::string teacher = dttest::readText(std::string(DT_SOURCE_DIR) + "/code/bowyer_watson.cpp");
+  const std::string teacher = dttest::readText(std::string(DT_SOURCE_DIR) + "/code/listings/bowyer_watson.cpp");
   const std::string solution = region(teacher, "2.2-3", 0);
-  const std::string released = dttest::readText(root + "/release/code/bowyer_watson.cpp");
+  const std::string released = dttest::readText(root + "/release/code/listings/bowyer_watson.cpp");
   const std::vector<std::pair<std::string, std::string>> cls = {
       {"correct", solution},
       {"collinear_dropped", replaced(solution, "Y(hull.back()), X(p), Y(p)) < 0)", "Y(hull.back()), X(p), Y(p)) <= 0)")}};
@@ -770,7 +770,7 @@ TEST_CASE("exercises class grade fails a hull test that drops collinear points b
   for (const auto& s : cls) {
     const std::string d = root + "/" + s.first;
     fs::copy(root + "/release", d, fs::copy_options::recursive | fs::copy_options::copy_symlinks);
-    dttest::writeText(d + "/code/bowyer_watson.cpp", withRegion(released, "2.2-3", 0, s.second));
+    dttest::writeText(d + "/code/listings/bowyer_watson.cpp", withRegion(released, "2.2-3", 0, s.second));
     args.push_back(d);
   }
   const Run g = exercise(args, {{"DT_GRADE_NO_BUILD", "1"}, {"DT_GRADE_BUILD", buildDir()}});
