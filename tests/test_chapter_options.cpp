@@ -360,6 +360,9 @@ TEST_CASE("chapter options a table's page form sets its ASCII mathematics and es
   CHECK(ch::htmlMath("naive InC(a,b,c,d), |C| + 2, DT(S0 ∪ S), DT_k") ==
         "naive 𝒞<sub>?</sub>(a,b,c,d), |𝒞| + 2, DT(S<sub>0</sub> ∪ S), DT<sub>k</sub>");
   CHECK(ch::htmlMath("N ~ n^a, n^1.5, t/n (us)") == "N ∼ n<sup>a</sup>, n<sup>1.5</sup>, t/n (µs)");
+  CHECK(ch::htmlMath("2^-60..2^60, ±m 2^-e, 1e+06, 1e+-300") ==
+        "2<sup>−60</sup>..2<sup>60</sup>, ±m 2<sup>−e</sup>, 10<sup>6</sup>, 10<sup>±300</sup>");
+  CHECK(ch::htmlMath("4^d << n, depth ceil(log4 n) + 8, a -> b") == "4<sup>d</sup> ≪ n, depth ⌈log₄ n⌉ + 8, a → b");
   // Words and numbers are left alone: a name with an underscore, a rounded value, an entity.
   CHECK(ch::htmlMath("threads_used 3.2e-05 a&nbsp;b R&D") == "threads_used 3.2e-05 a&nbsp;b R&amp;D");
   ch::Table t;

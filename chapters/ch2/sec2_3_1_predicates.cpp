@@ -87,7 +87,7 @@ double orientStepByStep(double ax, double ay, double bx, double by, double cx, d
   return l - r;
 }
 
-void header(const ch::Options& o) {
+long header(const ch::Options& o) {
   std::cout << "Section 2.3.1: robust predicates\n"
             << "  orientation O(a,b,c) = sign((xa-xc)(yb-yc) - (ya-yc)(xb-xc)), pivot c (the notes'"
                " formula, evaluated in this order)\n"
@@ -128,6 +128,7 @@ void header(const ch::Options& o) {
   ch::writeOut(o, "sec2_3_1_setup.txt",
                ch::fmt("contraction_differences %ld\ndistinct_abscissas %d\nexact_abscissas %d\n",
                        differ, distinct, exact));
+  return differ;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -640,12 +641,13 @@ int main(int argc, char** argv) {
                       1000, 1000000000,
                       {"fig2_7", "fig2_8", "fig_incircle_naive", "fig_incircle_robust"}, {}};
   return ch::runMain(argc, argv, p, [](const ch::Options& o) {
-    header(o);
+    const long contracted = header(o);
     if (o.wants("fig2_7") || o.wants("fig2_8")) orientMaps(o);
     if (o.wants("fig_incircle_naive") || o.wants("fig_incircle_robust")) incircleMaps(o);
     if (!o.everything()) return;
     notesFilters(o);
     ch::Values v(o, "sec2_3_1_predicates");
+    v.set("s231.contraction_differences", std::to_string(contracted));
     mpfr200(o, v);
     benchmark(o, v);
     v.write();

@@ -371,6 +371,7 @@ void brioComparison(const ch::Options& o, const std::vector<std::size_t>& sizes,
   // sizes), and the parabola's Hilbert-only cavities.
   double hilCavLo = 1e300, hilCavHi = 0, brioCavLo = 1e300, brioCavHi = 0, brioParabola = 0;
   double walkDiffSum = 0, cavDiffSum = 0;
+  double timeRatioLo = 1e300, timeRatioHi = 0;  // BRIO time / Hilbert-only time, spread-out rows
   int pairs = 0;
   std::string parabolaHilbert;
   struct Input { const char* name; XY (*make)(std::size_t, std::uint64_t); };
@@ -429,6 +430,8 @@ void brioComparison(const ch::Options& o, const std::vector<std::size_t>& sizes,
             if (hilbertRun.nCavity > 0) {  // the Hilbert-only run was not skipped
               walkDiffSum += r.nSearch - hilbertRun.nSearch;
               cavDiffSum += hilbertRun.nCavity - r.nCavity;
+              const double ratio = r.tTotal / hilbertRun.tTotal;
+              timeRatioLo = std::min(timeRatioLo, ratio), timeRatioHi = std::max(timeRatioHi, ratio);
               ++pairs;
             }
           } else if (parabola) {
@@ -462,6 +465,15 @@ void brioComparison(const ch::Options& o, const std::vector<std::size_t>& sizes,
   v.num("s235.hil_cav_hi", hilCavHi, "%.1f");
   v.num("s235.brio_walk_extra", pairs ? walkDiffSum / pairs : 0.0, "%.1f");
   v.num("s235.brio_cav_less", pairs ? cavDiffSum / pairs : 0.0, "%.1f");
+  // BRIO's time over Hilbert-only's on the same points, over the spread-out rows.
+  v.num("s235.brio_time_lo", pairs ? timeRatioLo : 0.0, "%.2f");
+  v.num("s235.brio_time_hi", pairs ? timeRatioHi : 0.0, "%.2f");
+  v.set("s235.brio_time_verdict",
+        pairs == 0                                   ? "not measured"
+        : timeRatioLo >= 0.8 && timeRatioHi <= 1.25  ? "about the same time on every row"
+        : timeRatioHi < 1                            ? "BRIO is faster on every row"
+        : timeRatioLo > 1                            ? "BRIO is slower on every row"
+                                                     : "neither order is faster on every row");
   v.set("s235.parabola_hilbert", parabolaHilbert.empty() ? "not measured" : parabolaHilbert);
   v.num("s235.parabola_brio", brioParabola, "%.2f");  // as in table_brio
   std::string all = "# input(0 uniform,1 clustered,2 parabola,3 jittered grid,4 circle) n "
@@ -479,7 +491,7 @@ void brioComparison(const ch::Options& o, const std::vector<std::size_t>& sizes,
   ch::runGnuplot(o, "fig_brio_compare.gp");
 }
 
-// ---- The fixed grid against the adaptive order (issue 19) -----------------------------------
+// ---- The fixed grid against the adaptive order --------------------------------------------------
 
 // The outlier figure: uniform points plus one point at (1e12, 1e12). On the fixed grid all the
 // uniform points share one cell and come in input (random) order, so the walks grow like
