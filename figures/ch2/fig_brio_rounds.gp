@@ -18,7 +18,7 @@ do for [term in "png svg"] {
   eval layout(1, 3)
   do for [r = R-3:R-1] {
     eval panel(r - R + 4, sprintf("round %d of %d: %s points", r + 1, R, word(sizes, r + 1)))
-    plot for [q = 0:r-1] datadir."/fig_brio_rounds.dat" index q using 1:2 with points pt 7 ps (0.2*PS) lc rgb "#a8a8a8", \
+    plot for [q = 0:r-1] datadir."/fig_brio_rounds.dat" index q using 1:2 with points pt 7 ps (0.2*PS) lc rgb C_PENDING, \
          datadir."/fig_brio_rounds.dat" index r using 1:2 with linespoints lw 1 pt 7 ps (0.25*PS) lc rgb word(C_SERIES, 1)
   }
   unset multiplot

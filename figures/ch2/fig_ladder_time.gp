@@ -15,7 +15,7 @@ do for [t in "png svg"] {
   set xlabel "step (each adds one change)"  # longer, it ran past the canvas at 8 cm
   set yrange [0:*]
   set offsets 0, 0, graph 0.3, 0
-  set grid ytics lc rgb "#d8d8d8" lw 1
+  set grid ytics lc rgb C_GRID lw 1
   set xtics rotate by -45 left nomirror  # at -30 the names of neighbouring bars met
   set ytics nomirror
   set rmargin 6

@@ -14,7 +14,7 @@ do for [term in "png svg"] {
   set xtics nomirror; set ytics nomirror
   set logscale xy
   set format x "10^{%T}"
-  set grid lc rgb "#d8d8d8" lw 1
+  set grid lc rgb C_GRID lw 1
   set xlabel "n (uniform points + one outlier)"  # the longer label ran past the right edge of the PNG
   set xrange [STATS_min / 1.5:STATS_max * 1.5]
   eval layout(1, 2)

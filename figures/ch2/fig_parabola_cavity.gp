@@ -19,7 +19,7 @@ do for [term in "png svg"] {
   set ylabel "faces in the cavity of point i"
   set xtics xstep
   set key at graph 0.09, graph 0.47 left center Left reverse samplen 1.5 spacing 1.1
-  set grid lc rgb "#d8d8d8" lw 1
+  set grid lc rgb C_GRID lw 1
   set logscale y
   plot datadir."/parabola_cavity.dat" using 1:3 with lines lw 2.5 lc rgb word(C_SERIES, 1) title "DT(S) with ghost faces", \
        datadir."/parabola_cavity.dat" using 1:2 with lines lw 2.5 lc rgb word(C_SERIES, 2) title "super-triangles"

@@ -12,7 +12,7 @@ do for [term in "png svg"] {
   set xlabel "n (random points, random order)"
   set ylabel "N_{search}"
   set key bottom right
-  set grid lc rgb "#d8d8d8" lw 1
+  set grid lc rgb C_GRID lw 1
   set xrange [500:2e6]
   set format x "10^{%T}"
   set yrange [10:1000]
