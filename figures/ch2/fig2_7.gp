@@ -8,8 +8,8 @@
 # (n x n matrices, row j, column i).
 load system("dirname '".ARG0."'")."/style.gp"
 load datadir."/sign_colours_deuteranopia.gp"
-O_ABC = M."𝒪_{?}(𝑎,𝑏,𝑐)}"
-O_CBA = M."𝒪_{?}(𝑐,𝑏,𝑎)}"
+O_ABC = M."𝒪(𝑎,𝑏,𝑐)}"
+O_CBA = M."𝒪(𝑐,𝑏,𝑎)}"
 do for [fig in "fig2_7 fig2_7_errors fig2_7_deuteranopia"] {
 do for [term in "png svg"] {
   eval fig_open(term, fig)

@@ -22,7 +22,7 @@ do for [term in "png svg"] {
   set xtics 0,64,256 out nomirror
   set ytics 0,64,256 out nomirror
   set object 1 rect from Z0, Z0 to Z1, Z1 front fs empty border lc rgb "black" lw 2.5
-  eval panel(1, "robust ".M."𝒪_{?}(𝑎,𝑏,𝑐)}")
+  eval panel(1, "robust ".M."𝒪(𝑎,𝑏,𝑐)}")
   plot datadir."/map_orient_robust_abc.dat" matrix with image notitle
   unset object 1
   set lmargin at screen 0.55

@@ -18,5 +18,5 @@ do for [term in "png svg"] {
          with circles lc rgb variable fs solid 1.0 border lc rgb "black" notitle, \
        datadir."/fig2_9_vertices.dat" using 1:2:(sprintf("%d", $3)) with labels notitle, \
        NaN with points pt 7 ps (3*PS) lc rgb C_HULL_VERTEX title "hull vertex", \
-       NaN with points pt 6 ps (3*PS) lc rgb "black" title "inner vertex (label: n_{vf})"
+       NaN with points pt 6 ps (3*PS) lc rgb "black" title "inner vertex (label: ".M."𝑛_{𝑣𝑓}})"
 }

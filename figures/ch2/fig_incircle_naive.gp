@@ -20,13 +20,13 @@ do for [term in "png svg"] {
   set yrange [-0.5:255.5]
   set xtics 0,64,256 out nomirror
   set ytics 0,64,256 out nomirror
-  eval panel(1, "naive ".M."𝒞_{?}(𝑎,𝑏,𝑐,𝑑)}")
+  eval panel(1, "naive ".M."𝒞(𝑎,𝑏,𝑐,𝑑)}")
   plot datadir."/map_incircle_naive_abcd.dat" matrix with image notitle
   set lmargin at screen 0.55
   set rmargin at screen 0.89
   unset ylabel
   set colorbox vertical user origin screen 0.915, screen 0.3 size screen 0.018, screen 0.45
-  eval panel(2, "naive ".M."𝒞_{?}(𝑑,𝑐,𝑏,𝑎)}")
+  eval panel(2, "naive ".M."𝒞(𝑑,𝑐,𝑏,𝑎)}")
   plot datadir."/map_incircle_naive_dcba.dat" matrix with image notitle
   unset multiplot
   unset output

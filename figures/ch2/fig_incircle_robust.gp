@@ -22,7 +22,7 @@ do for [term in "png svg"] {
   set xtics 0,64,256 out nomirror
   set ytics 0,64,256 out nomirror
   set object 1 rect from -0.5, -0.5 to Z1, Z1 front fs empty border lc rgb "black" lw 2.5
-  eval panel(1, "robust ".M."𝒞_{?}(𝑎,𝑏,𝑐,𝑑)}")
+  eval panel(1, "robust ".M."𝒞(𝑎,𝑏,𝑐,𝑑)}")
   plot datadir."/map_incircle_robust_abcd.dat" matrix with image notitle
   unset object 1
   set lmargin at screen 0.55

@@ -92,7 +92,7 @@ M = "{/'DejaVu Math TeX Gyre' "
 # a second cue (a dash pattern, a marker shape) that the same test finds in the SVG.
 C_TRI = "#3c3c3c"            # edges of the triangulation
 C_POINT = "black"            # the points of S
-C_NEW = "#d62728"            # the point being inserted (p_{n+1}, p)
+C_NEW = "#e31a1c"            # the point being inserted (p_{n+1}, p)
 C_CAVITY = "#f0a830"         # fill of the Delaunay cavity C
 C_CAVITY_EDGE = "#c65a00"    # its boundary
 C_BALL = "#e5f5d5"           # fill of the Delaunay ball B (the new triangles)
