@@ -166,16 +166,34 @@ struct SvgSpan {
 struct SvgText {
   std::vector<SvgSpan> spans;
   std::string str;
+  double x = 0, y = 0, rotate = 0;
+  std::string anchor;
+  int panel = 0, plot = 0;  // plot: its group's number in the panel (0: not drawn by a plot)
+  bool key = false;         // a key entry: the text of its plot's title
 };
 struct SvgLine {
   std::string colour, dash;
   double width;
   int panel;
   double cx = 0, cy = 0;  // the mean of its points
+  int plot = 0;           // its plot's number in the panel (0: not drawn by a plot)
+  std::vector<std::pair<double, double>> pts;  // for a plot's lines: its points
 };
+
+SvgLine makeLine(const std::string& colour, const std::string& dash, double width, int panel, double cx = 0, double cy = 0) {
+  SvgLine l;
+  l.colour = colour, l.dash = dash, l.width = width, l.panel = panel, l.cx = cx, l.cy = cy;
+  return l;
+}
 struct SvgMarker {
   std::string shape, colour;
   int panel;
+  double x = 0, y = 0, r = 0;
+  int plot = 0;
+};
+struct SvgArea {  // a filled polygon drawn by a plot (a bar), its extent
+  double x0, y0, x1, y1;
+  int panel, plot;
 };
 struct SvgDrawing {
   std::vector<SvgText> texts;
@@ -183,6 +201,7 @@ struct SvgDrawing {
   std::vector<std::pair<std::string, int>> fills;  // colour, panel
   std::vector<std::pair<double, double>> fillCentres;
   std::vector<SvgMarker> markers;
+  std::vector<SvgArea> areas;
 };
 
 std::string attr(const std::string& tag, const std::string& name) {
@@ -251,6 +270,7 @@ SvgDrawing readSvg(const std::string& s) {
   SvgDrawing d;
   std::map<int, std::array<double, 4>> extent;  // per panel: x0, y0, x1, y1 of its plots' points
   int depthInPlot = -1, depth = 0;
+  std::string plotTitle;
   struct Group {
     std::string stroke, colour;
     double width;
@@ -278,6 +298,8 @@ SvgDrawing readSvg(const std::string& s) {
         if (n == 1 || n <= plot) ++panel;
         plot = n;
         depthInPlot = depth;
+        const std::size_t t0 = s.find("<title>", end), t1 = s.find("</title>", end);
+        plotTitle = t0 != std::string::npos && t0 < end + 4 ? unescapeXml(s.substr(t0 + 7, t1 - t0 - 7)) : "";
       }
     } else if (tag == "</g>") {
       if (depth == depthInPlot) depthInPlot = -1;
@@ -292,6 +314,12 @@ SvgDrawing readSvg(const std::string& s) {
       const std::string family = attr(gtag, "font-family");
       const double size = std::atof(attr(gtag, "font-size").c_str());
       SvgText t;
+      const std::string tr = attr(gtag, "transform");
+      std::sscanf(tr.c_str(), "translate(%lf,%lf)", &t.x, &t.y);
+      if (const std::size_t r = tr.find("rotate("); r != std::string::npos) t.rotate = std::atof(tr.c_str() + r + 7);
+      t.anchor = attr(gtag, "text-anchor");
+      t.panel = panel;
+      t.plot = depthInPlot > 0 ? plot : 0;
       const std::regex span(R"(<tspan([^>]*)>([^<]*)</tspan>)");
       double dy = 0;
       for (auto it = std::sregex_iterator(inner.begin(), inner.end(), span); it != std::sregex_iterator(); ++it) {
@@ -305,6 +333,7 @@ SvgDrawing readSvg(const std::string& s) {
         const std::string txt = unescapeXml(std::regex_replace(inner, std::regex("<[^>]*>"), ""));
         if (!trim(txt).empty()) t.spans.push_back({family, txt, size, 0}), t.str = txt;
       }
+      t.key = t.plot > 0 && !t.spans.empty() && trim(t.str) == trim(plotTitle);
       if (!t.spans.empty()) d.texts.push_back(t);
       i = te;
       continue;
@@ -318,6 +347,15 @@ SvgDrawing readSvg(const std::string& s) {
         else it->second = {std::min(it->second[0], cx), std::min(it->second[1], cy), std::max(it->second[2], cx), std::max(it->second[3], cy)};
       }
       const std::string fill = attr(tag, "fill");
+      if (where > 0 && tag.compare(0, 8, "<polygon") == 0 && !fill.empty() && fill != "none") {
+        double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+        std::istringstream pts(attr(tag, "points"));
+        for (std::string pt; pts >> pt;) {
+          double x, y;
+          if (std::sscanf(pt.c_str(), "%lf,%lf", &x, &y) == 2) x0 = std::min(x0, x), y0 = std::min(y0, y), x1 = std::max(x1, x), y1 = std::max(y1, y);
+        }
+        if (x0 < x1) d.areas.push_back({x0, y0, x1, y1, where, plot});
+      }
       if (!fill.empty() && fill != "none" && fill.compare(0, 4, "url(") != 0) {
         d.fills.push_back({hexOf(fill == "currentColor" && !groups.empty() ? groups.back().colour : fill), where});
         d.fillCentres.push_back({cx, cy});
@@ -329,11 +367,26 @@ SvgDrawing readSvg(const std::string& s) {
         if (!stroke.empty() && stroke != "none")
         {
           const std::string w = attr(tag, "stroke-width");
-          d.lines.push_back({hexOf(stroke), attr(tag, "stroke-dasharray"), w.empty() ? (groups.empty() ? 1.0 : groups.back().width) : std::atof(w.c_str()), where, cx, cy});
+          SvgLine l = makeLine(hexOf(stroke), attr(tag, "stroke-dasharray"), w.empty() ? (groups.empty() ? 1.0 : groups.back().width) : std::atof(w.c_str()), where, cx, cy);
+          if (where > 0) {
+            l.plot = plot;
+            const std::string dd = attr(tag, "d");
+            for (std::size_t q = 0; q < dd.size(); ++q) {
+              if (dd[q] != 'M' && dd[q] != 'L') continue;
+              double x, y;
+              if (std::sscanf(dd.c_str() + q + 1, "%lf,%lf", &x, &y) == 2) l.pts.push_back({x, y});
+            }
+          }
+          d.lines.push_back(l);
         }
       }
     } else if (tag.compare(0, 4, "<use") == 0) {
-      d.markers.push_back({attr(tag, "xlink:href"), hexOf(attr(tag, "color")), panel});
+      SvgMarker m{attr(tag, "xlink:href"), hexOf(attr(tag, "color")), panel};
+      double sc = 1;
+      std::sscanf(attr(tag, "transform").c_str(), "translate(%lf,%lf) scale(%lf)", &m.x, &m.y, &sc);
+      m.r = sc;
+      m.plot = depthInPlot > 0 ? plot : 0;
+      d.markers.push_back(m);
     }
     i = end + 1;
   }
@@ -351,6 +404,8 @@ SvgDrawing readSvg(const std::string& s) {
     if (l.panel < 0) l.panel = place(l.cx, l.cy);
   for (std::size_t k = 0; k < d.fills.size(); ++k)
     if (d.fills[k].second < 0) d.fills[k].second = place(d.fillCentres[k].first, d.fillCentres[k].second);
+  for (SvgText& t : d.texts)
+    if (t.plot == 0) t.panel = place(t.x, t.y);
   return d;
 }
 
@@ -540,6 +595,192 @@ std::vector<std::string> notationBreaches(const SvgDrawing& svg, const std::vect
   return out;
 }
 
+
+// ---- charts ------------------------------------------------------------------------------------
+
+/// The value of a tick label: a number ("0.01", "−2", "1000") or a power of ten set as "10" with
+/// a superscript ("10^{3}"). False if it is neither.
+bool tickValue(const SvgText& t, double& v) {
+  auto number = [](std::string s, double& out) {
+    for (std::size_t at = s.find("\u2212"); at != std::string::npos; at = s.find("\u2212")) s.replace(at, 3, "-");
+    s = trim(s);
+    if (s.empty()) return false;
+    char* e = nullptr;
+    out = std::strtod(s.c_str(), &e);
+    return e && *e == 0;
+  };
+  if (t.spans.size() == 1) return number(t.spans[0].text, v);
+  double e;
+  if (t.spans.size() == 2 && trim(t.spans[0].text) == "10" && isSubOrSuper(t.spans[0], t.spans[1]) && number(t.spans[1].text, e)) {
+    v = std::pow(10.0, e);
+    return true;
+  }
+  return false;
+}
+
+/// A panel's y axis, read from its tick labels (right-aligned, upright, left of the plot): log if
+/// their values are a geometric progression in pixels, linear if arithmetic. `found` is false
+/// where the panel has fewer than three numeric tick labels (a geometric figure).
+struct Axis {
+  bool found = false, log = false;
+  double a = 0, b = 0;  // value = a + b y (log: log10(value) = a + b y)
+  double value(double y) const { return log ? std::pow(10.0, a + b * y) : a + b * y; }
+};
+
+Axis yAxis(const SvgDrawing& d, int panel) {
+  std::vector<std::pair<double, double>> ticks;  // y, value
+  for (const SvgText& t : d.texts) {
+    double v;
+    if (t.plot == 0 && t.panel == panel && t.anchor == "end" && std::fabs(t.rotate) < 1e-9 && tickValue(t, v)) ticks.push_back({t.y, v});
+  }
+  Axis ax;
+  if (ticks.size() < 3) return ax;
+  std::sort(ticks.begin(), ticks.end());
+  // How far the values are from a straight line in y (relative to their spread).
+  auto misfit = [&](bool log, double& a, double& b) {
+    const std::size_t n = ticks.size();
+    double sy = 0, sv = 0, syy = 0, syv = 0;
+    for (const auto& [y, v0] : ticks) {
+      const double v = log ? std::log10(v0) : v0;
+      sy += y, sv += v, syy += y * y, syv += y * v;
+    }
+    b = (n * syv - sy * sv) / (n * syy - sy * sy);
+    a = (sv - b * sy) / n;
+    double worst = 0, lo = 1e300, hi = -1e300;
+    for (const auto& [y, v0] : ticks) {
+      const double v = log ? std::log10(v0) : v0;
+      worst = std::max(worst, std::fabs(a + b * y - v)), lo = std::min(lo, v), hi = std::max(hi, v);
+    }
+    return worst / std::max(hi - lo, 1e-300);
+  };
+  double la, lb, ga = 0, gb = 0;
+  const double lin = misfit(false, la, lb);
+  bool positive = true;
+  for (const auto& t : ticks) positive = positive && t.second > 0;
+  const double lg = positive ? misfit(true, ga, gb) : 1e300;
+  ax.found = true;
+  ax.log = lg < lin;
+  ax.a = ax.log ? ga : la;
+  ax.b = ax.log ? gb : lb;
+  return ax;
+}
+
+/// Whether (x, y) is a key entry's sample: on the row of a key text of the same plot, within
+/// 4.5 em of the text on the side of its sample (gnuplot puts the sample right of a
+/// right-aligned text and left of a left-aligned one).
+bool inKeyRow(const SvgDrawing& d, int panel, int plot, double x, double y) {
+  for (const SvgText& t : d.texts) {
+    if (!t.key || t.panel != panel || t.plot != plot) continue;
+    const double em = t.spans[0].size;
+    const double along = t.anchor == "end" ? x - t.x : t.x - x;
+    if (std::fabs(y - (t.y - 0.3 * em)) < 0.7 * em && along > 0 && along < 4.5 * em) return true;
+  }
+  return false;
+}
+
+/// The y pixels of each series of a panel (a plot's markers, or else its lines' points, or
+/// else the tops of its bars), without its key sample.
+std::map<int, std::vector<double>> seriesYs(const SvgDrawing& d, int panel) {
+  std::map<int, std::vector<double>> ys;
+  for (const SvgMarker& m : d.markers)
+    if (m.plot > 0 && m.panel == panel && !inKeyRow(d, panel, m.plot, m.x, m.y)) ys[m.plot].push_back(m.y);
+  std::map<int, std::vector<double>> lines, bars;
+  for (const SvgLine& l : d.lines)
+    if (l.plot > 0 && l.panel == panel && l.dash.empty())
+      for (const auto& [x, y] : l.pts)
+        if (!inKeyRow(d, panel, l.plot, x, y)) lines[l.plot].push_back(y);
+  for (const SvgArea& a : d.areas)
+    if (a.panel == panel && !inKeyRow(d, panel, a.plot, 0.5 * (a.x0 + a.x1), a.y0)) bars[a.plot].push_back(a.y0);
+  for (auto& [plot, v] : lines)
+    if (!ys.count(plot)) ys[plot] = v;
+  for (auto& [plot, v] : bars)
+    if (!ys.count(plot)) ys[plot] = v;
+  return ys;
+}
+
+/// Every series that spans more than a decade on a linear y axis.
+std::vector<std::string> linearDecades(const SvgDrawing& d) {
+  std::vector<std::string> out;
+  int panels = 0;
+  for (const SvgText& t : d.texts) panels = std::max(panels, t.panel);
+  for (const SvgMarker& m : d.markers) panels = std::max(panels, m.panel);
+  for (int p = 1; p <= panels; ++p) {
+    const Axis ax = yAxis(d, p);
+    if (!ax.found || ax.log) continue;
+    for (const auto& [plot, ys] : seriesYs(d, p)) {
+      double lo = 1e300, hi = 0;
+      for (double y : ys) {
+        const double v = ax.value(y);
+        if (v > 0) lo = std::min(lo, v), hi = std::max(hi, v);
+      }
+      if (hi > 10 * lo) {
+        char buf[160];
+        std::snprintf(buf, sizeof buf, "panel %d, plot %d spans %.3g to %.3g (%.1f decades) on a linear y axis", p, plot, lo, hi,
+                      std::log10(hi / lo));
+        out.push_back(buf);
+      }
+    }
+  }
+  return out;
+}
+
+/// Every data point under a key: the key's box (its entries' texts and the samples drawn on
+/// their rows) holds the centre of a marker of a series.
+std::vector<std::string> keyCovers(const SvgDrawing& d) {
+  std::vector<std::string> out;
+  std::map<int, std::array<double, 4>> box;  // per panel
+  auto grow = [&](int panel, const std::array<double, 4>& e) {
+    auto it = box.find(panel);
+    if (it == box.end()) box[panel] = e;
+    else it->second = {std::min(it->second[0], e[0]), std::min(it->second[1], e[1]), std::max(it->second[2], e[2]), std::max(it->second[3], e[3])};
+  };
+  for (const SvgText& t : d.texts) {
+    if (!t.key) continue;
+    const double em = t.spans[0].size;
+    double w = 0;  // the text's width: half an em a character (DejaVu Sans's mean advance)
+    for (const SvgSpan& sp : t.spans)
+      for (unsigned char c : sp.text) w += (c & 0xC0) != 0x80 ? 0.5 * sp.size : 0;
+    const double x0 = t.anchor == "end" ? t.x - w : t.anchor == "middle" ? t.x - w / 2 : t.x;
+    grow(t.panel, {x0, t.y - 1.0 * em, x0 + w, t.y + 0.3 * em});
+  }
+  for (const SvgMarker& m : d.markers)
+    if (m.plot > 0 && box.count(m.panel) && inKeyRow(d, m.panel, m.plot, m.x, m.y)) grow(m.panel, {m.x - m.r, m.y - m.r, m.x + m.r, m.y + m.r});
+  for (const SvgLine& l : d.lines)
+    if (l.plot > 0 && box.count(l.panel))
+      for (const auto& [x, y] : l.pts)
+        if (inKeyRow(d, l.panel, l.plot, x, y)) grow(l.panel, {x, y, x, y});
+  for (const auto& [panel, b] : box) {
+    for (const SvgMarker& m : d.markers)
+      if (m.plot > 0 && m.panel == panel && !inKeyRow(d, panel, m.plot, m.x, m.y) && m.x > b[0] && m.x < b[2] && m.y > b[1] && m.y < b[3]) {
+        char buf[160];
+        std::snprintf(buf, sizeof buf, "panel %d: the key (%.0f..%.0f, %.0f..%.0f) covers a point of plot %d at (%.0f, %.0f)", panel, b[0], b[2], b[1], b[3], m.plot, m.x, m.y);
+        out.push_back(buf);
+      }
+  }
+  return out;
+}
+
+/// The \image line of a figure in book/*.md ("" if no page embeds it).
+std::string captionOf(const std::string& figure) {
+  for (const auto& e : fs::directory_iterator(fs::path(DT_SOURCE_DIR) / "book")) {
+    if (e.path().extension() != ".md") continue;
+    std::istringstream in(slurp(e.path()));
+    for (std::string line; std::getline(in, line);)
+      if (line.find("\\image html " + figure + ".") != std::string::npos) return line;
+  }
+  return "";
+}
+
+/// Why a timing chart's caption does not state its k ("" if it does): it must say "median of"
+/// and cite the key.
+std::string timingCaptionMissing(const std::string& caption, const std::string& key) {
+  if (caption.empty()) return "no page embeds it";
+  if (caption.find("median of") == std::string::npos) return "its caption does not say the times are medians (\"median of\")";
+  if (caption.find("@{" + key + "}") == std::string::npos && caption.find("@{" + key + "|") == std::string::npos)
+    return "its caption does not cite k as @{" + key + "}";
+  return "";
+}
+
 // ---- one run of the chapter programs ---------------------------------------------------------
 
 fs::path figureDir() {
@@ -656,8 +897,8 @@ TEST_CASE("figures the colour checks find a shared colour a written colour and a
   // A declared dash cue that the figure does not draw is a breach; drawn, it passes.
   pairs[0].cue = "dash:C_A";
   SvgDrawing svg;
-  svg.lines.push_back({"#1a9641", "", 2, 1});
-  svg.lines.push_back({"#d7191c", "", 2, 1});
+  svg.lines.push_back(makeLine("#1a9641", "", 2, 1));
+  svg.lines.push_back(makeLine("#d7191c", "", 2, 1));
   CHECK(pairBreaches(pairs, pal, {{"fig", svg}}).size() == 1);
   svg.lines[0].dash = "6,4";
   CHECK(pairBreaches(pairs, pal, {{"fig", svg}}).empty());
@@ -772,17 +1013,17 @@ TEST_CASE("figures no figure writes a symbol of the notes upright or in ASCII") 
 TEST_CASE("figures the promise check finds a dash-dot drawn as dashes and a missing fill") {
   const auto pal = palette(styleText());
   SvgDrawing svg;
-  svg.lines.push_back({hexOf(pal.at("C_CIRCLE")), "11.9,19.0", 4.8, 1});
+  svg.lines.push_back(makeLine(hexOf(pal.at("C_CIRCLE")), "11.9,19.0", 4.8, 1));
   svg.fills.push_back({hexOf(pal.at("C_BALL")), 1});
   CHECK(promiseBroken({"f", "dashed", "C_CIRCLE", 0, ""}, pal, svg).empty());
   CHECK(!promiseBroken({"f", "dashdot", "C_CIRCLE", 0, ""}, pal, svg).empty());
-  svg.lines.push_back({hexOf(pal.at("C_CIRCLE")), "23.8,9.5,4.8,9.5", 4.8, 1});
+  svg.lines.push_back(makeLine(hexOf(pal.at("C_CIRCLE")), "23.8,9.5,4.8,9.5", 4.8, 1));
   CHECK(promiseBroken({"f", "dashdot", "C_CIRCLE", 0, ""}, pal, svg).empty());
   CHECK(!promiseBroken({"f", "dashdot", "C_CIRCLE", 2, ""}, pal, svg).empty());  // not in panel 2
   CHECK(promiseBroken({"f", "fill", "C_BALL", 0, ""}, pal, svg).empty());
   CHECK(!promiseBroken({"f", "fill", "C_CAVITY", 0, ""}, pal, svg).empty());
   CHECK(!promiseBroken({"f", "solid", "C_CIRCLE", 0, ""}, pal, svg).empty());
-  svg.lines.push_back({hexOf(pal.at("C_CONSTRUCT")), "2,6", 1.5, 1});
+  svg.lines.push_back(makeLine(hexOf(pal.at("C_CONSTRUCT")), "2,6", 1.5, 1));
   CHECK(promiseBroken({"f", "dotted", "C_CONSTRUCT", 0, ""}, pal, svg).empty());
   CHECK(!promiseBroken({"f", "dashed", "C_CONSTRUCT", 0, ""}, pal, svg).empty());
   const auto parsed = promises("fig_x dashed C_CIRCLE panel 3 the circle (dashed)\n# a comment\nfig_y fill C_BALL green\n");
@@ -804,5 +1045,109 @@ TEST_CASE("figures every caption promise of figures/ch2/promises.txt is drawn in
     }
     const std::string why = promiseBroken(p, pal, it->second);
     CHECK_MESSAGE(why.empty(), p.figure << ".svg, caption \"" << p.words << "\": " << why);
+  }
+}
+
+// ---- charts --------------------------------------------------------------------------------------
+
+namespace {
+
+/// A chart of one panel: tick labels 0, 50, 100 (or 10^0, 10^1, 10^2) at y = 300, 200, 100
+/// (linear: 2 px per unit), a series of markers at the values `vals`, and a key entry "series"
+/// at (kx, ky).
+SvgDrawing tinyChart(bool log, const std::vector<double>& vals, double kx, double ky) {
+  SvgDrawing d;
+  const double ys[3] = {300, 200, 100};
+  for (int k = 0; k < 3; ++k) {
+    SvgText t;
+    t.x = 50, t.y = ys[k], t.anchor = "end", t.panel = 1;
+    if (log) t.spans = {{"Sans", "10", 20, 0}, {"Sans", std::to_string(k), 16, -8}};
+    else t.spans = {{"Sans", std::to_string(50 * k), 20, 0}};
+    for (const SvgSpan& sp : t.spans) t.str += sp.text;
+    d.texts.push_back(t);
+  }
+  SvgText key;
+  key.spans = {{"Sans", "series", 20, 0}};
+  key.str = "series", key.x = kx, key.y = ky, key.anchor = "end", key.panel = 1, key.plot = 1, key.key = true;
+  d.texts.push_back(key);
+  for (std::size_t i = 0; i < vals.size(); ++i) {
+    const double y = log ? 300 - 100 * std::log10(vals[i]) : 300 - 2 * vals[i];
+    d.markers.push_back({"#gpPt7", "#1f77b4", 1, 100 + 30.0 * double(i), y, 4, 1});
+  }
+  d.markers.push_back({"#gpPt7", "#1f77b4", 1, kx + 50, ky - 6, 4, 1});  // the key's sample
+  return d;
+}
+
+}  // namespace
+
+TEST_CASE("figures the chart checks find a decade on a linear axis and a key over a point") {
+  // 2 to 90 on a linear axis: over a decade.
+  CHECK(linearDecades(tinyChart(false, {2, 10, 90}, 400, 320)).size() == 1);
+  CHECK(linearDecades(tinyChart(false, {20, 50, 90}, 400, 320)).empty());
+  // The same values on a log axis: fine.
+  CHECK(linearDecades(tinyChart(true, {2, 10, 90}, 400, 320)).empty());
+  const Axis ax = yAxis(tinyChart(true, {1}, 400, 320), 1);
+  CHECK(ax.found);
+  CHECK(ax.log);
+  CHECK(ax.value(150) == doctest::Approx(std::pow(10.0, 1.5)));
+  // A key placed on the third point (x 160, y 120) covers it; away from the data it does not.
+  CHECK(keyCovers(tinyChart(false, {20, 50, 90}, 200, 126)).size() == 1);
+  CHECK(keyCovers(tinyChart(false, {20, 50, 90}, 400, 320)).empty());
+  // A timing caption must say "median of" and cite k.
+  CHECK(timingCaptionMissing("\\image html f.png \"Times, the median of @{x.runs} runs.\"", "x.runs").empty());
+  CHECK(!timingCaptionMissing("\\image html f.png \"Times, the best of @{x.runs} runs.\"", "x.runs").empty());
+  CHECK(!timingCaptionMissing("\\image html f.png \"Times, the median of 3 runs.\"", "x.runs").empty());
+}
+
+TEST_CASE("figures no series of a chart spans more than a decade on a linear axis") {
+  REQUIRE(runSvgs().size() >= 20);
+  std::map<std::string, std::string> kind;  // figure -> chart or coordinates
+  for (const std::string& line : dataLines(slurp(kFigDir / "charts.txt"))) {
+    std::istringstream in(line);
+    std::string k, f;
+    in >> k >> f;
+    REQUIRE_MESSAGE((k == "chart" || k == "coordinates"), "charts.txt: " << line);
+    kind[f] = k;
+  }
+  int charts = 0;
+  for (const auto& [name, svg] : runSvgs()) {
+    const bool axes = yAxis(svg, 1).found;
+    CHECK_MESSAGE((!axes || kind.count(name) == 1), name << ".svg has numeric axes but is not in figures/ch2/charts.txt");
+    if (kind.count(name) && kind[name] == "chart") {
+      ++charts;
+      CHECK_MESSAGE(axes, name << ".svg: the check finds no numeric y axis in its first panel");
+      for (const std::string& b : linearDecades(svg)) FAIL_CHECK(name << ".svg: " << b);
+    }
+  }
+  CHECK(charts >= 6);
+}
+
+TEST_CASE("figures no key of a chart covers a data point") {
+  int keys = 0;
+  for (const auto& [name, svg] : runSvgs()) {
+    keys += std::any_of(svg.texts.begin(), svg.texts.end(), [](const SvgText& t) { return t.key; });
+    for (const std::string& b : keyCovers(svg)) FAIL_CHECK(name << ".svg: " << b);
+  }
+  CHECK(keys >= 5);  // the check finds the keys at all
+}
+
+TEST_CASE("figures every timing chart shows medians and its caption cites their number of runs") {
+  std::map<std::string, std::string> values;  // every value the run's programs wrote
+  for (const auto& e : fs::directory_iterator(figureDir()))
+    if (e.path().filename().string().rfind("values_", 0) == 0) {
+      std::istringstream in(slurp(e.path()));
+      for (std::string line; std::getline(in, line);)
+        if (line.find(' ') != std::string::npos) values[line.substr(0, line.find(' '))] = line.substr(line.find(' ') + 1);
+    }
+  const auto rows = dataLines(slurp(kFigDir / "timings.txt"));
+  REQUIRE(rows.size() >= 4);
+  for (const std::string& row : rows) {
+    std::istringstream in(row);
+    std::string figure, key;
+    in >> figure >> key;
+    const std::string why = timingCaptionMissing(captionOf(figure), key);
+    CHECK_MESSAGE(why.empty(), figure << ": " << why);
+    CHECK_MESSAGE(values.count(key) == 1, figure << ": no program of the run wrote the value " << key);
+    if (values.count(key)) CHECK_MESSAGE(std::atoi(values[key].c_str()) >= 1, key << " = " << values[key]);
   }
 }
