@@ -634,8 +634,20 @@ Axis yAxis(const SvgDrawing& d, int panel) {
     if (t.plot == 0 && t.panel == panel && t.anchor == "end" && std::fabs(t.rotate) < 1e-9 && tickValue(t, v)) ticks.push_back({t.y, v});
   }
   Axis ax;
-  if (ticks.size() < 3) return ax;
   std::sort(ticks.begin(), ticks.end());
+  if (ticks.size() == 2) {
+    // Two labels a decade or more apart, both powers of ten (0.01 and 0.1): a log axis (a
+    // linear one gnuplot labels at least three times).
+    const double l0 = std::log10(ticks[0].second), l1 = std::log10(ticks[1].second);
+    if (ticks[0].second > 0 && ticks[1].second > 0 && std::fabs(l0 - std::round(l0)) < 1e-9 && std::fabs(l1 - std::round(l1)) < 1e-9 &&
+        std::fabs(l0 - l1) >= 1 - 1e-9) {
+      ax.found = ax.log = true;
+      ax.b = (l1 - l0) / (ticks[1].first - ticks[0].first);
+      ax.a = l0 - ax.b * ticks[0].first;
+    }
+    return ax;
+  }
+  if (ticks.size() < 3) return ax;
   // How far the values are from a straight line in y (relative to their spread).
   auto misfit = [&](bool log, double& a, double& b) {
     const std::size_t n = ticks.size();
@@ -1090,6 +1102,12 @@ TEST_CASE("figures the chart checks find a decade on a linear axis and a key ove
   CHECK(ax.found);
   CHECK(ax.log);
   CHECK(ax.value(150) == doctest::Approx(std::pow(10.0, 1.5)));
+  SvgDrawing two = tinyChart(true, {1}, 400, 320);
+  two.texts.erase(two.texts.begin() + 1);  // labels 10^0 and 10^2 only: still a log axis
+  CHECK(yAxis(two, 1).log);
+  two.texts[0].spans = {{"Sans", "0", 20, 0}};  // 0 and 100: no axis can be read
+  two.texts[1].spans = {{"Sans", "100", 20, 0}};
+  CHECK(!yAxis(two, 1).found);
   // A key placed on the third point (x 160, y 120) covers it; away from the data it does not.
   CHECK(keyCovers(tinyChart(false, {20, 50, 90}, 200, 126)).size() == 1);
   CHECK(keyCovers(tinyChart(false, {20, 50, 90}, 400, 320)).empty());
