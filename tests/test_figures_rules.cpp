@@ -690,8 +690,8 @@ bool inKeyRow(const SvgDrawing& d, int panel, int plot, double x, double y) {
   return false;
 }
 
-/// The y pixels of each series of a panel (a plot's markers, or else its lines' points, or
-/// else the tops of its bars), without its key sample.
+/// The y pixels of each series of a panel (a plot's markers, or else the tops of its bars, or
+/// else its lines' points), without its key sample.
 std::map<int, std::vector<double>> seriesYs(const SvgDrawing& d, int panel) {
   std::map<int, std::vector<double>> ys;
   for (const SvgMarker& m : d.markers)
@@ -703,9 +703,9 @@ std::map<int, std::vector<double>> seriesYs(const SvgDrawing& d, int panel) {
         if (!inKeyRow(d, panel, l.plot, x, y)) lines[l.plot].push_back(y);
   for (const SvgArea& a : d.areas)
     if (a.panel == panel && !inKeyRow(d, panel, a.plot, 0.5 * (a.x0 + a.x1), a.y0)) bars[a.plot].push_back(a.y0);
-  for (auto& [plot, v] : lines)
+  for (auto& [plot, v] : bars)  // a bar's outline holds its base: its top is the value
     if (!ys.count(plot)) ys[plot] = v;
-  for (auto& [plot, v] : bars)
+  for (auto& [plot, v] : lines)
     if (!ys.count(plot)) ys[plot] = v;
   return ys;
 }
