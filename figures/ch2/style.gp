@@ -32,7 +32,7 @@ FIGSIZES = " fig2_1 1400 640" . \
            " fig2_11 1400 740" . \
            " fig2_12 1400 780" . \
            " fig_brio_compare 1500 900" . \
-           " fig_brio_rounds 1500 540" . \
+           " fig_brio_rounds 1500 560" . \
            " fig_flip 1400 760" . \
            " fig_incircle_naive 1400 800" . \
            " fig_incircle_robust 1400 800" . \
