@@ -16,6 +16,7 @@
 #include <random>
 
 #include "check.h"
+#include "colour_vision.h"
 #include "common.h"
 #include "generators.h"
 #include "predicates.h"
@@ -213,6 +214,20 @@ void orientMaps(const ch::Options& o) {
          ch::fmt("%ld / %ld", dt::agreeingCells(cnCBA, cnABC, -1), cells), "-"});
   r.emit(o, "table_orient_relations");
 
+  // fig2_7_deuteranopia: Figure 2.7 as a deuteranope sees it (Machado et al. 2009, severity 1,
+  // chapters/colour_vision.h). The map's only colours are the three signs; its text, axes and
+  // background are black and white, which the simulation leaves as they are. So drawing the map
+  // with the simulated sign colours is the simulation of the whole figure.
+  {
+    std::ifstream in(std::string(DT_SOURCE_DIR) + "/figures/ch2/style.gp");
+    std::stringstream style;
+    style << in.rdbuf();
+    std::string gp = "# The sign colours of figures/ch2/style.gp as a deuteranope sees them (sec2_3_1_predicates).\n";
+    for (const char* role : {"C_MINUS", "C_ZERO", "C_PLUS"})
+      gp += std::string("D") + (role + 1) + " = \"" +
+            ch::toHex(ch::simulate(ch::styleColour(style.str(), role), ch::Vision::Deuteranopia)) + "\"\n";
+    ch::writeOut(o, "sign_colours_deuteranopia.gp", gp);
+  }
   ch::runGnuplot(o, "fig2_7.gp");
   ch::runGnuplot(o, "fig2_8.gp");
 }

@@ -114,14 +114,14 @@ void figureFlip(const ch::Options& o) {
     const dt::Face* g = f->F[k];
     for (const dt::Face* h : {static_cast<const dt::Face*>(f), g}) {
       // The style's colours: the two faces replaced (cavity), the two made (ball), neighbours.
-      obj += polygon(id, {h->V[0], h->V[1], h->V[2]}, after ? "#b8e0b0" : "#f9c58d");
+      obj += polygon(id, {h->V[0], h->V[1], h->V[2]}, after ? "#e5f5d5" : "#f0a830");
       for (int j = 0; j < 3; ++j) {
         const dt::Face* n = h->F[j];
         if (n != nullptr && n != f && n != g && !n->isGhost())
-          obj += polygon(id, {n->V[0], n->V[1], n->V[2]}, "#c6dbef");
+          obj += polygon(id, {n->V[0], n->V[1], n->V[2]}, "#6aaed6");
       }
     }
-    obj += segment(e0, e1, after ? "#2e7d32" : "#c51b7d", 3.5);
+    obj += segment(e0, e1, after ? "#004d40" : "#c51b7d", 3.5);
     // The panel, laid out in pixels (VIEW), and each label placed clear of every edge and
     // label of it.
     const ch::FigureSize fs = ch::figureSize("fig_flip");
@@ -271,12 +271,12 @@ void figureRecovery(const ch::Options& o) {
     // conv(S) in pink, the triangles of S in pale blue on top: pink shows what they miss
     // (the style's colours: uncovered hull, covered hull, the removed edge in the conflict
     // colour, the new one in the ball's).
-    fr.obj += polygon(id, hull, "#f4b6d2");
+    fr.obj += polygon(id, hull, "#f4a582");
     for (const dt::Face* f : R.finiteFaces())
       if (f->V[0]->id >= 0 && f->V[1]->id >= 0 && f->V[2]->id >= 0)
         fr.obj += polygon(id, {f->V[0], f->V[1], f->V[2]}, "#dde6f0");
     if (e0) fr.obj += segment(e0, e1, "#c51b7d", 2.5, "2"), placer.segment(e0->x, e0->y, e1->x, e1->y, 2.5 * lw);
-    if (n0) fr.obj += segment(n0, n1, "#2e7d32", 3), placer.segment(n0->x, n0->y, n1->x, n1->y, 3 * lw);
+    if (n0) fr.obj += segment(n0, n1, "#004d40", 3), placer.segment(n0->x, n0->y, n1->x, n1->y, 3 * lw);
     fr.obj += "ftitle = \"" + title + "\"\n";
     std::vector<const dt::Face*> F;
     for (const dt::Face* f : R.finiteFaces())

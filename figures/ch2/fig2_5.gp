@@ -20,7 +20,7 @@ do for [term in "png svg"] {
     eval "plot datadir.sprintf('/fig2_5_%d.dat', k) with lines lw 1.5 lc rgb C_TRI, " . \
          "datadir.'/fig2_5_super.dat' using 1:2 with points pt 5 ps (1.3*PS) lc rgb C_SUPER, " . \
          "datadir.'/fig2_5_super.dat' using 4:5:3 with labels tc rgb C_SUPER font ',' . sprintf('%.1f', 0.85 * FS), " . \
-         "datadir.'/fig2_5_points.dat' using 1:2 with points pt 6 ps (1.3*PS) lc rgb '#808080', " . \
+         "datadir.'/fig2_5_points.dat' using 1:2 with points pt 6 ps (1.3*PS) lc rgb C_PENDING, " . \
          "datadir.'/fig2_5_points.dat' using 4:5:3 with labels tc rgb C_TRI font ',' . sprintf('%.1f', 0.85 * FS)" . inserted
   }
   unset multiplot

@@ -48,7 +48,7 @@ do for [pass=0:1] {
        (f == 0 ? datadir."/fig2_5_super.dat" : stem."_fill.dat") using 1:(bal ? $2 : NaN) with lines lw 2.5 lc rgb C_BALL_EDGE notitle, \
        datadir."/fig2_5_super.dat" using 1:2 with points pt 5 ps (1.3*PS) lc rgb C_SUPER notitle, \
        datadir."/fig2_5_super.dat" using 6:7:(pass == 0 ? strcol(3) : strcol(8)) with labels tc rgb C_SUPER notitle, \
-       datadir."/fig2_5_points.dat" using 1:2 with points pt 6 ps (1.3*PS) lc rgb "#808080" notitle, \
+       datadir."/fig2_5_points.dat" using 1:2 with points pt 6 ps (1.3*PS) lc rgb C_PENDING notitle, \
        datadir."/fig2_5_points.dat" using 1:($0 < npoints ? $2 : NaN) with points pt 7 ps (1.3*PS) lc rgb C_POINT notitle, \
        datadir."/fig2_5_points.dat" using 6:($0 < npoints ? $7 : NaN):(pass == 0 ? strcol(3) : strcol(8)) with labels tc rgb C_TRI notitle, \
        (f == 0 ? datadir."/fig2_5_super.dat" : stem."_p.dat") using 1:(f == 0 ? NaN : $2) with points pt 7 ps (1.8*PS) lc rgb C_NEW notitle, \
