@@ -451,7 +451,9 @@ class LabelPlacer {
   /// no edge separates a label from its point). Among the candidates that keep these rules, the
   /// nearest one clear of every obstacle by `gap` px, else the clearest; `preferDeg` is tried
   /// first; `angleDeg`, if given, receives the direction chosen (to prefer it in the next panel
-  /// or frame). Only if no candidate keeps the rules (a crowded point) does it fall back to place().
+  /// or frame). If no candidate within maxEm is clear, one up to 2 maxEm away that is; failing
+  /// that the clearest within maxEm; only if no candidate keeps the rules does it fall back to
+  /// place().
   std::pair<double, double> placeAttached(double x, double y, const std::string& text, const std::vector<Seg>& edges,
                                           double preferDeg = NAN, double gap = 3, double maxEm = 1.5,
                                           double* angleDeg = nullptr) {
@@ -461,7 +463,7 @@ class LabelPlacer {
     const double X = p_.px(x), Y = p_.py(y);
     std::vector<std::array<double, 4>> px;
     for (const Seg& e : edges) px.push_back({p_.px(e.x0), p_.py(e.y0), p_.px(e.x1), p_.py(e.y1)});
-    double bestScore = -1e300, bx = NAN, by = NAN, ba = 0;
+    double bestScore = -1e300, bestC = -1e300, bx = NAN, by = NAN, ba = 0;
     for (int ring = 0; ring < 24; ++ring) {
       const double r = 0.08 * ring * em_;
       for (int k = -1; k < 48; ++k) {
@@ -487,10 +489,24 @@ class LabelPlacer {
           return {p_.x0 + (ccx - p_.left) / p_.scale(), p_.y1 - (ccy - p_.top) / p_.scale()};
         }
         const double score = c - 0.01 * ring;
-        if (score > bestScore) bestScore = score, bx = ccx, by = ccy, ba = a;
+        if (score > bestScore) bestScore = score, bestC = c, bx = ccx, by = ccy, ba = a;
       }
     }
-    if (std::isnan(bx)) return place(x, y, text, preferDeg, gap);
+    // Nothing within maxEm keeps off every line (a vertex with many edges): farther, up to
+    // twice as far, on the same rules, before a label that touches a line.
+    if (!farther_ && bestC < 0) {
+      farther_ = true;
+      const std::size_t nb = boxes_.size();
+      double fa = NAN;
+      const auto far = placeAttached(x, y, text, edges, preferDeg, gap, 2 * maxEm, &fa);
+      farther_ = false;
+      if (boxes_.size() > nb && clearance(boxes_.back(), true) >= gap) {
+        if (angleDeg) *angleDeg = fa;
+        return far;
+      }
+      boxes_.resize(nb);
+    }
+    if (std::isnan(bx)) return farther_ ? std::pair<double, double>{NAN, NAN} : place(x, y, text, preferDeg, gap);
     if (angleDeg) *angleDeg = ba * 180 / M_PI;
     boxes_.push_back({bx - hw, by - up, bx + hw, by + down});
     return {p_.x0 + (bx - p_.left) / p_.scale(), p_.y1 - (by - p_.top) / p_.scale()};
@@ -498,11 +514,12 @@ class LabelPlacer {
 
   /// The least distance in px from the box to any obstacle or the panel's edge (negative
   /// inside one).
-  double clearance(const PxBox& b) const {
+  double clearance(const PxBox& b, bool skipLast = false) const {
     double c = std::min({b.x0 - p_.left, p_.left + p_.w - b.x1, b.y0 - p_.top, p_.top + p_.h - b.y1});
     for (const auto& s : segs_) c = std::min(c, boxSeg(b, s) - s[4]);
     for (const auto& d : discs_) c = std::min(c, boxPoint(b, d[0], d[1]) - d[2]);
-    for (const PxBox& o : boxes_) {
+    for (std::size_t i = 0; i + (skipLast ? 1 : 0) < boxes_.size(); ++i) {
+      const PxBox& o = boxes_[i];
       const double dx = std::max({o.x0 - b.x1, b.x0 - o.x1, 0.0}), dy = std::max({o.y0 - b.y1, b.y0 - o.y1, 0.0});
       c = std::min(c, (dx == 0 && dy == 0) ? -1e3 : std::hypot(dx, dy));  // never on a label
     }
@@ -540,6 +557,7 @@ class LabelPlacer {
   std::vector<std::array<double, 5>> segs_;  // x0 y0 x1 y1 half-width, px
   std::vector<std::array<double, 3>> discs_;
   std::vector<PxBox> boxes_;
+  bool farther_ = false;  // placeAttached is looking beyond its maxEm
 };
 
 }  // namespace ch

@@ -569,7 +569,7 @@ void figures21to24(const ch::Options& o) {
     const std::string name = ch::mathText(tex);
     // Beside its vertex, on its side of every edge (issue 42: these were 100-135 px away).
     const auto [lx, ly] = placer.placeAttached(v->x, v->y, name, afterSegs);
-    labels4 += num(lx) + " " + num(ly) + " " + ch::quoted(name) + "\n";
+    labels4 += num(lx) + " " + num(ly) + " " + ch::quoted(name) + " " + num(v->x) + " " + num(v->y) + "\n";  // and its point
   };
   label(p, "p_{n+1}");
   label(si, "\\sigma_i");

@@ -142,10 +142,12 @@ void figure25(const ch::Options& o) {
   // Points and labels. fig2_5_points.dat and fig2_5_super.dat: x y name giflabel (the markers).
   // Each panel K of Figure 2.5 has its own labels (fig2_5_labels_K.dat: x y name lx ly super),
   // placed with that panel's edges by placeAttached: beside its own point, on the point's side
-  // of every edge, within 1.5 em (one place for six panels was next to other points: issue 42).
+  // of every edge, within 1.5 em of the figure (1.5 / 0.85 of the labels' own em; one place for
+  // six panels was next to other points: issue 42).
   // A label keeps its direction from panel to panel where it can. Each animation frame has its
   // labels too (fig2_5_anim_NN_labels.dat: x y name lx ly super giflabel), in the direction of
-  // the static panel that shows the same triangulation, clear of the frame's circles.
+  // the static panel that shows the same triangulation (at its very places on a frame without
+  // circles), clear of the frame's circles.
   {
     double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
     for (std::size_t i = 0; i < xy.size(); i += 2)
@@ -169,6 +171,7 @@ void figure25(const ch::Options& o) {
     // The labels of Figure 2.5 are set at 0.85 em (7.2 pt at 15 cm printed, 2 x 3 panels).
     std::vector<double> angle(np, NAN);
     std::vector<std::vector<double>> staticAngle(10, std::vector<double>(np, NAN));
+    std::map<int, std::vector<std::pair<double, double>>> staticAt;  // each panel's labels, by its k
     std::string view;
     for (int k = 0; k < 6; ++k) {
       const ch::Panel pk = ch::cellPanel(fs, 2, 3, k, x0 - m, x1 + m, y0 - m, y1 + m);
@@ -176,12 +179,23 @@ void figure25(const ch::Options& o) {
       ch::LabelPlacer place(pk, 0.85 * fs.em);
       place.segments(shown[k], 1.5 * std::max(1.5, fs.em / 18));
       for (std::size_t i = 0; i < np; ++i) place.marker(xy[2 * i], xy[2 * i + 1], ch::pointRadius(fs, 1.3));
-      std::string labels;
+      // The most crowded points first (most edges at them): their few clear wedges go to them.
+      std::vector<std::size_t> order(np);
+      std::vector<int> degree(np, 0);
       for (std::size_t i = 0; i < np; ++i) {
-        const auto [lx, ly] = place.placeAttached(xy[2 * i], xy[2 * i + 1], name(i), shown[k], angle[i], 3, 1.5, &angle[i]);
-        staticAngle[panelOf[k]][i] = angle[i];
-        labels += row(i, lx, ly) + "\n";
+        order[i] = i;
+        for (const ch::Seg& e : shown[k])
+          degree[i] += (e.x0 == xy[2 * i] && e.y0 == xy[2 * i + 1]) || (e.x1 == xy[2 * i] && e.y1 == xy[2 * i + 1]);
       }
+      std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return degree[a] > degree[b]; });
+      std::vector<std::pair<double, double>> at(np);
+      for (const std::size_t i : order) {
+        at[i] = place.placeAttached(xy[2 * i], xy[2 * i + 1], name(i), shown[k], angle[i], 3, 1.5 / 0.85, &angle[i]);
+        staticAngle[panelOf[k]][i] = angle[i];
+      }
+      staticAt[panelOf[k]] = at;
+      std::string labels;
+      for (std::size_t i = 0; i < np; ++i) labels += row(i, at[i].first, at[i].second) + "\n";
       ch::writeOut(o, ch::fmt("fig2_5_labels_%d.dat", panelOf[k]), labels);
     }
     std::string pts, sup;
@@ -190,24 +204,47 @@ void figure25(const ch::Options& o) {
                                       ch::quoted(ch::mathTextGif(pname(all.ids[i]))) + "\n";
     ch::writeOut(o, "fig2_5_points.dat", pts);
     ch::writeOut(o, "fig2_5_super.dat", sup);
-    ch::writeOut(o, "fig2_5_view.gp", view + "VIEWA = \"" + pa.gnuplot() + "\"\n");
+    // The animation's labels and markers are Figure 2.5's scaled to its view, so that a label
+    // copied from a panel keeps the same room around it (fig2_5_anim.gp: ANIM_FONT of FS, ANIM_PS
+    // of PS; the labels set smaller than Figure 2.5's where the view is smaller).
+    const double ratio = pa.scale() / ch::cellPanel(fs, 2, 3, 0, x0 - m, x1 + m, y0 - m, y1 + m).scale();
+    const double animFont = 0.85 * fs.em * ratio / fa.em, animPs = 1.3 * fs.em * ratio / fa.em;
+    ch::writeOut(o, "fig2_5_view.gp", view + "VIEWA = \"" + pa.gnuplot() + "\"\n" +
+                                          ch::fmt("ANIM_FONT = %.4f; ANIM_PS = %.4f\n", animFont, animPs));
     std::vector<double> fangle(np, NAN);
     for (int f = 0; f < frame; ++f) {
       // The triangulation a frame shows: DT_k on the ball frame 2k, DT_{k-1} on the cavity
       // frame 2k-1; the points inserted so far (and the one being inserted) are labelled.
       const int k = f == 0 ? 0 : f % 2 == 0 ? f / 2 : (f - 1) / 2;
       const std::size_t labelled = 4 + std::size_t((f + 1) / 2);
-      ch::LabelPlacer place(pa, 0.8 * fa.em);  // fig2_5_anim.gp: labels at 0.8 em, markers 1.0 and 1.5 PS
+      ch::LabelPlacer place(pa, animFont * fa.em);
       place.segments(allFrames[f], 1.5 * std::max(1.5, fa.em / 18));
       for (const CircleXY& c : frameCircles[f]) place.circle(c.x, c.y, c.r, 1.5 * std::max(1.5, fa.em / 18));
-      for (std::size_t i = 0; i < np; ++i) place.marker(xy[2 * i], xy[2 * i + 1], ch::pointRadius(fa, 1.0));
-      if (frameNew[f] >= 0) place.marker(xy[2 * frameNew[f]], xy[2 * frameNew[f] + 1], ch::pointRadius(fa, 1.5));
+      for (std::size_t i = 0; i < np; ++i) place.marker(xy[2 * i], xy[2 * i + 1], ch::pointRadius(fa, animPs));
+      if (frameNew[f] >= 0) place.marker(xy[2 * frameNew[f]], xy[2 * frameNew[f] + 1], ch::pointRadius(fa, 1.4 * animPs));
       std::string labels;
+      // A frame without circles that shows a panel's triangulation takes that panel's labels
+      // (the two views have about the same label size per data unit); the others are placed,
+      // in the panel's directions where they are clear.
+      const bool same = staticAt.count(k) && frameCircles[f].empty();
+      std::vector<std::size_t> order(labelled);  // the most crowded first: edges and circles near
+      std::vector<int> degree(labelled, 0);
       for (std::size_t i = 0; i < labelled; ++i) {
-        const double prefer = k <= 4 || k == 9 ? staticAngle[k][i] : fangle[i];
-        const auto [lx, ly] = place.placeAttached(xy[2 * i], xy[2 * i + 1], name(i), allFrames[f], prefer, 3, 1.5, &fangle[i]);
-        labels += row(i, lx, ly) + " " + ch::quoted(ch::mathTextGif(pname(all.ids[i]))) + "\n";
+        order[i] = i;
+        for (const CircleXY& c : frameCircles[f])
+          degree[i] += 2 * (std::fabs(std::hypot(xy[2 * i] - c.x, xy[2 * i + 1] - c.y) - c.r) * pa.scale() < 2 * fa.em);
+        for (const ch::Seg& e : allFrames[f])
+          degree[i] += (e.x0 == xy[2 * i] && e.y0 == xy[2 * i + 1]) || (e.x1 == xy[2 * i] && e.y1 == xy[2 * i + 1]);
       }
+      std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return degree[a] > degree[b]; });
+      std::vector<std::pair<double, double>> at(labelled);
+      for (const std::size_t i : order) {
+        const double prefer = staticAt.count(k) ? staticAngle[k][i] : fangle[i];
+        at[i] = same ? staticAt[k][i] : place.placeAttached(xy[2 * i], xy[2 * i + 1], name(i), allFrames[f], prefer, 1.5, 1.5 / 0.85, &fangle[i]);
+        if (same) fangle[i] = staticAngle[k][i];
+      }
+      for (std::size_t i = 0; i < labelled; ++i)
+        labels += row(i, at[i].first, at[i].second) + " " + ch::quoted(ch::mathTextGif(pname(all.ids[i]))) + "\n";
       dt::writeFileAtomic(o.out + ch::fmt("/fig2_5_anim_%02d_labels.dat", f), labels);
     }
   }

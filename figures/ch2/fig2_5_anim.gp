@@ -6,8 +6,9 @@
 # The circles come dashed in their data (gnuplot's gif terminal draws a dash type solid), so
 # they are drawn as plain lines. Each frame's labels (fig2_5_anim_NN_labels.dat: x y label lx ly
 # super giflabel) are placed by the program beside their points, clear of the frame's circles.
-# The view holds every circle of every frame, so the points take less room than in Figure 2.5:
-# labels at 0.8 em, markers at 1.0 PS (1.5 for the new point).
+# The view holds every circle of every frame; labels and markers are Figure 2.5's scaled to it
+# (fig2_5_view.gp: ANIM_FONT, ANIM_PS), so that a frame showing a panel's triangulation takes
+# that panel's label places with the same room around them.
 # Data (sec2_2_bowyer_watson): fig2_5_anim_NN_{tri,fill,p,circles,labels}.dat,
 # fig2_5_anim_{titles,count}.dat, fig2_5_super.dat, fig2_5_points.dat.
 load system("dirname '".ARG0."'")."/style.gp"
@@ -51,16 +52,16 @@ do for [pass=0:1] {
        stem."_tri.dat" with lines lw 1.5 lc rgb C_TRI notitle, \
        (f == 0 ? datadir."/fig2_5_super.dat" : stem."_fill.dat") using 1:(cav ? $2 : NaN) with lines lw 2.5 lc rgb C_CAVITY_EDGE notitle, \
        (f == 0 ? datadir."/fig2_5_super.dat" : stem."_fill.dat") using 1:(bal ? $2 : NaN) with lines lw 2.5 lc rgb C_BALL_EDGE notitle, \
-       datadir."/fig2_5_super.dat" using 1:2 with points pt 5 ps (1.0*PS) lc rgb C_SUPER notitle, \
-       stem."_labels.dat" using 4:($6 == 1 ? $5 : NaN):(pass == 0 ? strcol(3) : strcol(7)) with labels tc rgb C_SUPER font sprintf(',%.1f', 0.8 * FS) notitle, \
-       datadir."/fig2_5_points.dat" using 1:2 with points pt 6 ps (1.0*PS) lc rgb "#808080" notitle, \
-       datadir."/fig2_5_points.dat" using 1:($0 < npoints ? $2 : NaN) with points pt 7 ps (1.0*PS) lc rgb C_POINT notitle, \
-       stem."_labels.dat" using 4:($6 == 0 ? $5 : NaN):(pass == 0 ? strcol(3) : strcol(7)) with labels tc rgb C_TRI font sprintf(',%.1f', 0.8 * FS) notitle, \
-       (f == 0 ? datadir."/fig2_5_super.dat" : stem."_p.dat") using 1:(f == 0 ? NaN : $2) with points pt 7 ps (1.5*PS) lc rgb C_NEW notitle, \
+       datadir."/fig2_5_super.dat" using 1:2 with points pt 5 ps (ANIM_PS*PS) lc rgb C_SUPER notitle, \
+       stem."_labels.dat" using 4:($6 == 1 ? $5 : NaN):(pass == 0 ? strcol(3) : strcol(7)) with labels tc rgb C_SUPER font sprintf(',%.1f', ANIM_FONT * FS) notitle, \
+       datadir."/fig2_5_points.dat" using 1:2 with points pt 6 ps (ANIM_PS*PS) lc rgb "#808080" notitle, \
+       datadir."/fig2_5_points.dat" using 1:($0 < npoints ? $2 : NaN) with points pt 7 ps (ANIM_PS*PS) lc rgb C_POINT notitle, \
+       stem."_labels.dat" using 4:($6 == 0 ? $5 : NaN):(pass == 0 ? strcol(3) : strcol(7)) with labels tc rgb C_TRI font sprintf(',%.1f', ANIM_FONT * FS) notitle, \
+       (f == 0 ? datadir."/fig2_5_super.dat" : stem."_p.dat") using 1:(f == 0 ? NaN : $2) with points pt 7 ps (1.4*ANIM_PS*PS) lc rgb C_NEW notitle, \
        NaN with boxes fs solid 1.0 fc rgb C_CAVITY title "cavity", \
        NaN with boxes fs solid 1.0 fc rgb C_BALL title "ball", \
        NaN with lines lw 1.5 dt 2 lc rgb C_CIRCLE title "circumcircles", \
-       NaN with points pt 7 ps (1.5*PS) lc rgb C_NEW title "new point"
+       NaN with points pt 7 ps (1.4*ANIM_PS*PS) lc rgb C_NEW title "new point"
   }
   set output
 }
