@@ -455,7 +455,7 @@ class LabelPlacer {
   /// that the clearest within maxEm; only if no candidate keeps the rules does it fall back to
   /// place().
   std::pair<double, double> placeAttached(double x, double y, const std::string& text, const std::vector<Seg>& edges,
-                                          double preferDeg = NAN, double gap = 3, double maxEm = 1.5,
+                                          double preferDeg = NAN, double gap = 5, double maxEm = 1.5,
                                           double* angleDeg = nullptr) {
     const bool sub = text.find('_') != std::string::npos, sup = text.find('^') != std::string::npos;
     const double hw = 0.5 * textWidthEm(text) * em_ + 1, up = (sup ? 0.75 : 0.47) * em_ + 1,

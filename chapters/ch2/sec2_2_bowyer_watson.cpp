@@ -152,7 +152,7 @@ void figure25(const ch::Options& o) {
     double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
     for (std::size_t i = 0; i < xy.size(); i += 2)
       x0 = std::min(x0, xy[i]), x1 = std::max(x1, xy[i]), y0 = std::min(y0, xy[i + 1]), y1 = std::max(y1, xy[i + 1]);
-    const double m = 0.14 * (x1 - x0);  // room for the super-vertices' labels outside the square
+    const double m = 0.11 * (x1 - x0);  // room for the super-vertices' labels outside the square
     // The animation's one view holds every circle of every frame (none cut by the canvas).
     double ax0 = x0 - m, ax1 = x1 + m, ay0 = y0 - m, ay1 = y1 + m;
     for (const auto& cs : frameCircles)
@@ -190,7 +190,7 @@ void figure25(const ch::Options& o) {
       std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return degree[a] > degree[b]; });
       std::vector<std::pair<double, double>> at(np);
       for (const std::size_t i : order) {
-        at[i] = place.placeAttached(xy[2 * i], xy[2 * i + 1], name(i), shown[k], angle[i], 3, 1.5 / 0.85, &angle[i]);
+        at[i] = place.placeAttached(xy[2 * i], xy[2 * i + 1], name(i), shown[k], angle[i], 5, 1.5 / 0.85, &angle[i]);
         staticAngle[panelOf[k]][i] = angle[i];
       }
       staticAt[panelOf[k]] = at;

@@ -202,7 +202,7 @@ void figureFlip(const ch::Options& o) {
       const int before = d0.at(v), now = d1.at(v);
       std::string t = ch::mathText(names[i]) + ": " + std::to_string(after ? now : before);
       if (after) t += std::string(" (") + (now > before ? "+" : "\u2212") + std::to_string(std::abs(now - before)) + ")";
-      const auto [x, y] = placer.placeAttached(v->x, v->y, t, ch::faceSegs(T.finiteFaces()), NAN, 3, 1.5 / 0.85);  // 1.5 em of the figure
+      const auto [x, y] = placer.place(v->x, v->y, t);
       lab << "set label \"" << t << "\" at " << x << "," << y << " center front font sprintf(',%.1f', 0.85 * FS)\n";
       rows += ch::fmt("%.10g %.10g ", v->x, v->y) + ch::quoted(t) + ch::fmt(" %.10g %.10g\n", x, y);
     }
@@ -312,10 +312,9 @@ void figureRecovery(const ch::Options& o) {
   dt::delaunayTrglHull(H, dt::addVertices(H, p), dt::StartRule::LastCavity);
   std::vector<const dt::Vertex*> hull;
   for (dt::Vertex* v : dt::convexHull(H)) hull.push_back(byId(v->id));
-  // The frames' grid (as fig_recovery_frames.gp lays it out) and one view for all. Each frame
-  // places its labels with its own edges (placeAttached: beside the vertex, on its side of every
-  // edge; one place for all frames put p_4 and p_7 40-65 px away, across an edge: issue 42), in
-  // the direction the vertex's label had in the frame before where that is clear.
+  // The frames' grid (as fig_recovery_frames.gp lays it out) and one view for all: a vertex's
+  // label has one place in every frame, clear of the edges of every frame, of every point and
+  // super-vertex marker, and of the labels placed before it.
   const int nframes = int(log.size()) + 2;
   const int cols = nframes <= 4 ? nframes : (nframes <= 6 ? 3 : 4), rows = (nframes + cols - 1) / cols;
   double x0, y0, x1, y1;
@@ -325,10 +324,10 @@ void figureRecovery(const ch::Options& o) {
   const ch::FigureSize fs = ch::figureSize("fig_recovery_frames");
   const double lw = std::max(1.5, fs.em / 18);
   const ch::Panel p0 = ch::cellPanel(fs, rows, cols, 0, cx - R2, cx + R2, cy - R2, cy + R2);
+  ch::LabelPlacer placer(p0, fs.em);
   struct Frame {
     std::string obj, dat;
     std::vector<const dt::Vertex*> named;
-    std::vector<ch::Seg> edges, marked;  // the triangulation drawn; the flip's two edges
   };
   std::vector<Frame> frames;
   auto frame = [&](const std::string& title, const dt::Vertex* e0, const dt::Vertex* e1, const dt::Vertex* n0,
@@ -342,13 +341,13 @@ void figureRecovery(const ch::Options& o) {
     for (const dt::Face* f : R.finiteFaces())
       if (f->V[0]->id >= 0 && f->V[1]->id >= 0 && f->V[2]->id >= 0)
         fr.obj += polygon(id, {f->V[0], f->V[1], f->V[2]}, "#dde6f0");
-    if (e0) fr.obj += segment(e0, e1, "#c51b7d", 2.5, "2"), fr.marked.push_back({e0->x, e0->y, e1->x, e1->y});
-    if (n0) fr.obj += segment(n0, n1, "#2e7d32", 3), fr.marked.push_back({n0->x, n0->y, n1->x, n1->y});
+    if (e0) fr.obj += segment(e0, e1, "#c51b7d", 2.5, "2"), placer.segment(e0->x, e0->y, e1->x, e1->y, 2.5 * lw);
+    if (n0) fr.obj += segment(n0, n1, "#2e7d32", 3), placer.segment(n0->x, n0->y, n1->x, n1->y, 3 * lw);
     fr.obj += "ftitle = \"" + title + "\"\n";
     std::vector<const dt::Face*> F;
     for (const dt::Face* f : R.finiteFaces())
       if (!dropSuper || (f->V[0]->id >= 0 && f->V[1]->id >= 0 && f->V[2]->id >= 0)) F.push_back(f);
-    fr.edges = ch::faceSegs(F);
+    placer.segments(ch::faceSegs(F), 1.5 * lw);
     // The super-vertices and the four vertices of the frame's flip (its title names them) are
     // labelled. (All nine points would crowd a frame.)
     for (const dt::Vertex& v : R.vertices())
@@ -372,26 +371,21 @@ void figureRecovery(const ch::Options& o) {
   }
   frame("DT(" + ch::mathText("S") + ")", nullptr, nullptr, nullptr, nullptr, true);
   const int k = int(frames.size());
-  std::map<const dt::Vertex*, double> angle;  // each label's last direction
+  for (const dt::Vertex& v : R.vertices()) placer.marker(v.x, v.y, ch::pointRadius(fs, v.id < 0 ? 1.3 : 0.9));
+  std::map<const dt::Vertex*, std::pair<double, double>> spot;
+  for (const dt::Vertex& v : R.vertices()) {  // super-vertices first: they are in every frame
+    if (v.id >= 0) continue;
+    spot[&v] = placer.place(v.x, v.y, nm(&v));
+  }
+  for (const Frame& fr : frames)
+    for (const dt::Vertex* v : fr.named)
+      if (!spot.count(v)) spot[v] = placer.place(v->x, v->y, nm(v));
   for (int i = 0; i < k; ++i) {
-    const Frame& fr = frames[std::size_t(i)];
-    ch::LabelPlacer placer(p0, fs.em);
-    placer.segments(fr.edges, 1.5 * lw);
-    placer.segments(fr.marked, 3 * lw);
-    for (const dt::Vertex& v : R.vertices()) placer.marker(v.x, v.y, ch::pointRadius(fs, v.id < 0 ? 1.3 : 0.9));
-    std::vector<ch::Seg> sides = fr.edges;  // what must not separate a label from its vertex
-    sides.insert(sides.end(), fr.marked.begin(), fr.marked.end());
     std::ostringstream lab;
     lab.precision(17);
-    std::string labelRows;
-    for (const dt::Vertex* v : fr.named) {
-      if (!angle.count(v)) angle[v] = NAN;
-      const auto [lx, ly] = placer.placeAttached(v->x, v->y, nm(v), sides, angle[v], 3, 1.5, &angle[v]);
-      lab << "set label \"" << nm(v) << "\" at " << lx << "," << ly << " center front tc rgb "
+    for (const dt::Vertex* v : frames[std::size_t(i)].named)
+      lab << "set label \"" << nm(v) << "\" at " << spot[v].first << "," << spot[v].second << " center front tc rgb "
           << (v->id < 0 ? "C_SUPER" : "C_TRI") << "\n";
-      labelRows += ch::fmt("%.10g %.10g ", v->x, v->y) + ch::quoted(nm(v)) + ch::fmt(" %.10g %.10g\n", lx, ly);
-    }
-    ch::writeOut(o, "rec_frame_" + std::to_string(i) + "_labels.dat", labelRows);  // x y label lx ly: for the label rules
     const ch::Panel pk = ch::cellPanel(fs, rows, cols, i, cx - R2, cx + R2, cy - R2, cy + R2);
     ch::writeOut(o, "rec_frame_" + std::to_string(i) + ".gp", frames[std::size_t(i)].obj + lab.str() + "VIEW = \"" + pk.gnuplot() + "\"\n");
     ch::writeOut(o, "rec_frame_" + std::to_string(i) + ".dat", frames[std::size_t(i)].dat);

@@ -3,7 +3,7 @@
 # circumcircle (dashed), which does not contain p_{n+1}, and the circumcircle of the new
 # triangle σ_i σ_{i+1} p_{n+1} (dash-dotted), which does not contain p_j.
 # Data (sec2_1_kernel): fig2_4_dt.dat (DT_{n+1}, each edge once), fig2_1_cavity.dat,
-# fig2_4_labels.dat (x y label, then its point: p_{n+1}, σ_i, σ_{i+1}, p_j; ℬ), fig2_4_outside.dat,
+# fig2_4_labels.dat (x y label: p_{n+1}, σ_i, σ_{i+1}, p_j, ℬ), fig2_4_outside.dat,
 # fig2_4_newtri.dat, fig2_4_circles.dat (x y r), fig2_1_p.dat, fig2_1_points.dat,
 # fig2_4_view.gp (the view, from the program's layout, which placed the labels).
 load system("dirname '".ARG0."'")."/style.gp"
