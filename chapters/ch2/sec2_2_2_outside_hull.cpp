@@ -116,7 +116,10 @@ void panels(const ch::Options& o, const std::string& stem, int row, const XY& ba
   obj += "ftitle = \"after: " + plural(fresh, "new triangle") + "\"\n";
   const std::vector<ch::Seg> afterSegs = ch::faceSegs(T.finiteFaces());
   placer.segments(afterSegs, 1.2 * lw);
-  const auto [lx, ly] = placer.place(q->x, q->y, ch::mathText("p"));
+  // Beside p, on its side of every edge of both panels (and of the lines to the visible edges).
+  std::vector<ch::Seg> sides = afterSegs;
+  sides.insert(sides.end(), beforeSegs.begin(), beforeSegs.end());
+  const auto [lx, ly] = placer.placeAttached(q->x, q->y, ch::mathText("p"), sides);
   ch::writeOut(o, stem + "_label.dat", ch::fmt("%.17g %.17g\n", lx, ly));
   obj += "VIEW = \"" + pAfter.gnuplot() + "\"\n";
   ch::writeOut(o, stem + "_after.gp", obj);
