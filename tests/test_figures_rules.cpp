@@ -774,7 +774,7 @@ std::vector<std::string> keyCovers(const SvgDrawing& d) {
   return out;
 }
 
-/// The \image line of a figure in book/*.md ("" if no page embeds it).
+// The image line of a figure in book/*.md ("" if no page embeds it).
 std::string captionOf(const std::string& figure) {
   for (const auto& e : fs::directory_iterator(fs::path(DT_SOURCE_DIR) / "book")) {
     if (e.path().extension() != ".md") continue;
