@@ -353,11 +353,11 @@ std::string joined(const std::vector<std::string>& v) {
 
 // ---- the checkers can fail -------------------------------------------------------------------
 
-TEST_CASE("figures the attachment check passes labels beside their points") {
+TEST_CASE("figures geometry the attachment check passes labels beside their points") {
   CHECK(joined(attachmentErrors(plantedBase())) == "");
 }
 
-TEST_CASE("figures the attachment check names a label nearer to another point") {
+TEST_CASE("figures geometry the attachment check names a label nearer to another point") {
   GFigure f = plantedBase();
   f.labels[1] = {0.2, 0.05, "b"};  // b's label beside a
   const auto e = attachmentErrors(f);
@@ -365,7 +365,7 @@ TEST_CASE("figures the attachment check names a label nearer to another point") 
   CHECK(e[0].find("label b is nearer to a") != std::string::npos);
 }
 
-TEST_CASE("figures the attachment check names a label far from its point") {
+TEST_CASE("figures geometry the attachment check names a label far from its point") {
   GFigure f = plantedBase();
   f.labels[3] = {1.35, 1.2, "d"};  // 0.38 units = 1.9 em
   const auto e = attachmentErrors(f);
@@ -373,7 +373,7 @@ TEST_CASE("figures the attachment check names a label far from its point") {
   CHECK(e[0].find("em from its point") != std::string::npos);
 }
 
-TEST_CASE("figures the attachment check names a label on the other side of an edge") {
+TEST_CASE("figures geometry the attachment check names a label on the other side of an edge") {
   GFigure f = plantedBase();
   f.points[3] = {0.6, 0.6, "d"}, f.labels[3] = {0.72, 0.72, "d"};
   f.edges[3] = {1, 0, 0.6, 0.6}, f.edges[4] = {0.6, 0.6, 0, 1};
@@ -384,7 +384,7 @@ TEST_CASE("figures the attachment check names a label on the other side of an ed
   CHECK(e[0].find("an edge separates label d from its point") != std::string::npos);
 }
 
-TEST_CASE("figures the attachment check names Figure 2.5's swapped labels") {
+TEST_CASE("figures geometry the attachment check names Figure 2.5's swapped labels") {
   // Figure 2.5 as it was (issue 42): p_8's label 0.13 from p_1 and 0.34 from p_8, p_1's by p_6.
   GFigure f = figure25Panel(bwRun(), 1);
   REQUIRE(attachmentErrors(f).empty());
@@ -397,7 +397,7 @@ TEST_CASE("figures the attachment check names Figure 2.5's swapped labels") {
   CHECK(e.find("label {/'DejaVu Math TeX Gyre' 𝑝_{1}} is nearer to {/'DejaVu Math TeX Gyre' 𝑝_{6}}") != std::string::npos);
 }
 
-TEST_CASE("figures the focus check names a point near an edge or a label and a sliver") {
+TEST_CASE("figures geometry the focus check names a point near an edge or a label and a sliver") {
   GFigure f = plantedBase();
   f.focus = {{0.3, 0.3, "p"}};
   f.seen = {{0, 0, 1, 0, 0, 1}};
@@ -412,7 +412,7 @@ TEST_CASE("figures the focus check names a point near an edge or a label and a s
   CHECK(joined(focusErrors(f)).find("angle of") != std::string::npos);
 }
 
-TEST_CASE("figures the frame check names a cut circle and a label on a circle") {
+TEST_CASE("figures geometry the frame check names a cut circle and a label on a circle") {
   GFigure f = plantedBase();
   CHECK(frameErrors(f).empty());
   f.curves = {{1.2, 1.2, 1.6, 1.2}};
@@ -423,7 +423,7 @@ TEST_CASE("figures the frame check names a cut circle and a label on a circle") 
 
 // ---- the figures -----------------------------------------------------------------------------
 
-TEST_CASE("figures every label of Figure 2.5 is attached to its own point in every panel") {
+TEST_CASE("figures geometry every label of Figure 2.5 is attached to its own point in every panel") {
   for (int panel = 0; panel < 6; ++panel) {
     const GFigure f = figure25Panel(bwRun(), panel);
     CHECK(f.labels.size() == f.points.size());
@@ -433,7 +433,7 @@ TEST_CASE("figures every label of Figure 2.5 is attached to its own point in eve
   }
 }
 
-TEST_CASE("figures panel (b) of Figure 2.5 labels p_1 the point the code inserts first") {
+TEST_CASE("figures geometry panel (b) of Figure 2.5 labels p_1 the point the code inserts first") {
   // The one input point with edges in DT_1 is the point Algorithm 1 inserted first: its label
   // must read p_1, beside it.
   const GFigure f = figure25Panel(bwRun(), 1);
@@ -456,7 +456,7 @@ TEST_CASE("figures panel (b) of Figure 2.5 labels p_1 the point the code inserts
   CHECK(nearest->name == joinedPoints[0]->name);
 }
 
-TEST_CASE("figures every frame of the animation keeps its circles in view and its labels attached") {
+TEST_CASE("figures geometry every frame of the animation keeps its circles in view and its labels attached") {
   // Every frame: circles and labels inside the view, labels attached. Frame 00 and the ball
   // frames (no circles): no label touches an edge. The cavity frames' touches are printed, not
   // failed: near the new point up to five dashed circles pass, and two frames (p_3's label
@@ -481,7 +481,7 @@ TEST_CASE("figures every frame of the animation keeps its circles in view and it
   CHECK(touches <= 3);  // the two frames above; more is a regression
 }
 
-TEST_CASE("figures the animation's circles are dashed in their data") {
+TEST_CASE("figures geometry the animation's circles are dashed in their data") {
   // The gif terminal draws every dash type solid: the dashes are in the data, as many pieces
   // as blank-line breaks, none longer than a tenth of its circle.
   const fs::path dir = bwRun();
@@ -493,7 +493,7 @@ TEST_CASE("figures the animation's circles are dashed in their data") {
   }
 }
 
-TEST_CASE("figures the animation labels a point where the static figure does") {
+TEST_CASE("figures geometry the animation labels a point where the static figure does") {
   // Frame 00 (DT_0) and the ball frame 2k of each panel's DT_k put every label at that panel's
   // place. (The cavity frames draw circles too: their labels start from the panel's direction
   // and move where a circle passes; the frame check above keeps them attached and clear.)
@@ -537,7 +537,7 @@ GFigure flipPanel(const fs::path& dir, const std::string& stem) {
 
 }  // namespace
 
-TEST_CASE("figures the flip figure's quadrilateral is clearly not Delaunay and clear of other labels") {
+TEST_CASE("figures geometry the flip figure's quadrilateral is clearly not Delaunay and clear of other labels") {
   // The labels (each vertex's count of triangles, 3 em wide) are placed clear of every line by
   // place(), not attached: their attachment is printed, not checked (issue 42, open).
   const fs::path dir = programRun("sec2_3_6_flips", "fig_flip");
@@ -555,7 +555,7 @@ TEST_CASE("figures the flip figure's quadrilateral is clearly not Delaunay and c
   CHECK(dist(cx, cy, f.points[3].x, f.points[3].y) < 0.9 * r);
 }
 
-TEST_CASE("figures the outside-hull figure labels p beside it and clear of the edges in both panels") {
+TEST_CASE("figures geometry the outside-hull figure labels p beside it and clear of the edges in both panels") {
   const fs::path dir = programRun("sec2_2_2_outside_hull", "fig_outside_hull");
   const ch::FigureSize fs = ch::figureSize("fig_outside_hull");
   for (const std::string row : {"outhull", "outline"})

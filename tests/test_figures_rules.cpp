@@ -10,6 +10,8 @@
 // notation.txt and promises.txt.
 #include <doctest/doctest.h>
 
+#include "svg_attr.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -204,35 +206,9 @@ struct SvgDrawing {
   std::vector<SvgArea> areas;
 };
 
-std::string attr(const std::string& tag, const std::string& name) {
-  for (std::size_t at = tag.find(name); at != std::string::npos; at = tag.find(name, at + 1)) {
-    if (at == 0 || !std::isspace(static_cast<unsigned char>(tag[at - 1]))) continue;
-    std::size_t k = at + name.size();
-    while (k < tag.size() && std::isspace(static_cast<unsigned char>(tag[k]))) ++k;
-    if (k >= tag.size() || tag[k] != '=') continue;
-    ++k;
-    while (k < tag.size() && std::isspace(static_cast<unsigned char>(tag[k]))) ++k;
-    if (k >= tag.size() || (tag[k] != '"' && tag[k] != '\'')) continue;
-    const std::size_t close = tag.find(tag[k], k + 1);
-    return close == std::string::npos ? "" : tag.substr(k + 1, close - k - 1);
-  }
-  return "";
-}
+std::string attr(const std::string& tag, const std::string& name) { return dttest::svgAttr(tag, name); }
 
-/// "#rrggbb" for what gnuplot writes ("rgb( 26,  63, 143)", "#1a3f8f", "black", "white").
-std::string hexOf(const std::string& c) {
-  int r, g, b;
-  if (std::sscanf(c.c_str(), " rgb( %d, %d, %d)", &r, &g, &b) == 3) {
-    char buf[8];
-    std::snprintf(buf, sizeof buf, "#%02x%02x%02x", r, g, b);
-    return buf;
-  }
-  if (c == "black") return "#000000";
-  if (c == "white") return "#ffffff";
-  std::string l = c;
-  for (char& ch : l) ch = char(std::tolower(static_cast<unsigned char>(ch)));
-  return l;
-}
+std::string hexOf(const std::string& c) { return dttest::svgHexColour(c); }
 
 std::string unescapeXml(std::string s) {
   const std::pair<const char*, const char*> ents[] = {{"&lt;", "<"}, {"&gt;", ">"}, {"&quot;", "\""}, {"&apos;", "'"}, {"&amp;", "&"}};
@@ -277,12 +253,7 @@ SvgDrawing readSvg(const std::string& s) {
   };
   std::vector<Group> groups;
   int panel = 0, plot = 0;
-  const std::size_t body = s.find("</defs>");
-  std::size_t i = body == std::string::npos ? 0 : body;
-  while ((i = s.find('<', i)) != std::string::npos) {
-    const std::size_t end = s.find('>', i);
-    if (end == std::string::npos) break;
-    const std::string tag = s.substr(i, end - i + 1);
+  dttest::forEachSvgTag(s, [&](const std::string& tag, const std::size_t i, const std::size_t end) -> std::size_t {
     if (tag.compare(0, 3, "<g ") == 0 || tag == "<g>") {
       ++depth;
       Group g{attr(tag, "stroke"), attr(tag, "color"), std::atof(attr(tag, "stroke-width").c_str())};
@@ -292,11 +263,7 @@ SvgDrawing readSvg(const std::string& s) {
         if (g.width == 0) g.width = groups.back().width;
       }
       groups.push_back(g);
-      const std::string id = attr(tag, "id");
-      if (id.compare(0, 13, "gnuplot_plot_") == 0) {
-        const int n = std::atoi(id.c_str() + 13);
-        if (n == 1 || n <= plot) ++panel;
-        plot = n;
+      if (dttest::svgPlotStart(tag, panel, plot)) {
         depthInPlot = depth;
         const std::size_t t0 = s.find("<title>", end), t1 = s.find("</title>", end);
         plotTitle = t0 != std::string::npos && t0 < end + 4 ? unescapeXml(s.substr(t0 + 7, t1 - t0 - 7)) : "";
@@ -335,8 +302,7 @@ SvgDrawing readSvg(const std::string& s) {
       }
       t.key = t.plot > 0 && !t.spans.empty() && trim(t.str) == trim(plotTitle);
       if (!t.spans.empty()) d.texts.push_back(t);
-      i = te;
-      continue;
+      return te;
     } else if (tag.compare(0, 5, "<path") == 0 || tag.compare(0, 8, "<polygon") == 0) {
       const int where = depthInPlot > 0 ? panel : -1;  // -1: placed by its centre below
       bool any = false;
@@ -388,8 +354,8 @@ SvgDrawing readSvg(const std::string& s) {
       m.plot = depthInPlot > 0 ? plot : 0;
       d.markers.push_back(m);
     }
-    i = end + 1;
-  }
+    return end + 1;
+  });
   // What no plot drew goes to the panel whose extent holds its centre, or the nearest one.
   auto place = [&](double x, double y) {
     int best = extent.empty() ? 1 : extent.begin()->first;
@@ -853,7 +819,7 @@ std::string styleText() { return slurp(kFigDir / "style.gp"); }
 
 // ---- the colour science ----------------------------------------------------------------------
 
-TEST_CASE("figures CIEDE2000 gives the published differences of Sharma Wu and Dalal's test pairs") {
+TEST_CASE("figures rules CIEDE2000 gives the published differences of Sharma Wu and Dalal's test pairs") {
   // Pairs of the test data of Sharma, Wu and Dalal (2005), with their published differences.
   struct Pair {
     ch::Lab x, y;
@@ -880,7 +846,7 @@ TEST_CASE("figures CIEDE2000 gives the published differences of Sharma Wu and Da
   CHECK_THROWS(ch::parseHex("red"));
 }
 
-TEST_CASE("figures the dichromacy simulation keeps greys and merges the notes' red and green") {
+TEST_CASE("figures rules the dichromacy simulation keeps greys and merges the notes' red and green") {
   for (const char* grey : {"#000000", "#3c3c3c", "#808080", "#ffffff"})
     for (ch::Vision v : kVisions) CHECK(ch::toHex(ch::simulate(ch::parseHex(grey), v)) == grey);
   // The notes' sign colours (green -1, red +1): apart for a normal eye, not for a red-green
@@ -896,7 +862,7 @@ TEST_CASE("figures the dichromacy simulation keeps greys and merges the notes' r
 
 // ---- colour: the rules and their planted defects --------------------------------------------
 
-TEST_CASE("figures the colour checks find a shared colour a written colour and a red-green pair") {
+TEST_CASE("figures rules the colour checks find a shared colour a written colour and a red-green pair") {
   std::map<std::string, std::string> pal = {{"C_A", "#1a9641"}, {"C_B", "#d7191c"}, {"C_C", "#1A9641"}, {"black", "#000000"}};
   CHECK(sharedColours(pal).size() == 1);  // C_A and C_C
   pal.erase("C_C");
@@ -928,7 +894,7 @@ TEST_CASE("figures the colour checks find a shared colour a written colour and a
   CHECK(pairBreaches(pairs, pal, {}).empty());
 }
 
-TEST_CASE("figures every colour of every figure is a role of style.gp and no two roles share one") {
+TEST_CASE("figures rules every colour of every figure is a role of style.gp and no two roles share one") {
   const auto pal = palette(styleText());
   REQUIRE(pal.count("C_CAVITY") == 1);
   for (const std::string& s : sharedColours(pal)) FAIL_CHECK("style.gp: " << s);
@@ -950,7 +916,7 @@ TEST_CASE("figures every colour of every figure is a role of style.gp and no two
   }
 }
 
-TEST_CASE("figures every meaning pair stays 20 apart for every reader or has a second cue the SVG draws") {
+TEST_CASE("figures rules every meaning pair stays 20 apart for every reader or has a second cue the SVG draws") {
   const auto pal = palette(styleText());
   const auto pairs = meaningPairs(slurp(kFigDir / "meaning_pairs.txt"));
   REQUIRE(pairs.size() >= 10);
@@ -960,7 +926,7 @@ TEST_CASE("figures every meaning pair stays 20 apart for every reader or has a s
   for (const std::string& b : pairBreaches(pairs, pal, runSvgs())) FAIL_CHECK(b);
 }
 
-TEST_CASE("figures the deuteranopia figure is Figure 2.7 in the sign colours a deuteranope sees") {
+TEST_CASE("figures rules the deuteranopia figure is Figure 2.7 in the sign colours a deuteranope sees") {
   const auto pal = palette(styleText());
   const std::string gp = slurp(figureDir() / "sign_colours_deuteranopia.gp");
   for (const char* role : {"C_MINUS", "C_ZERO", "C_PLUS"}) {
@@ -972,7 +938,7 @@ TEST_CASE("figures the deuteranopia figure is Figure 2.7 in the sign colours a d
 
 // ---- notation ----------------------------------------------------------------------------------
 
-TEST_CASE("figures the notation check rejects ASCII and upright forms and passes the notes' forms") {
+TEST_CASE("figures rules the notation check rejects ASCII and upright forms and passes the notes' forms") {
   const auto rows = notation(slurp(kFigDir / "notation.txt"));
   REQUIRE(rows.size() >= 10);
   auto text = [](std::vector<SvgSpan> spans) {
@@ -1002,7 +968,7 @@ TEST_CASE("figures the notation check rejects ASCII and upright forms and passes
   (void)sans;
 }
 
-TEST_CASE("figures every notation row is a form the math text writer sets") {
+TEST_CASE("figures rules every notation row is a form the math text writer sets") {
   // Each row's notes form is what ch::mathText sets in the math font (it throws on what it
   // cannot), so a script or program that takes the row's form gets the notes' letters, and
   // none of them is left in ASCII.
@@ -1015,7 +981,7 @@ TEST_CASE("figures every notation row is a form the math text writer sets") {
   }
 }
 
-TEST_CASE("figures no figure writes a symbol of the notes upright or in ASCII") {
+TEST_CASE("figures rules no figure writes a symbol of the notes upright or in ASCII") {
   const auto rows = notation(slurp(kFigDir / "notation.txt"));
   REQUIRE(runSvgs().size() >= 20);
   for (const auto& [name, svg] : runSvgs())
@@ -1024,7 +990,7 @@ TEST_CASE("figures no figure writes a symbol of the notes upright or in ASCII") 
 
 // ---- caption truth -----------------------------------------------------------------------------
 
-TEST_CASE("figures the promise check finds a dash-dot drawn as dashes and a missing fill") {
+TEST_CASE("figures rules the promise check finds a dash-dot drawn as dashes and a missing fill") {
   const auto pal = palette(styleText());
   SvgDrawing svg;
   svg.lines.push_back(makeLine(hexOf(pal.at("C_CIRCLE")), "11.9,19.0", 4.8, 1));
@@ -1049,7 +1015,7 @@ TEST_CASE("figures the promise check finds a dash-dot drawn as dashes and a miss
   CHECK(parsed[1].panel == 0);
 }
 
-TEST_CASE("figures every caption promise of figures/ch2/promises.txt is drawn in its SVG") {
+TEST_CASE("figures rules every caption promise of figures/ch2/promises.txt is drawn in its SVG") {
   const auto pal = palette(styleText());
   const auto all = promises(slurp(kFigDir / "promises.txt"));
   REQUIRE(all.size() >= 20);
@@ -1096,7 +1062,7 @@ SvgDrawing tinyChart(bool log, const std::vector<double>& vals, double kx, doubl
 
 }  // namespace
 
-TEST_CASE("figures the chart checks find a decade on a linear axis and a key over a point") {
+TEST_CASE("figures rules the chart checks find a decade on a linear axis and a key over a point") {
   // 2 to 90 on a linear axis: over a decade.
   CHECK(linearDecades(tinyChart(false, {2, 10, 90}, 400, 320)).size() == 1);
   CHECK(linearDecades(tinyChart(false, {20, 50, 90}, 400, 320)).empty());
@@ -1121,7 +1087,7 @@ TEST_CASE("figures the chart checks find a decade on a linear axis and a key ove
   CHECK(!timingCaptionMissing("\\image html f.png \"Times, the median of 3 runs.\"", "x.runs").empty());
 }
 
-TEST_CASE("figures no series of a chart spans more than a decade on a linear axis") {
+TEST_CASE("figures rules no series of a chart spans more than a decade on a linear axis") {
   REQUIRE(runSvgs().size() >= 20);
   std::map<std::string, std::string> kind;  // figure -> chart or coordinates
   for (const std::string& line : dataLines(slurp(kFigDir / "charts.txt"))) {
@@ -1144,7 +1110,7 @@ TEST_CASE("figures no series of a chart spans more than a decade on a linear axi
   CHECK(charts >= 6);
 }
 
-TEST_CASE("figures no key of a chart covers a data point") {
+TEST_CASE("figures rules no key of a chart covers a data point") {
   int keys = 0;
   for (const auto& [name, svg] : runSvgs()) {
     keys += std::any_of(svg.texts.begin(), svg.texts.end(), [](const SvgText& t) { return t.key; });
@@ -1153,7 +1119,7 @@ TEST_CASE("figures no key of a chart covers a data point") {
   CHECK(keys >= 5);  // the check finds the keys at all
 }
 
-TEST_CASE("figures every timing chart shows medians and its caption cites their number of runs") {
+TEST_CASE("figures rules every timing chart shows medians and its caption cites their number of runs") {
   std::map<std::string, std::string> values;  // every value the run's programs wrote
   for (const auto& e : fs::directory_iterator(figureDir()))
     if (e.path().filename().string().rfind("values_", 0) == 0) {
