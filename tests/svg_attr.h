@@ -42,7 +42,7 @@ inline std::string svgHexColour(const std::string& c) {
   return l;
 }
 
-/// gnuplot's svg terminal opens each plot as <g id="gnuplot_plot_N">, N from 1 again in each
+/// gnuplot's svg terminal opens each plot as `<g id="gnuplot_plot_N">`, N from 1 again in each
 /// multiplot panel: true for such a tag, with `plot` set to N and `panel` counted on.
 inline bool svgPlotStart(const std::string& tag, int& panel, int& plot) {
   const std::string id = svgAttr(tag, "id");
@@ -53,9 +53,9 @@ inline bool svgPlotStart(const std::string& tag, int& panel, int& plot) {
   return true;
 }
 
-/// Calls f(tag, begin, end) for each tag of an SVG's body (after its </defs>), in order: `tag` is the
+/// Calls f(tag, begin, end) for each tag of an SVG's body (after its `</defs>`), in order: `tag` is the
 /// text from '<' to '>', `begin` and `end` the offsets of the two. f returns the offset the next tag is
-/// looked for from: end + 1, or past what it read itself (a text up to its </text>).
+/// looked for from: end + 1, or past what it read itself (a text up to its `</text>`).
 template <class F>
 void forEachSvgTag(const std::string& s, F f) {
   const std::size_t body = s.find("</defs>");
