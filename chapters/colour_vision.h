@@ -1,4 +1,4 @@
-// Colour vision for the figures (issue 42): how a colour looks to a reader with protanopia,
+// Colour vision for the figures: how a colour looks to a reader with protanopia,
 // deuteranopia or tritanopia, and how far apart two colours look (CIEDE2000). The figure rules
 // (tests/test_figures_rules.cpp) check the style's meaning-pairs with it, and
 // sec2_3_1_predicates draws a sign map as a deuteranope sees it.

@@ -444,8 +444,8 @@ class LabelPlacer {
     return {p_.x0 + (bx - p_.left) / p_.scale(), p_.y1 - (by - p_.top) / p_.scale()};
   }
 
-  /// Like place(), but the label stays attached to its point as a textbook editor requires
-  /// (issue 42): its anchor and its box are nearer to its own point than to any other marker,
+  /// Like place(), but the label stays attached to its point as a textbook editor requires:
+  /// its anchor and its box are nearer to its own point than to any other marker,
   /// its anchor and its box's centre at most `maxEm` em from the point, and the line from the
   /// point to the anchor crosses none of `edges` (data units: the triangulation drawn, so that
   /// no edge separates a label from its point). Among the candidates that keep these rules, the

@@ -1,4 +1,4 @@
-// Timings of the charts (issue 42): a chart shows the median of k runs, and its caption cites
+// Timings of the charts: a chart shows the median of k runs, and its caption cites
 // k by a value key (figures/ch2/timings.txt lists the charts and their keys).
 #pragma once
 

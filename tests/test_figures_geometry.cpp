@@ -1,5 +1,5 @@
-/// \file test_figures_geometry.cpp A textbook editor's rules over the geometric figures
-/// (issue 42), read from the data files the chapter programs write for gnuplot, in data units,
+/// \file test_figures_geometry.cpp A textbook editor's rules over the geometric figures,
+/// read from the data files the chapter programs write for gnuplot, in data units,
 /// with each panel's scale in pixels from its view file:
 /// - attachment: a label's anchor is nearer to its own point than to any other point, at most
 ///   1.5 em from it (the figure's em, style.gp's fig_em: labels set smaller, at 0.8-0.85 em in
@@ -385,7 +385,7 @@ TEST_CASE("figures geometry the attachment check names a label on the other side
 }
 
 TEST_CASE("figures geometry the attachment check names Figure 2.5's swapped labels") {
-  // Figure 2.5 as it was (issue 42): p_8's label 0.13 from p_1 and 0.34 from p_8, p_1's by p_6.
+  // Figure 2.5 as it was: p_8's label 0.13 from p_1 and 0.34 from p_8, p_1's by p_6.
   GFigure f = figure25Panel(bwRun(), 1);
   REQUIRE(attachmentErrors(f).empty());
   for (GPoint& l : f.labels) {
@@ -460,7 +460,7 @@ TEST_CASE("figures geometry every frame of the animation keeps its circles in vi
   // Every frame: circles and labels inside the view, labels attached. Frame 00 and the ball
   // frames (no circles): no label touches an edge. The cavity frames' touches are printed, not
   // failed: near the new point up to five dashed circles pass, and two frames (p_3's label
-  // when p_8 goes in, p_9's when p_9 does) have no clear place within 2.5 em (issue 42, open).
+  // when p_8 goes in, p_9's when p_9 does) have no clear place within 2.5 em (not solved yet).
   const int n = animationFrames(bwRun());
   REQUIRE(n == 19);
   int circles = 0, touches = 0;
@@ -539,7 +539,7 @@ GFigure flipPanel(const fs::path& dir, const std::string& stem) {
 
 TEST_CASE("figures geometry the flip figure's quadrilateral is clearly not Delaunay and clear of other labels") {
   // The labels (each vertex's count of triangles, 3 em wide) are placed clear of every line by
-  // place(), not attached: their attachment is printed, not checked (issue 42, open).
+  // place(), not attached: their attachment is printed, not checked (not solved yet).
   const fs::path dir = programRun("sec2_3_6_flips", "fig_flip");
   for (const std::string stem : {"flip_before", "flip_after"}) {
     const GFigure f = flipPanel(dir, stem);

@@ -1,4 +1,4 @@
-/// \file test_figures_rules.cpp A textbook editor's rules for the figures (issue 42), as tests:
+/// \file test_figures_rules.cpp A textbook editor's rules for the figures, as tests:
 /// colour (the pairs a reader must tell apart stay apart under protanopia, deuteranopia and
 /// tritanopia, or carry a second cue; one colour per meaning, all from style.gp's table),
 /// notation (no figure shows an ASCII or upright form of the notes' symbols) and caption truth
@@ -850,7 +850,7 @@ TEST_CASE("figures rules the dichromacy simulation keeps greys and merges the no
   for (const char* grey : {"#000000", "#3c3c3c", "#808080", "#ffffff"})
     for (ch::Vision v : kVisions) CHECK(ch::toHex(ch::simulate(ch::parseHex(grey), v)) == grey);
   // The notes' sign colours (green -1, red +1): apart for a normal eye, not for a red-green
-  // colour-blind one (the defect of issue 42); blue against them stays apart for everyone.
+  // colour-blind one; blue against them stays apart for everyone.
   const std::string green = "#1a9641", red = "#d7191c", blue = "#2166ac";
   CHECK(ch::seenDifference(ch::parseHex(green), ch::parseHex(red), ch::Vision::Normal) > 60);
   CHECK(ch::seenDifference(ch::parseHex(green), ch::parseHex(red), ch::Vision::Deuteranopia) < 12);

@@ -43,6 +43,7 @@
 #include "generators.h"
 #include "hilbert.h"
 #include "triangulate.h"
+#include "timing.h"
 
 #ifdef DT_HAVE_CGAL
 #include <CGAL/Delaunay_triangulation_2.h>
@@ -280,12 +281,8 @@ Measure runChild(Method m, Family f, std::size_t n, bool check) {
   return r;
 }
 
-// The median of some values (the mean of the middle two for an even count), and their spread.
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const std::size_t k = v.size() / 2;
-  return v.empty() ? 0 : v.size() % 2 ? v[k] : (v[k - 1] + v[k]) / 2;
-}
+// The spread of some values (their median is ch::median).
+using ch::median;
 std::string spread(const std::vector<double>& v, const char* format) {
   if (v.size() < 2) return "-";
   const auto mm = std::minmax_element(v.begin(), v.end());

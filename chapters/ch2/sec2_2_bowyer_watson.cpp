@@ -143,7 +143,7 @@ void figure25(const ch::Options& o) {
   // Each panel K of Figure 2.5 has its own labels (fig2_5_labels_K.dat: x y name lx ly super),
   // placed with that panel's edges by placeAttached: beside its own point, on the point's side
   // of every edge, within 1.5 em of the figure (1.5 / 0.85 of the labels' own em; one place for
-  // six panels was next to other points: issue 42).
+  // six panels was next to other points).
   // A label keeps its direction from panel to panel where it can. Each animation frame has its
   // labels too (fig2_5_anim_NN_labels.dat: x y name lx ly super giflabel), in the direction of
   // the static panel that shows the same triangulation (at its very places on a frame without

@@ -95,7 +95,7 @@ double angleAt(const dt::Vertex* v, const dt::Vertex* u, const dt::Vertex* w) {
 
 void figureFlip(const ch::Options& o) {
   // A convex quadrilateral a d b c around the edge a b, four outer neighbours, and a ring.
-  // What the figure must show, as numbers (issue 42): a b clearly not locally Delaunay (the
+  // What the figure must show, as numbers: a b clearly not locally Delaunay (the
   // angles at c and d sum to 215-245 degrees, far from the cocircular 180: the circle through
   // a, b, c holds d well inside), and the six triangles drawn (the flip's two, before and after,
   // and the four around them) with no angle under 12 degrees. c and d are searched on a grid

@@ -16,7 +16,7 @@ do for [term in "png svg"] {
   set xtics 0, 0.5, 1 nomirror offset 0, (term eq "svg" ? 0.4 : 0)  # the svg terminal sets tick labels lower than pngcairo
   set ytics 0, 0.5, 1 nomirror
   eval layout(1, 3)
-  # Each square as large as its cell allows (issue 42: at gnuplot's margins they were 3 cm wide
+  # Each square as large as its cell allows (at gnuplot's margins they were 3 cm wide
   # on a 15-cm canvas): the cell's width less the tick labels, its height less title and tics.
   set tmargin at screen 1 - 2.3 * EM / FH
   set bmargin at screen 3.0 * EM / FH
