@@ -29,7 +29,8 @@
 #                                            shape (a hint to talk about, not a verdict)
 #   scripts/exercise.sh handout SECTION [OUT]  OUT/exercises_SECTION.md and OUT/solutions_SECTION.md
 # The student, inside the workspace:
-#   scripts/exercise.sh check [ID...]        build, run the tests (implement) or collect the
+#   scripts/exercise.sh check [ID...]        build (dt_tests from the test files of ID...
+#                                            only), run the tests (implement) or collect the
 #                                            answer in answers.md (prove, measure)
 #   scripts/exercise.sh hint [ID]            the next hint, one level per call
 #   scripts/exercise.sh watch [ID...]        check again whenever a file of code/ or answers.md
@@ -476,6 +477,25 @@ parse_ids_dir() {
   fi
 }
 
+# test_files DIR ID...: the files of DIR/tests that hold the test cases of the implement
+# exercises ID... (their names or doctest patterns: * any characters, case ignored), one per
+# line, sorted; the check builds dt_tests from these alone (and main.cpp), not from the whole
+# suite. Dies if a test names no file.
+test_files() {
+  local dir="$1" id name re found
+  shift
+  for id in "$@"; do
+    [ "$(field "$id" kind)" = implement ] || continue
+    while IFS= read -r name; do
+      # The name as an extended regular expression: specials escaped, then * for any characters.
+      re="$(printf '%s' "$name" | sed -e 's/[][\\.^$+?(){}|]/\\&/g' -e 's/\*/.*/g')"
+      found="$(grep -liE "TEST_CASE\(\"$re\"" "$dir"/tests/*.cpp || true)"
+      [ -n "$found" ] || die "exercise $id: no file of $dir/tests holds the test '$name'"
+      printf '%s\n' "$found"
+    done < <(field "$id" test)
+  done | xargs -r -n1 basename | sort -u
+}
+
 cmd_check() {
   parse_ids_dir "$@"
   local dir="$DIR" id
@@ -485,9 +505,10 @@ cmd_check() {
   local build="${DT_EXERCISE_BUILD:-$dir/build}"
   if [ $need_build = 1 ]; then
     [ -f "$dir/CMakeLists.txt" ] || die "$dir is not a copy of the project (no CMakeLists.txt)"
-    local log; log="$(mktemp)"
-    echo "building $build (target dt_tests) ..."
-    if ! { cmake -S "$dir" -B "$build" -DCMAKE_BUILD_TYPE=Release >"$log" 2>&1 &&
+    local log files; log="$(mktemp)"
+    files="$(test_files "$dir" "${SEL[@]}" | paste -sd';')"
+    echo "building $build (target dt_tests, from tests/${files//;/, tests/}) ..."
+    if ! { cmake -S "$dir" -B "$build" -DCMAKE_BUILD_TYPE=Release "-DDT_TEST_FILES=$files" >"$log" 2>&1 &&
            cmake --build "$build" --target dt_tests -j "$JOBS" >>"$log" 2>&1; }; then
       echo "FAIL: the project does not build; the first errors:"
       grep -E 'error|Error' "$log" | head -n 15 | sed 's/^/  /'

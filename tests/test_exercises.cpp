@@ -74,6 +74,8 @@ TEST_CASE("exercises release check hint and watch end to end in a temporary dire
   const Run fail = exercise({"check", dir});
   INFO(fail.out);
   CHECK(fail.status == 1);
+  // Only the test file of 2.3.2-1 is compiled into the workspace's dt_tests, not the suite.
+  CHECK(contains(fail.out, "(target dt_tests, from tests/test_2_3_2_adjacencies.cpp) ..."));
   CHECK(contains(fail.out, "FAIL 2.3.2-1"));
   CHECK(contains(fail.out, "exercise 2.3.2-1: not implemented yet"));
   CHECK(contains(fail.out, "hint: gridCounts(nx, ny) must return"));
