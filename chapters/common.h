@@ -5,6 +5,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <charconv>
 #include <chrono>
 #include <cmath>
@@ -505,6 +506,22 @@ std::string fmt(const char* f, A... a) {
   char buf[256];
   std::snprintf(buf, sizeof buf, f, a...);
   return buf;
+}
+
+/// The median of some measurements (the mean of the middle two for an even count; 0 for none):
+/// what a timing table shows, so that one slow or one lucky run does not move it.
+inline double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const std::size_t k = v.size() / 2;
+  return v.empty() ? 0 : v.size() % 2 ? v[k] : (v[k - 1] + v[k]) / 2;
+}
+
+/// The spread of the same measurements beside their median, "min-max" in `format` ("-" for fewer
+/// than two): a wide one says the machine was noisy.
+inline std::string spread(const std::vector<double>& v, const char* format) {
+  if (v.size() < 2) return "-";
+  const auto mm = std::minmax_element(v.begin(), v.end());
+  return fmt(format, *mm.first) + "-" + fmt(format, *mm.second);
 }
 
 /// The numbers and verdicts a book page quotes in its prose, written by a chapter program as

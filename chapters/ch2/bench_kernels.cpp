@@ -280,17 +280,9 @@ Measure runChild(Method m, Family f, std::size_t n, bool check) {
   return r;
 }
 
-// The median of some values (the mean of the middle two for an even count), and their spread.
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const std::size_t k = v.size() / 2;
-  return v.empty() ? 0 : v.size() % 2 ? v[k] : (v[k - 1] + v[k]) / 2;
-}
-std::string spread(const std::vector<double>& v, const char* format) {
-  if (v.size() < 2) return "-";
-  const auto mm = std::minmax_element(v.begin(), v.end());
-  return ch::fmt(format, *mm.first) + "-" + ch::fmt(format, *mm.second);
-}
+// The median of some values, and their spread (common.h).
+using ch::median;
+using ch::spread;
 
 // The runs of one method on one set: each run's measure, and their medians (peak: the largest).
 struct Runs {
