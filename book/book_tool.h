@@ -1319,8 +1319,14 @@ std::string reproduceBox(const ReproduceSpec& spec, const std::string& page,
     o << "<li>" << code("build/" + p) << " (the full run) or " << code("build/" + p + " --quick")
       << " (small sizes); ";
     auto it = values.find("run." + p + ".seconds");
-    if (it != values.end())
+    // Which run timed it: the main command's options (values_run.txt), "none" for the full run.
+    auto opts = values.find("run.options");
+    const bool full = opts == values.end() || opts->second.first == "none";
+    if (it != values.end() && full)
       o << "the full run of this build's main command took it " << htmlText(it->second.first) << " s of wall time.";
+    else if (it != values.end())
+      o << "this build's main command, run with " << code(opts->second.first) << ", took it "
+        << htmlText(it->second.first) << " s of wall time.";
     else
       o << "not timed in this build (the main command, <code>bash scripts/main.sh</code>, times every program).";
     o << "</li>\n";

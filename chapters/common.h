@@ -398,14 +398,18 @@ inline void runGnuplot(const Options& o, const std::string& script) {
 /// A table printed as Markdown on stdout and written as .md, .csv and .html (the book
 /// includes the .html fragment with \htmlinclude).
 /// The mathematics of a table's caption, header and cells, typed in ASCII for the CSV and the
-/// terminal ("N_search/sqrt(n)", "2^-53", "0 <= i < 256", "O(a,b,c)"), set for a page: sub- and
-/// superscripts, √, ≤, ±, the notes' 𝒪? and 𝒞?, and '<', '>', '&' escaped.
+/// terminal ("N_search/sqrt(n)", "2^-53", "0 <= i < 256", "O(a,b,c)", "1e+06", "a -> b"), set for a
+/// page: sub- and superscripts, √, ≤, ≪, →, ±, ⌈log₄ n⌉, the notes' 𝒪? and 𝒞?, and '<', '>', '&'
+/// escaped.
 inline std::string htmlMath(std::string s) {
   auto sub = [&s](const char* re, const char* to) { s = std::regex_replace(s, std::regex(re), to); };
   sub("<=", "≤");
   sub(">=", "≥");
   sub(">>", "≫");
+  sub("<<", "≪");
+  sub("->", "→");
   sub("\\+-", "±");
+  sub("\\bceil\\(log4 ([A-Za-z])\\)", "⌈log₄ $1⌉");
   sub(" ~ ", " ∼ ");
   sub("&(?![a-z]+;|#[0-9]+;)", "&amp;");
   sub("<", "&lt;");
@@ -414,6 +418,8 @@ inline std::string htmlMath(std::string s) {
   sub("sqrt\\(([A-Za-z0-9_]+)\\)", "√$1");
   sub("sqrt\\(", "√(");
   sub("\\b1e(-?[1-9][0-9]*)\\b", "10^$1");
+  sub("\\b1e\\+0*([1-9][0-9]*)\\b", "10^$1");
+  sub("\\b1e±0*([1-9][0-9]*)\\b", "10^±$1");
   sub("\\|O\\|", "|𝒪<sub>?</sub>|");
   sub("\\bO\\(", "𝒪<sub>?</sub>(");
   sub("\\|InC\\|", "|𝒞<sub>?</sub>|");
@@ -421,8 +427,9 @@ inline std::string htmlMath(std::string s) {
   sub("\\|C\\|", "|𝒞|");
   sub("\\bS0\\b", "S<sub>0</sub>");
   sub("\\b(DT|[A-Za-z])_([A-Za-z0-9]+)\\b", "$1<sub>$2</sub>");
-  sub("([A-Za-z0-9)])\\^-([0-9.]+)", "$1<sup>−$2</sup>");
-  sub("([A-Za-z0-9)])\\^([A-Za-z0-9.]+)", "$1<sup>$2</sup>");
+  // An exponent is a number (1.5 but not the range dots of "2^-60..2^60") or a name.
+  sub("([A-Za-z0-9)])\\^-([0-9]+(?:\\.[0-9]+)?|[A-Za-z][A-Za-z0-9]*)", "$1<sup>−$2</sup>");
+  sub("([A-Za-z0-9)])\\^((?:±)?[0-9]+(?:\\.[0-9]+)?|[A-Za-z][A-Za-z0-9]*)", "$1<sup>$2</sup>");
   sub("\\(us\\)", "(µs)");
   return s;
 }
@@ -508,15 +515,7 @@ std::string fmt(const char* f, A... a) {
   return buf;
 }
 
-/// The median of some measurements (the mean of the middle two for an even count; 0 for none):
-/// what a timing table shows, so that one slow or one lucky run does not move it.
-inline double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const std::size_t k = v.size() / 2;
-  return v.empty() ? 0 : v.size() % 2 ? v[k] : (v[k - 1] + v[k]) / 2;
-}
-
-/// The spread of the same measurements beside their median, "min-max" in `format` ("-" for fewer
+/// The spread of some measurements beside their median (ch::median, timing.h), "min-max" in `format` ("-" for fewer
 /// than two): a wide one says the machine was noisy.
 inline std::string spread(const std::vector<double>& v, const char* format) {
   if (v.size() < 2) return "-";

@@ -111,6 +111,24 @@ inline std::string circlePolyline(double cx, double cy, double r, int n = 240) {
   return out + "\n";
 }
 
+/// A circle as a dashed polyline for gnuplot: `dashes` pieces, each drawn over `on` of its
+/// period (blank lines between them), so that every terminal draws it dashed (gnuplot's gif
+/// terminal draws a dash type solid).
+inline std::string dashedCirclePolyline(double cx, double cy, double r, int dashes = 48, double on = 0.6) {
+  std::string s;
+  char buf[80];
+  for (int k = 0; k < dashes; ++k) {
+    const double a0 = 2 * M_PI * k / dashes, a1 = 2 * M_PI * (k + on) / dashes;
+    for (int j = 0; j <= 4; ++j) {
+      const double a = a0 + (a1 - a0) * j / 4;
+      std::snprintf(buf, sizeof buf, "%.10g %.10g\n", cx + r * std::cos(a), cy + r * std::sin(a));
+      s += buf;
+    }
+    s += "\n";
+  }
+  return s;
+}
+
 /// gnuplotSegs(triangleSegs(xy, tri)): a triangulation with each edge once.
 inline std::string gnuplotEdges(const std::vector<double>& xy,
                                 const std::vector<std::array<int, 3>>& tri) {
@@ -426,13 +444,82 @@ class LabelPlacer {
     return {p_.x0 + (bx - p_.left) / p_.scale(), p_.y1 - (by - p_.top) / p_.scale()};
   }
 
+  /// Like place(), but the label stays attached to its point as a textbook editor requires:
+  /// its anchor and its box are nearer to its own point than to any other marker,
+  /// its anchor and its box's centre at most `maxEm` em from the point, and the line from the
+  /// point to the anchor crosses none of `edges` (data units: the triangulation drawn, so that
+  /// no edge separates a label from its point). Among the candidates that keep these rules, the
+  /// nearest one clear of every obstacle by `gap` px, else the clearest; `preferDeg` is tried
+  /// first; `angleDeg`, if given, receives the direction chosen (to prefer it in the next panel
+  /// or frame). If no candidate within maxEm is clear, one up to 2 maxEm away that is; failing
+  /// that the clearest within maxEm; only if no candidate keeps the rules does it fall back to
+  /// place().
+  std::pair<double, double> placeAttached(double x, double y, const std::string& text, const std::vector<Seg>& edges,
+                                          double preferDeg = NAN, double gap = 5, double maxEm = 1.5,
+                                          double* angleDeg = nullptr) {
+    const bool sub = text.find('_') != std::string::npos, sup = text.find('^') != std::string::npos;
+    const double hw = 0.5 * textWidthEm(text) * em_ + 1, up = (sup ? 0.75 : 0.47) * em_ + 1,
+                 down = (sub ? 0.85 : 0.6) * em_ + 1, hh = 0.5 * (up + down);
+    const double X = p_.px(x), Y = p_.py(y);
+    std::vector<std::array<double, 4>> px;
+    for (const Seg& e : edges) px.push_back({p_.px(e.x0), p_.py(e.y0), p_.px(e.x1), p_.py(e.y1)});
+    double bestScore = -1e300, bestC = -1e300, bx = NAN, by = NAN, ba = 0;
+    for (int ring = 0; ring < 24; ++ring) {
+      const double r = 0.08 * ring * em_;
+      for (int k = -1; k < 48; ++k) {
+        if (k < 0 && std::isnan(preferDeg)) continue;
+        const double a = k < 0 ? preferDeg * M_PI / 180 : M_PI / 4 + 2 * M_PI * k / 48;
+        const double ccx = X + (hw + r) * std::cos(a), ccy = Y - (hh + r) * std::sin(a) + 0.5 * (up - down);
+        const PxBox b{ccx - hw, ccy - up, ccx + hw, ccy + down};
+        const double midY = 0.5 * (b.y0 + b.y1);
+        if (std::hypot(ccx - X, ccy - Y) > maxEm * em_ || std::hypot(ccx - X, midY - Y) > maxEm * em_) continue;
+        const double own = boxPoint(b, X, Y), ownAnchor = std::hypot(ccx - X, ccy - Y);
+        bool ok = true;
+        for (const auto& d : discs_)
+          if (std::hypot(d[0] - X, d[1] - Y) > 0.5 &&
+              (boxPoint(b, d[0], d[1]) < own + 0.1 * em_ || std::hypot(ccx - d[0], ccy - d[1]) < ownAnchor + 0.1 * em_))
+            ok = false;
+        for (const auto& e : px)
+          if (ok && crosses(X, Y, ccx, ccy, e)) ok = false;
+        if (!ok) continue;
+        const double c = clearance(b);
+        if (c >= gap) {
+          boxes_.push_back(b);
+          if (angleDeg) *angleDeg = a * 180 / M_PI;
+          return {p_.x0 + (ccx - p_.left) / p_.scale(), p_.y1 - (ccy - p_.top) / p_.scale()};
+        }
+        const double score = c - 0.01 * ring;
+        if (score > bestScore) bestScore = score, bestC = c, bx = ccx, by = ccy, ba = a;
+      }
+    }
+    // Nothing within maxEm keeps off every line (a vertex with many edges): farther, up to
+    // twice as far, on the same rules, before a label that touches a line.
+    if (!farther_ && bestC < 0) {
+      farther_ = true;
+      const std::size_t nb = boxes_.size();
+      double fa = NAN;
+      const auto far = placeAttached(x, y, text, edges, preferDeg, gap, 2 * maxEm, &fa);
+      farther_ = false;
+      if (boxes_.size() > nb && clearance(boxes_.back(), true) >= gap) {
+        if (angleDeg) *angleDeg = fa;
+        return far;
+      }
+      boxes_.resize(nb);
+    }
+    if (std::isnan(bx)) return farther_ ? std::pair<double, double>{NAN, NAN} : place(x, y, text, preferDeg, gap);
+    if (angleDeg) *angleDeg = ba * 180 / M_PI;
+    boxes_.push_back({bx - hw, by - up, bx + hw, by + down});
+    return {p_.x0 + (bx - p_.left) / p_.scale(), p_.y1 - (by - p_.top) / p_.scale()};
+  }
+
   /// The least distance in px from the box to any obstacle or the panel's edge (negative
   /// inside one).
-  double clearance(const PxBox& b) const {
+  double clearance(const PxBox& b, bool skipLast = false) const {
     double c = std::min({b.x0 - p_.left, p_.left + p_.w - b.x1, b.y0 - p_.top, p_.top + p_.h - b.y1});
     for (const auto& s : segs_) c = std::min(c, boxSeg(b, s) - s[4]);
     for (const auto& d : discs_) c = std::min(c, boxPoint(b, d[0], d[1]) - d[2]);
-    for (const PxBox& o : boxes_) {
+    for (std::size_t i = 0; i + (skipLast ? 1 : 0) < boxes_.size(); ++i) {
+      const PxBox& o = boxes_[i];
       const double dx = std::max({o.x0 - b.x1, b.x0 - o.x1, 0.0}), dy = std::max({o.y0 - b.y1, b.y0 - o.y1, 0.0});
       c = std::min(c, (dx == 0 && dy == 0) ? -1e3 : std::hypot(dx, dy));  // never on a label
     }
@@ -443,6 +530,16 @@ class LabelPlacer {
   static double boxPoint(const PxBox& b, double x, double y) {
     const double dx = std::max({b.x0 - x, 0.0, x - b.x1}), dy = std::max({b.y0 - y, 0.0, y - b.y1});
     return std::hypot(dx, dy);
+  }
+  // Whether the segment from the point (x, y) to (u, v) crosses the segment e (px), not
+  // counting a touch within 1.5 px of the point (the point's own edges start there).
+  static bool crosses(double x, double y, double u, double v, const std::array<double, 4>& e) {
+    const double dx = u - x, dy = v - y, ex = e[2] - e[0], ey = e[3] - e[1];
+    const double den = dx * ey - dy * ex;
+    if (std::fabs(den) < 1e-12) return false;
+    const double t = ((e[0] - x) * ey - (e[1] - y) * ex) / den, s = ((e[0] - x) * dy - (e[1] - y) * dx) / den;
+    const double len = std::hypot(dx, dy);
+    return s >= 0 && s <= 1 && t * len > 1.5 && t <= 1;
   }
   static double boxSeg(const PxBox& b, const std::array<double, 5>& s) {
     // Sampled every px: exact enough for a clearance of a few px.
@@ -460,6 +557,7 @@ class LabelPlacer {
   std::vector<std::array<double, 5>> segs_;  // x0 y0 x1 y1 half-width, px
   std::vector<std::array<double, 3>> discs_;
   std::vector<PxBox> boxes_;
+  bool farther_ = false;  // placeAttached is looking beyond its maxEm
 };
 
 }  // namespace ch

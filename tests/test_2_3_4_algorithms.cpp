@@ -70,10 +70,12 @@ TEST_CASE("2.3.4 Table 2.1: N_search (faces visited by lineSearch) grows like sq
 }
 
 TEST_CASE("2.3.4 Table 2.1: N_cavity tends to 4 on random points") {
+  // BEGIN SOLUTION 2.3.4-2 (remove)
   // Backward analysis: the cavity of point i has deg_i(p) - 2 faces, and the mean degree in
   // DT_i is 6 - (D_i - 6)/i with D_i the corners at the 4 super-vertices (a few dozen here), so
-  // E[N_cavity] = 4 - mean over i of (D_i - 6)/i: a bias of order (log n)/n. Around it the
-  // mean of n cavity sizes (standard deviation about 1.5) fluctuates by about 1.5/sqrt(n):
+  // E[N_cavity] = 4 - mean over i of (D_i - 6)/i: a bias of order (log n)/n.
+  // END SOLUTION 2.3.4-2
+  // Around 4 the mean of n cavity sizes (standard deviation about 1.5) fluctuates by about 1.5/sqrt(n):
   // 0.05 at 10^3, 0.015 at 10^4; over 8 seeds the largest deviations from 4 were 0.12 and 0.023.
   // The tolerances, 0.25 and 0.08, are about 5 standard deviations: a mean of 3.8 or 4.2 at
   // 10^4 fails.
@@ -196,9 +198,10 @@ TEST_CASE("2.3.4 N_search counts the faces lineSearch visits including the face 
 }
 
 TEST_CASE("2.3.4 worst case: one insertion order of points on a parabola gives cavities of O(i) faces") {
+  // One order along the parabola makes the total cavity size quadratic.
+  // BEGIN SOLUTION 2.3.4-3 (remove)
   // x = -n..-1 in increasing x: in DT(S) the cavity of the i-th point is all i - 3 triangles
   // plus the ghosts it sees: sum ~ n^2 / 2.
-  // BEGIN SOLUTION 2.3.4-3 (remove)
   // Why (exercise 2.3.4-3): each point is inside every circle through three earlier ones (a
   // circle cuts the parabola at 4 points with x summing to 0).
   // END SOLUTION 2.3.4-3

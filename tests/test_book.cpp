@@ -696,7 +696,13 @@ TEST_CASE("book the reproduce box names the commands and the time and the files 
   const std::string box = booktool::reproduceBox(spec, page, values, "../../output/ch2",
                                                  [&](const std::string& f) { return files.count(f) > 0; });
   CHECK(box.find("build/sec9&#95;x &#45;&#45;quick") != std::string::npos);  // "--" never an en dash
-  CHECK(box.find("12.5 s of wall time") != std::string::npos);
+  CHECK(box.find("the full run of this build's main command took it 12.5 s of wall time") != std::string::npos);
+  // A quick run says so: the box names the options the main command ran with.
+  auto quick = values;
+  quick["run.options"] = {"--quick", "values_run.txt"};
+  const std::string qbox = booktool::reproduceBox(spec, page, quick, "x", [](const std::string&) { return false; });
+  CHECK(qbox.find("run with <code>&#45;&#45;quick</code>, took it 12.5 s") != std::string::npos);
+  CHECK(qbox.find("full run of this build") == std::string::npos);
   CHECK(box.find("href=\"../../output/ch2/table9.csv\"") != std::string::npos);
   CHECK(box.find("href=\"../../output/ch2/fig9.png\"") != std::string::npos);
   CHECK(box.find("values&#95;sec9&#95;x.txt") != std::string::npos);

@@ -11,6 +11,8 @@
 // markers and their labels go through the same checks. The checkers are tested on bad input too.
 #include <doctest/doctest.h>
 
+#include "svg_attr.h"
+
 #include <algorithm>
 #include <array>
 #include <cctype>
@@ -390,23 +392,7 @@ struct Svg {
   std::vector<PlotGroup> plots;
 };
 
-std::string attr(const std::string& tag, const std::string& name) {
-  // By hand, not with std::regex: a path's d attribute can hold 100 000 characters over many
-  // lines, and libstdc++'s regex recurses per character.
-  for (std::size_t at = tag.find(name); at != std::string::npos; at = tag.find(name, at + 1)) {
-    if (at == 0 || !std::isspace(static_cast<unsigned char>(tag[at - 1]))) continue;
-    std::size_t k = at + name.size();
-    while (k < tag.size() && std::isspace(static_cast<unsigned char>(tag[k]))) ++k;
-    if (k >= tag.size() || tag[k] != '=') continue;
-    ++k;
-    while (k < tag.size() && std::isspace(static_cast<unsigned char>(tag[k]))) ++k;
-    if (k >= tag.size() || (tag[k] != '"' && tag[k] != '\'')) continue;
-    const std::size_t close = tag.find(tag[k], k + 1);
-    if (close == std::string::npos) return "";
-    return tag.substr(k + 1, close - k - 1);
-  }
-  return "";
-}
+std::string attr(const std::string& tag, const std::string& name) { return dttest::svgAttr(tag, name); }
 
 std::string unescape(std::string s) {
   const std::pair<const char*, const char*> ents[] = {{"&lt;", "<"}, {"&gt;", ">"}, {"&quot;", "\""}, {"&apos;", "'"}, {"&amp;", "&"}};
@@ -425,21 +411,12 @@ Svg parseSvg(const std::string& s) {
   double strokeWidth = 1;
   std::string groupTag;
   std::vector<double> widths;  // stroke-width of the open <g>s
-  const std::size_t body = s.find("</defs>");
-  std::size_t i = body == std::string::npos ? 0 : body;
-  while ((i = s.find('<', i)) != std::string::npos) {
-    const std::size_t end = s.find('>', i);
-    if (end == std::string::npos) break;
-    const std::string tag = s.substr(i, end - i + 1);
+  dttest::forEachSvgTag(s, [&](const std::string& tag, const std::size_t i, const std::size_t end) -> std::size_t {
     if (tag.compare(0, 3, "<g ") == 0 || tag == "<g>") {
       ++depth;
       const std::string w = attr(tag, "stroke-width");
       widths.push_back(w.empty() ? (widths.empty() ? 1.0 : widths.back()) : std::atof(w.c_str()));
-      const std::string id = attr(tag, "id");
-      if (id.compare(0, 13, "gnuplot_plot_") == 0) {
-        const int n = std::atoi(id.c_str() + 13);
-        if (n == 1 || n <= plot) ++panel;
-        plot = n;
+      if (dttest::svgPlotStart(tag, panel, plot)) {
         depthInPlot = depth;
         PlotGroup g{panel, plot, "", 0};
         const std::size_t t0 = s.find("<title>", end), t1 = s.find("</title>", end);
@@ -481,8 +458,7 @@ Svg parseSvg(const std::string& s) {
           svg.texts.push_back(t);
           if (depthInPlot > 0) ++svg.plots.back().drawn;
         }
-        i = te;
-        continue;
+        return te;
       }
     } else if (tag == "</g>") {
       if (depth == depthInPlot) depthInPlot = -1;
@@ -531,8 +507,8 @@ Svg parseSvg(const std::string& s) {
     } else if (tag.compare(0, 6, "<image") == 0 || tag.compare(0, 7, "<circle") == 0 || tag.compare(0, 5, "<rect") == 0) {
       if (depthInPlot > 0) ++svg.plots.back().drawn;
     }
-    i = end + 1;
-  }
+    return end + 1;
+  });
   return svg;
 }
 
@@ -1684,20 +1660,7 @@ TEST_CASE("figures every PNG shows what its SVG shows in each panel") {
 
 namespace {
 
-/// "#rrggbb" for what gnuplot writes: "rgb( 60,  60,  60)", "#3c3c3c", "black", "white".
-std::string hexColour(const std::string& c) {
-  int r, g, b;
-  if (std::sscanf(c.c_str(), "rgb(%d,%d,%d)", &r, &g, &b) == 3 || std::sscanf(c.c_str(), "rgb( %d, %d, %d)", &r, &g, &b) == 3) {
-    char buf[8];
-    std::snprintf(buf, sizeof buf, "#%02x%02x%02x", r, g, b);
-    return buf;
-  }
-  if (c == "black") return "#000000";
-  if (c == "white") return "#ffffff";
-  std::string l = c;
-  for (char& ch : l) ch = char(std::tolower(static_cast<unsigned char>(ch)));
-  return l;
-}
+std::string hexColour(const std::string& c) { return dttest::svgHexColour(c); }
 
 /// The colour roles of figures/ch2/style.gp: C_NAME = "#rrggbb".
 std::map<std::string, std::string> styleRoles() {

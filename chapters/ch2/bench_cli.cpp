@@ -30,6 +30,7 @@
 #include "common.h"
 #include "delaunay.h"
 #include "generators.h"
+#include "timing.h"
 
 #ifdef DT_HAVE_CGAL
 #include <CGAL/Delaunay_triangulation_2.h>
@@ -114,10 +115,7 @@ Run runChild(const std::vector<std::string>& args, const std::string& capture) {
   return r;
 }
 
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v.empty() ? 0 : v[v.size() / 2];
-}
+using ch::median;
 
 std::string selfDir() {
   char buf[4096];

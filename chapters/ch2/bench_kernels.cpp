@@ -43,6 +43,7 @@
 #include "generators.h"
 #include "hilbert.h"
 #include "triangulate.h"
+#include "timing.h"
 
 #ifdef DT_HAVE_CGAL
 #include <CGAL/Delaunay_triangulation_2.h>
@@ -280,7 +281,7 @@ Measure runChild(Method m, Family f, std::size_t n, bool check) {
   return r;
 }
 
-// The median of some values, and their spread (common.h).
+// The median of some values (timing.h) and their spread (common.h).
 using ch::median;
 using ch::spread;
 

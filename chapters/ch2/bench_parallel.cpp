@@ -38,6 +38,7 @@
 #include <vector>
 
 #include "cache_sizes.h"
+#include "timing.h"
 #include "check.h"
 #include "common.h"
 #include "fast_delaunay.h"
@@ -234,26 +235,29 @@ void budgetJob(std::size_t n, Budget run, bool check, double* out) {
   if (check) validate(xy, r.tri);
 }
 
-// The sequential kernel on n points, the fastest of `reps` runs. out: wall, CPU, the CPU time of
-// its sort (the same brioCoinOrder call, timed apart), the rest (CPU), all in seconds per run;
-// peak MB after the triangulation, check seconds, peak MB after the check.
+// The sequential kernel on n points, the median of `reps` runs (ch::median). out: wall, CPU, the
+// CPU time of its sort (the same brioCoinOrder call, timed apart), the rest (CPU), all in seconds
+// per run; peak MB after the triangulation, check seconds, peak MB after the check.
 void perPointJob(std::size_t n, int reps, double* out) {
   const std::vector<double> xy = dt::uniformPoints(n, 2027);
   std::vector<dt::Tri> tri;  // the last run's triangles (one result alive at a time)
-  out[0] = out[1] = out[2] = 1e300;
+  std::vector<double> wall, cpu, sort;
   for (int k = 0; k < reps; ++k) {
     tri.clear();
     tri.shrink_to_fit();
     const double w0 = wallNow(), c0 = cpuNow();
     tri = dt::fastDelaunay(xy).tri;
-    out[0] = std::min(out[0], wallNow() - w0);
-    out[1] = std::min(out[1], cpuNow() - c0);
+    wall.push_back(wallNow() - w0);
+    cpu.push_back(cpuNow() - c0);
     if (n >= 10000000) continue;  // the sort alone, timed apart (below 10^7: enough memory)
     const dt::FastOptions d;
     const double s0 = cpuNow();
     const std::vector<std::size_t> order = dt::brioCoinOrder(xy, d.seed, d.rounds);
-    out[2] = std::min(out[2], cpuNow() - s0);
+    sort.push_back(cpuNow() - s0);
   }
+  out[0] = ch::median(wall);
+  out[1] = ch::median(cpu);
+  if (!sort.empty()) out[2] = ch::median(sort);
   out[4] = peakMB();
   if (n >= 10000000) {  // now that the peak is read
     const dt::FastOptions d;
@@ -696,9 +700,11 @@ int main(int argc, char** argv) {
     large << dat.str();
     std::vector<std::pair<std::size_t, double>> curve;
     double lastPeakMB = 0;
+    int fewestRuns = 1 << 30;  // the least k of the chart's medians (its caption cites it)
     for (std::size_t n : pp) {
-      // Small sizes are repeated so that each timing covers a measurable time.
+      // Small sizes are run more often, so that their median is of many short runs.
       const int r = n >= 10000000 ? 1 : std::max(reps, int(std::min<std::size_t>(200, 300000 / n)));
+      fewestRuns = std::min(fewestRuns, r);
       const std::vector<double> x = inChild([&](double* out) { perPointJob(n, r, out); });
       if (x.empty()) throw std::runtime_error("time per point: the run at n = " + std::to_string(n) + " failed");
       const double k = 1e9 / double(n);
@@ -715,10 +721,11 @@ int main(int argc, char** argv) {
                 << ch::fmt("%.0f", x[4]) << " MB\n";
     }
     u.caption = "The fast kernel (one thread) on uniform random points: time per point, sorting "
-                "included (the fastest of several runs below 10^7), peak resident memory of the "
+                "included (the median of several runs below 10^7), peak resident memory of the "
                 "process (VmHWM, the points included) after the triangulation and after the exact "
                 "check. Load average at the end: " + loadAverage() + ".";
     u.emit(o, "table_time_per_point");
+    values.num("par.per_point_runs", fewestRuns, "%.0f");
     ch::writeOut(o, "time_per_point.dat", dat.str());
     if (maxN >= 10000000) ch::writeOut(o, "time_per_point_large.dat", large.str());
 

@@ -43,8 +43,10 @@ std::string segment(const dt::Vertex* a, const dt::Vertex* b, const char* color,
 }
 
 // One panel pair: DT of `base`, then q inserted. Writes <stem>_{before,after}.{gp,dat}.
+// `line` (x0 y0 x1 y1, or empty): a line the caption names, through (x0, y0) and (x1, y1),
+// drawn dotted across both panels' view (the style's construction lines).
 void panels(const ch::Options& o, const std::string& stem, int row, const XY& base, double qx, double qy,
-            const std::string& note) {
+            const std::string& note, const std::vector<double>& line = {}) {
   dt::Triangulation T;
   std::vector<dt::Vertex*> S;
   for (std::size_t i = 0; i < base.size() / 2; ++i)
@@ -54,11 +56,11 @@ void panels(const ch::Options& o, const std::string& stem, int row, const XY& ba
   // Before: the visible hull edges and the finite faces of the cavity (the style's conflict and
   // cavity colours).
   const auto vis = dt::visibleHullEdges(T, q);
-  std::string obj;
+  std::string obj, lineObj;
   int id = 0;
   std::size_t cavityFinite = 0;
   for (const dt::Face* f : T.finiteFaces())
-    if (f->inCircle(q)) obj += polygon(id, f, "#f9c58d"), ++cavityFinite;
+    if (f->inCircle(q)) obj += polygon(id, f, "#f0a830"), ++cavityFinite;
   for (const auto& e : vis) obj += segment(e.a, e.b, "#c51b7d", 4);
   for (const auto& e : vis) {  // the ghost faces in conflict: the rays from the edge ends away
     obj += "set arrow from " + ch::fmt("%.17g,%.17g", e.a->x, e.a->y) + " to " +
@@ -90,6 +92,13 @@ void panels(const ch::Options& o, const std::string& stem, int row, const XY& ba
   }
   for (const dt::Vertex* v : S) placer.marker(v->x, v->y, ch::pointRadius(fs, 0.8));
   placer.marker(q->x, q->y, ch::pointRadius(fs, 1.6));
+  ch::Seg across{};
+  if (line.size() == 4 && ch::clipLine(line[0], line[1], line[2] - line[0], line[3] - line[1], x0 - m, x1 + m, y0 - m, y1 + m, across)) {
+    lineObj = "set arrow from " + ch::fmt("%.17g,%.17g", across.x0, across.y0) + " to " +
+              ch::fmt("%.17g,%.17g", across.x1, across.y1) + " nohead lc rgb \"#8c8c8c\" lw 1.5 dt 3 back\n";
+    obj += lineObj;
+    placer.segment(across.x0, across.y0, across.x1, across.y1, 1.5 * lw);
+  }
   obj += "VIEW = \"" + pBefore.gnuplot() + "\"\n";
   ch::writeOut(o, stem + "_before.gp", obj);
   ch::writeOut(o, stem + "_before.dat", ch::gnuplotSegs(beforeSegs));
@@ -99,15 +108,18 @@ void panels(const ch::Options& o, const std::string& stem, int row, const XY& ba
   dt::insertVertex(T, dt::anyGhost(T), q, st, scratch);
   const dt::CheckReport r = dt::checkTriangulation(T);
   if (!r.ok) throw std::logic_error("outside-hull figure: " + r.error);
-  obj.clear();
+  obj = lineObj;
   id = 0;
   std::size_t fresh = 0;
   for (const dt::Face* f : T.finiteFaces())
-    if (f->V[0] == q || f->V[1] == q || f->V[2] == q) obj += polygon(id, f, "#b8e0b0"), ++fresh;
+    if (f->V[0] == q || f->V[1] == q || f->V[2] == q) obj += polygon(id, f, "#e5f5d5"), ++fresh;
   obj += "ftitle = \"after: " + plural(fresh, "new triangle") + "\"\n";
   const std::vector<ch::Seg> afterSegs = ch::faceSegs(T.finiteFaces());
   placer.segments(afterSegs, 1.2 * lw);
-  const auto [lx, ly] = placer.place(q->x, q->y, ch::mathText("p"));
+  // Beside p, on its side of every edge of both panels (and of the lines to the visible edges).
+  std::vector<ch::Seg> sides = afterSegs;
+  sides.insert(sides.end(), beforeSegs.begin(), beforeSegs.end());
+  const auto [lx, ly] = placer.placeAttached(q->x, q->y, ch::mathText("p"), sides);
   ch::writeOut(o, stem + "_label.dat", ch::fmt("%.17g %.17g\n", lx, ly));
   obj += "VIEW = \"" + pAfter.gnuplot() + "\"\n";
   ch::writeOut(o, stem + "_after.gp", obj);
@@ -146,7 +158,7 @@ void figure(const ch::Options& o) {
   dt::Vertex q(qx, qy);
   std::cout << "supporting-line point: orient = " << dt::orientationTest(e.a, e.b, &q)
             << " (0: exactly on the line of the hull edge)\n";
-  panels(o, "outline", 1, base, qx, qy, "on a hull line: ");
+  panels(o, "outline", 1, base, qx, qy, "on a hull line: ", {e.a->x, e.a->y, e.b->x, e.b->y});
   ch::runGnuplot(o, "fig_outside_hull.gp");
 }
 

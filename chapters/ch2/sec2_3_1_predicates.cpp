@@ -16,6 +16,7 @@
 #include <random>
 
 #include "check.h"
+#include "colour_vision.h"
 #include "common.h"
 #include "generators.h"
 #include "predicates.h"
@@ -87,7 +88,7 @@ double orientStepByStep(double ax, double ay, double bx, double by, double cx, d
   return l - r;
 }
 
-void header(const ch::Options& o) {
+long header(const ch::Options& o) {
   std::cout << "Section 2.3.1: robust predicates\n"
             << "  orientation O(a,b,c) = sign((xa-xc)(yb-yc) - (ya-yc)(xb-xc)), pivot c (the notes'"
                " formula, evaluated in this order)\n"
@@ -128,6 +129,7 @@ void header(const ch::Options& o) {
   ch::writeOut(o, "sec2_3_1_setup.txt",
                ch::fmt("contraction_differences %ld\ndistinct_abscissas %d\nexact_abscissas %d\n",
                        differ, distinct, exact));
+  return differ;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -212,6 +214,20 @@ void orientMaps(const ch::Options& o) {
          ch::fmt("%ld / %ld", dt::agreeingCells(cnCBA, cnABC, -1), cells), "-"});
   r.emit(o, "table_orient_relations");
 
+  // fig2_7_deuteranopia: Figure 2.7 as a deuteranope sees it (Machado et al. 2009, severity 1,
+  // chapters/colour_vision.h). The map's only colours are the three signs; its text, axes and
+  // background are black and white, which the simulation leaves as they are. So drawing the map
+  // with the simulated sign colours is the simulation of the whole figure.
+  {
+    std::ifstream in(std::string(DT_SOURCE_DIR) + "/figures/ch2/style.gp");
+    std::stringstream style;
+    style << in.rdbuf();
+    std::string gp = "# The sign colours of figures/ch2/style.gp as a deuteranope sees them (sec2_3_1_predicates).\n";
+    for (const char* role : {"C_MINUS", "C_ZERO", "C_PLUS"})
+      gp += std::string("D") + (role + 1) + " = \"" +
+            ch::toHex(ch::simulate(ch::styleColour(style.str(), role), ch::Vision::Deuteranopia)) + "\"\n";
+    ch::writeOut(o, "sign_colours_deuteranopia.gp", gp);
+  }
   ch::runGnuplot(o, "fig2_7.gp");
   ch::runGnuplot(o, "fig2_8.gp");
 }
@@ -640,12 +656,13 @@ int main(int argc, char** argv) {
                       1000, 1000000000,
                       {"fig2_7", "fig2_8", "fig_incircle_naive", "fig_incircle_robust"}, {}};
   return ch::runMain(argc, argv, p, [](const ch::Options& o) {
-    header(o);
+    const long contracted = header(o);
     if (o.wants("fig2_7") || o.wants("fig2_8")) orientMaps(o);
     if (o.wants("fig_incircle_naive") || o.wants("fig_incircle_robust")) incircleMaps(o);
     if (!o.everything()) return;
     notesFilters(o);
     ch::Values v(o, "sec2_3_1_predicates");
+    v.set("s231.contraction_differences", std::to_string(contracted));
     mpfr200(o, v);
     benchmark(o, v);
     v.write();

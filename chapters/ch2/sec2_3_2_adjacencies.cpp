@@ -61,10 +61,12 @@ void figure29(const ch::Options& o) {
     labels += ch::fmt("%.17g %.17g %d %d %d\n", r.mesh.xy[2 * v], r.mesh.xy[2 * v + 1], c.vf[v],
                       c.ve[v], int(c.vf[v] < c.ve[v]));
   ch::writeOut(o, "fig2_9_vertices.dat", labels);
+  // The notes' symbols in the math font (figures/ch2/notation.txt): italic n, n_h, n_vf.
   ch::writeOut(o, "fig2_9_title.txt",
-               ch::fmt("n = %ld, n_h = %ld: mean n_{vf} = %ld/%ld = %.2f;  eq. (2.2): 6 - "
-                       "(3 {\303\227} %ld + 6)/%ld = %.2f",
-                       c.n, c.nh, c.sumVF, c.n, c.meanVF(), c.nh, c.n, c.eq22()));
+               ch::mathText("n") + ch::fmt(" = %ld, ", c.n) + ch::mathText("n_h") + ch::fmt(" = %ld: mean ", c.nh) +
+                   ch::mathText("n_{vf}") +
+                   ch::fmt(" = %ld/%ld = %.2f;  eq. (2.2): 6 \342\210\222 (3 \303\227 %ld + 6)/%ld = %.2f", c.sumVF, c.n,
+                           c.meanVF(), c.nh, c.n, c.eq22()));
   std::cout << "Figure 2.9: n = " << c.n << ", n_h = " << c.nh << ", sum of n_vf = " << c.sumVF
             << ", average n_vf = " << ch::fmt("%.4g", c.meanVF())
             << ", eq. (2.2) = " << ch::fmt("%.4g", c.eq22())

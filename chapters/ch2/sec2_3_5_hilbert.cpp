@@ -21,6 +21,7 @@
 
 #include "check.h"
 #include "common.h"
+#include "timing.h"
 #include "generators.h"
 #include "hilbert.h"
 #include "triangulate.h"
@@ -84,6 +85,24 @@ Run triangulate(const XY& p, Order order, int depth, bool check, std::uint64_t s
       throw std::runtime_error("exact check failed: " + rep.error);
     r.checked = true;
   }
+  return r;
+}
+
+// The runs a chart's timing is the median of: 3, 1 with --quick (its caption cites the value
+// s235.time_runs; figures/ch2/timings.txt).
+int timingRuns(const ch::Options& o) { return o.quick ? 1 : 3; }
+
+// triangulate `runs` times on the same points: the median of each timing (ch::median), the
+// counts and the exact check of the first run (every run inserts in the same order).
+Run medianRun(int runs, const XY& p, Order order, int depth, bool check) {
+  Run r = triangulate(p, order, depth, check);
+  std::vector<double> sort{r.tSort}, total{r.tTotal};
+  for (int k = 1; k < runs; ++k) {
+    const Run x = triangulate(p, order, depth, false);
+    sort.push_back(x.tSort), total.push_back(x.tTotal);
+  }
+  r.tSort = ch::median(sort);
+  r.tTotal = ch::median(total);
   return r;
 }
 
@@ -371,6 +390,7 @@ void brioComparison(const ch::Options& o, const std::vector<std::size_t>& sizes,
   // sizes), and the parabola's Hilbert-only cavities.
   double hilCavLo = 1e300, hilCavHi = 0, brioCavLo = 1e300, brioCavHi = 0, brioParabola = 0;
   double walkDiffSum = 0, cavDiffSum = 0;
+  double timeRatioLo = 1e300, timeRatioHi = 0;  // BRIO time / Hilbert-only time, spread-out rows
   int pairs = 0;
   std::string parabolaHilbert;
   struct Input { const char* name; XY (*make)(std::size_t, std::uint64_t); };
@@ -416,7 +436,7 @@ void brioComparison(const ch::Options& o, const std::vector<std::size_t>& sizes,
           prog.update(++done);
           continue;
         }
-        const Run r = triangulate(p, ord, 0, n <= checkLimit);
+        const Run r = medianRun(timingRuns(o), p, ord, 0, n <= checkLimit);
         quadratic[k] = r.nSearch + r.nCavity > 200;
         const bool spread = in == 0 || in == 1 || in == 3, parabola = in == 2;
         if (ord == Order::Hilbert) {
@@ -429,6 +449,8 @@ void brioComparison(const ch::Options& o, const std::vector<std::size_t>& sizes,
             if (hilbertRun.nCavity > 0) {  // the Hilbert-only run was not skipped
               walkDiffSum += r.nSearch - hilbertRun.nSearch;
               cavDiffSum += hilbertRun.nCavity - r.nCavity;
+              const double ratio = r.tTotal / hilbertRun.tTotal;
+              timeRatioLo = std::min(timeRatioLo, ratio), timeRatioHi = std::max(timeRatioHi, ratio);
               ++pairs;
             }
           } else if (parabola) {
@@ -462,6 +484,15 @@ void brioComparison(const ch::Options& o, const std::vector<std::size_t>& sizes,
   v.num("s235.hil_cav_hi", hilCavHi, "%.1f");
   v.num("s235.brio_walk_extra", pairs ? walkDiffSum / pairs : 0.0, "%.1f");
   v.num("s235.brio_cav_less", pairs ? cavDiffSum / pairs : 0.0, "%.1f");
+  // BRIO's time over Hilbert-only's on the same points, over the spread-out rows.
+  v.num("s235.brio_time_lo", pairs ? timeRatioLo : 0.0, "%.2f");
+  v.num("s235.brio_time_hi", pairs ? timeRatioHi : 0.0, "%.2f");
+  v.set("s235.brio_time_verdict",
+        pairs == 0                                   ? "not measured"
+        : timeRatioLo >= 0.8 && timeRatioHi <= 1.25  ? "about the same time on every row"
+        : timeRatioHi < 1                            ? "BRIO is faster on every row"
+        : timeRatioLo > 1                            ? "BRIO is slower on every row"
+                                                     : "neither order is faster on every row");
   v.set("s235.parabola_hilbert", parabolaHilbert.empty() ? "not measured" : parabolaHilbert);
   v.num("s235.parabola_brio", brioParabola, "%.2f");  // as in table_brio
   std::string all = "# input(0 uniform,1 clustered,2 parabola,3 jittered grid,4 circle) n "
@@ -479,7 +510,7 @@ void brioComparison(const ch::Options& o, const std::vector<std::size_t>& sizes,
   ch::runGnuplot(o, "fig_brio_compare.gp");
 }
 
-// ---- The fixed grid against the adaptive order (issue 19) -----------------------------------
+// ---- The fixed grid against the adaptive order --------------------------------------------------
 
 // The outlier figure: uniform points plus one point at (1e12, 1e12). On the fixed grid all the
 // uniform points share one cell and come in input (random) order, so the walks grow like
@@ -499,7 +530,7 @@ void outlierComparison(const ch::Options& o, const std::vector<std::size_t>& siz
   for (std::size_t n : sizes) total += n <= fixedMax ? 2 : 1;
   ch::Progress prog("fixed grid against adaptive", total);
   auto row = [&](const char* name, const XY& p, Order ord) {
-    const Run r = triangulate(p, ord, 0, true);
+    const Run r = medianRun(timingRuns(o), p, ord, 0, true);
     tab.add({name, sci(p.size() / 2), ord == Order::Hilbert ? "Hilbert, adaptive" : orderName(ord),
              ch::fmt("%.2f", r.nSearch),
              ch::fmt("%.2f", r.nCavity), ch::fmt("%.3g", r.tTotal), r.checked ? "exact" : "no"});
@@ -555,6 +586,8 @@ int main(int argc, char** argv) {
     if (o.wants("fig_brio_rounds")) brioFigure(o);
     if (o.wants("fig_brio_compare"))
       brioComparison(o, upTo({1000, 10000, 100000, 1000000}), o.quick ? 10000 : 30000, 1000000, values);
+    if (o.wants("fig_brio_compare") || o.wants("fig_outlier_walk"))
+      values.num("s235.time_runs", timingRuns(o), "%.0f");  // the charts' captions cite it
     if (o.wants("fig_outlier_walk"))
       outlierComparison(o, upTo({1000, 3000, 10000, 30000, 100000, 300000, 1000000}),
                         o.quick ? 10000 : 100000, o.quick ? 10000 : 100000);

@@ -11,6 +11,7 @@
 #include <chrono>
 #include <cmath>
 #include <map>
+#include <memory>
 #include <random>
 #include <set>
 #include <sstream>
@@ -76,34 +77,88 @@ std::map<const dt::Vertex*, int> degrees(const dt::Triangulation& T) {
 }
 
 // ---- Figure: one flip, before and after, with the four adjacent triangles --------------------
-void figureFlip(const ch::Options& o) {
-  dt::Triangulation T;
-  // A convex quadrilateral a d b c around the edge a b, four outer neighbours, and a ring.
-  const XY p = {0, 0, 4, 0.4, 2.2, 2.2, 1.8, -1.6,        // a b c d
-                -1.6, 1.6, 5.2, 2.4, 0.2, -3.2, 5.0, -3.0,  // beyond c a, b c, a d, d b
-                -3, -1, 6.8, -0.2, 1.5, 4, 2.5, -4.5};
-  auto S = dt::addVertices(T, p);
-  dt::delaunayTrglHull(T, S, dt::StartRule::LastCavity);
-  // The face with edge a b (either direction). If the Delaunay triangulation chose the other
-  // diagonal c d, flip it first: the figure needs a valid triangulation, not a Delaunay one.
-  auto find = [&](const dt::Vertex* u, const dt::Vertex* v, int& idx) -> dt::Face* {
-    for (dt::Face& g : T.faces())
-      for (int i = 0; i < 3; ++i)
-        if (!g.isGhost() && ((g.V[i] == u && g.V[(i + 1) % 3] == v) ||
-                             (g.V[i] == v && g.V[(i + 1) % 3] == u))) {
-          idx = i;
-          return &g;
-        }
-    return nullptr;
-  };
-  int k = -1;
-  dt::Face* f = find(S[0], S[1], k);
-  if (f == nullptr) {
-    dt::Face* h = find(S[2], S[3], k);
-    if (h == nullptr || !dt::flipEdge(h, k)) throw std::logic_error("flip figure: no quad a d b c");
-    f = find(S[0], S[1], k);
+// The smallest angle of a triangle, degrees.
+double minAngle(const dt::Vertex* const* V) {
+  double m = 180;
+  for (int i = 0; i < 3; ++i) {
+    const dt::Vertex *a = V[i], *b = V[(i + 1) % 3], *c = V[(i + 2) % 3];
+    m = std::min(m, std::fabs(std::atan2((b->x - a->x) * (c->y - a->y) - (b->y - a->y) * (c->x - a->x),
+                                         (b->x - a->x) * (c->x - a->x) + (b->y - a->y) * (c->y - a->y))) * 180 / M_PI);
   }
-  if (f == nullptr || !dt::isFlippable(f, k)) throw std::logic_error("flip figure: no edge a b");
+  return m;
+}
+// The angle at v between u and w, degrees.
+double angleAt(const dt::Vertex* v, const dt::Vertex* u, const dt::Vertex* w) {
+  return std::fabs(std::atan2((u->x - v->x) * (w->y - v->y) - (u->y - v->y) * (w->x - v->x),
+                              (u->x - v->x) * (w->x - v->x) + (u->y - v->y) * (w->y - v->y))) * 180 / M_PI;
+}
+
+void figureFlip(const ch::Options& o) {
+  // A convex quadrilateral a d b c around the edge a b, four outer neighbours, and a ring.
+  // What the figure must show, as numbers: a b clearly not locally Delaunay (the
+  // angles at c and d sum to 215-245 degrees, far from the cocircular 180: the circle through
+  // a, b, c holds d well inside), and the six triangles drawn (the flip's two, before and after,
+  // and the four around them) with no angle under 12 degrees. c and d are searched on a grid
+  // (600 configurations, deterministic, a few milliseconds); the best score wins.
+  XY p = {0, 0, 4, 0.4, 2.2, 2.2, 1.8, -1.6,        // a b c d
+          -1.6, 1.6, 5.2, 2.4, 0.2, -3.2, 5.0, -3.0,  // beyond c a, b c, a d, d b
+          -3, -1, 6.8, -0.2, 1.5, 4, 2.5, -4.5};
+  std::unique_ptr<dt::Triangulation> Tp;
+  std::vector<dt::Vertex*> S;
+  dt::Face* f = nullptr;
+  int k = -1;
+  // Triangulates p with the edge a b (if the Delaunay triangulation chose the other diagonal
+  // c d, it is flipped first: the figure needs a valid triangulation, not a Delaunay one).
+  auto build = [&]() {
+    Tp = std::make_unique<dt::Triangulation>();
+    S = dt::addVertices(*Tp, p);
+    dt::delaunayTrglHull(*Tp, S, dt::StartRule::LastCavity);
+    auto find = [&](const dt::Vertex* u, const dt::Vertex* v, int& idx) -> dt::Face* {
+      for (dt::Face& g : Tp->faces())
+        for (int i = 0; i < 3; ++i)
+          if (!g.isGhost() && ((g.V[i] == u && g.V[(i + 1) % 3] == v) || (g.V[i] == v && g.V[(i + 1) % 3] == u))) {
+            idx = i;
+            return &g;
+          }
+      return nullptr;
+    };
+    f = find(S[0], S[1], k);
+    if (f == nullptr) {
+      dt::Face* h = find(S[2], S[3], k);
+      if (h == nullptr || !dt::flipEdge(h, k)) return false;
+      f = find(S[0], S[1], k);
+    }
+    return f != nullptr && dt::isFlippable(f, k);
+  };
+  // The score: -1000 per rule missed, then the smallest angle, less the distance of the
+  // angle sum from 230.
+  auto score = [&]() {
+    const dt::Face* g = f->F[k];
+    double smallest = std::min(minAngle(f->V), minAngle(g->V));
+    for (const dt::Face* h : {static_cast<const dt::Face*>(f), g})
+      for (int j = 0; j < 3; ++j)
+        if (h->F[j] != f && h->F[j] != g && h->F[j] && !h->F[j]->isGhost()) smallest = std::min(smallest, minAngle(h->F[j]->V));
+    // after the flip: the triangles c d a and c d b
+    const dt::Vertex *a = S[0], *b = S[1], *c = S[2], *d = S[3];
+    smallest = std::min({smallest, angleAt(a, c, d), angleAt(c, a, d), angleAt(d, a, c), angleAt(b, c, d), angleAt(c, b, d), angleAt(d, b, c)});
+    const double sum = angleAt(c, a, b) + angleAt(d, a, b);
+    return -1000.0 * ((smallest < 12) + (sum < 215 || sum > 245)) + smallest - std::fabs(sum - 230) / 5;
+  };
+  double best = -1e300;
+  XY bestP = p;
+  for (int i = 0; i < 600; ++i) {
+    p[4] = 1.6 + 0.2 * (i % 5), p[5] = 1.0 + 0.2 * (i / 5 % 5), p[6] = 1.5 + 0.2 * (i / 25 % 4), p[7] = -0.8 - 0.2 * (i / 100);
+    if (!build()) continue;
+    const double sc = score();
+    if (sc > best) best = sc, bestP = p;
+  }
+  p = bestP;
+  if (!build()) throw std::logic_error("flip figure: no edge a b");
+  const double sum = angleAt(S[2], S[0], S[1]) + angleAt(S[3], S[0], S[1]);
+  std::cout << "flip figure: c = (" << p[4] << ", " << p[5] << "), d = (" << p[6] << ", " << p[7]
+            << "), the angles at c and d sum to " << ch::fmt("%.0f", sum) << " degrees; score " << ch::fmt("%.1f", best)
+            << (best < 0 ? " (a rule is missed: see the figure's rules above)" : "") << "\n";
+  dt::Triangulation& T = *Tp;
   const char* names[] = {"a", "b", "c", "d"};
   auto draw = [&](const std::string& stem, const dt::Vertex* e0, const dt::Vertex* e1,
                   const std::map<const dt::Vertex*, int>& d0,
@@ -114,14 +169,14 @@ void figureFlip(const ch::Options& o) {
     const dt::Face* g = f->F[k];
     for (const dt::Face* h : {static_cast<const dt::Face*>(f), g}) {
       // The style's colours: the two faces replaced (cavity), the two made (ball), neighbours.
-      obj += polygon(id, {h->V[0], h->V[1], h->V[2]}, after ? "#b8e0b0" : "#f9c58d");
+      obj += polygon(id, {h->V[0], h->V[1], h->V[2]}, after ? "#e5f5d5" : "#f0a830");
       for (int j = 0; j < 3; ++j) {
         const dt::Face* n = h->F[j];
         if (n != nullptr && n != f && n != g && !n->isGhost())
-          obj += polygon(id, {n->V[0], n->V[1], n->V[2]}, "#c6dbef");
+          obj += polygon(id, {n->V[0], n->V[1], n->V[2]}, "#6aaed6");
       }
     }
-    obj += segment(e0, e1, after ? "#2e7d32" : "#c51b7d", 3.5);
+    obj += segment(e0, e1, after ? "#004d40" : "#c51b7d", 3.5);
     // The panel, laid out in pixels (VIEW), and each label placed clear of every edge and
     // label of it.
     const ch::FigureSize fs = ch::figureSize("fig_flip");
@@ -130,9 +185,18 @@ void figureFlip(const ch::Options& o) {
     // The labels at 0.85 em (7.2 pt at 15 cm): "b: 5 (−1)" is wide for the triangles around b.
     ch::LabelPlacer placer(pv, 0.85 * fs.em);
     placer.segments(ch::faceSegs(T.finiteFaces()), 1.2 * lw);
+    // Before: the circle through a, b, c, which holds d (why a b must flip), dashed.
+    const double ax = S[0]->x, ay = S[0]->y, bx = S[1]->x - ax, by = S[1]->y - ay, cx = S[2]->x - ax, cy = S[2]->y - ay;
+    const double den = 2 * (bx * cy - by * cx);
+    const double ux = (cy * (bx * bx + by * by) - by * (cx * cx + cy * cy)) / den, uy = (bx * (cx * cx + cy * cy) - cx * (bx * bx + by * by)) / den;
+    if (!after) {
+      placer.circle(ax + ux, ay + uy, std::hypot(ux, uy), 1.5 * lw);
+      ch::writeOut(o, "flip_circle.dat", ch::fmt("%.10g %.10g %.10g\n", ax + ux, ay + uy, std::hypot(ux, uy)));
+    }
     placer.segment(e0->x, e0->y, e1->x, e1->y, 3.5 * lw);
     std::ostringstream lab;
     lab.precision(17);
+    std::string rows;
     for (int i = 0; i < 4; ++i) {
       const dt::Vertex* v = S[std::size_t(i)];
       const int before = d0.at(v), now = d1.at(v);
@@ -140,7 +204,9 @@ void figureFlip(const ch::Options& o) {
       if (after) t += std::string(" (") + (now > before ? "+" : "\u2212") + std::to_string(std::abs(now - before)) + ")";
       const auto [x, y] = placer.place(v->x, v->y, t);
       lab << "set label \"" << t << "\" at " << x << "," << y << " center front font sprintf(',%.1f', 0.85 * FS)\n";
+      rows += ch::fmt("%.10g %.10g ", v->x, v->y) + ch::quoted(t) + ch::fmt(" %.10g %.10g\n", x, y);
     }
+    ch::writeOut(o, stem + "_labels.dat", rows);  // x y label lx ly: what the label rules check
     obj += lab.str() + "VIEW = \"" + pv.gnuplot() + "\"\n";
     ch::writeOut(o, stem + ".gp", obj);
     ch::writeOut(o, stem + "_tri.dat", triData(T.finiteFaces()));
@@ -271,12 +337,12 @@ void figureRecovery(const ch::Options& o) {
     // conv(S) in pink, the triangles of S in pale blue on top: pink shows what they miss
     // (the style's colours: uncovered hull, covered hull, the removed edge in the conflict
     // colour, the new one in the ball's).
-    fr.obj += polygon(id, hull, "#f4b6d2");
+    fr.obj += polygon(id, hull, "#f4a582");
     for (const dt::Face* f : R.finiteFaces())
       if (f->V[0]->id >= 0 && f->V[1]->id >= 0 && f->V[2]->id >= 0)
         fr.obj += polygon(id, {f->V[0], f->V[1], f->V[2]}, "#dde6f0");
     if (e0) fr.obj += segment(e0, e1, "#c51b7d", 2.5, "2"), placer.segment(e0->x, e0->y, e1->x, e1->y, 2.5 * lw);
-    if (n0) fr.obj += segment(n0, n1, "#2e7d32", 3), placer.segment(n0->x, n0->y, n1->x, n1->y, 3 * lw);
+    if (n0) fr.obj += segment(n0, n1, "#004d40", 3), placer.segment(n0->x, n0->y, n1->x, n1->y, 3 * lw);
     fr.obj += "ftitle = \"" + title + "\"\n";
     std::vector<const dt::Face*> F;
     for (const dt::Face* f : R.finiteFaces())

@@ -12,7 +12,7 @@ do for [term in "png svg"] {
   set xtics nomirror; set ytics nomirror
   set xrange [-0.05:1.05]
   set yrange [-0.05:1.05]
-  set grid back lt 1 lc rgb "#c8c8c8" lw 1
+  set grid back lt 1 lc rgb C_GRID lw 1
 
   eval layout(1, 2)
   do for [k=1:2] {
@@ -33,7 +33,7 @@ do for [term in "png svg"] {
          f using ($1+$3*0.3-$5*(k == 1 ? 0.16 : 0.22)):($2+$4*0.3-$6*(k == 1 ? 0.16 : 0.22)):(M."𝑟}") with labels tc rgb C_NEW, \
          f using ($1+$5*0.3-$3*(k == 1 ? 0.16 : 0.22)):($2+$6*0.3-$4*(k == 1 ? 0.16 : 0.22)):(M."𝑏}") with labels tc rgb C_NEIGH_EDGE, \
          f using ($1-($3+$5)*(k == 1 ? 0.16 : 0.25)):($2-($4+$6)*(k == 1 ? 0.16 : 0.25)):(M."𝑥_0}") with labels, \
-         c using ($1 + 0.28 * cs * sg($1 - qc($1))):($2 + 0.28 * cs * sg($2 - qc($2))):(k == 1 ? strcol(3) : substr(strcol(3), 2, strlen(strcol(3)) - 1)) with labels tc rgb "#505050" font sprintf(",%.1f", 0.85 * FS)
+         c using ($1 + 0.28 * cs * sg($1 - qc($1))):($2 + 0.28 * cs * sg($2 - qc($2))):(k == 1 ? strcol(3) : substr(strcol(3), 2, strlen(strcol(3)) - 1)) with labels tc rgb C_MUTED font sprintf(",%.1f", 0.85 * FS)
   }
   unset multiplot
 }

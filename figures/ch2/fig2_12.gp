@@ -12,7 +12,7 @@ do for [term in "png svg"] {
   set yrange [0:1]
   set xtics 0, 0.5, 1 nomirror
   set ytics 0, 0.5, 1 nomirror
-  set palette defined (0 "#20206a", 0.5 "#c03060", 1 "#e0b000")
+  set palette defined (0 C_RANK_FIRST, 0.5 C_RANK_MID, 1 C_RANK_LAST)
   set cbrange [0:1]
   set cbtics ("first" 0, "last" 1) scale 0
   set colorbox vertical user origin screen 0.905, screen 0.25 size screen 0.016, screen 0.5

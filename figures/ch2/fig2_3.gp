@@ -37,7 +37,7 @@ do for [term in "png svg"] {
        datadir."/fig2_3_edge.dat" index 0 with lines lw 4 lc rgb C_CAVITY_EDGE, \
        datadir."/fig2_3_segment.dat" with lines lw 2 lc rgb C_NEW, \
        datadir."/fig2_3_circles.dat" every ::0::0 using 1:2:3 with circles lw 2 dt 2 lc rgb C_CIRCLE fs empty, \
-       datadir."/fig2_3_circles.dat" every ::1::1 using 1:2:3 with circles lw 2 dt (10,4,2,4) lc rgb C_CIRCLE fs empty, \
+       datadir."/fig2_3_circles.dat" every ::1::1 using 1:2:3 with circles lw 2 dt (10,5,1,5) lc rgb C_CIRCLE fs empty, \
        datadir."/fig2_3_steplabels.dat" every ::0::1 using 1:2:3 with labels tc rgb C_CIRCLE, \
        datadir."/fig2_3_steplabels.dat" every ::2 using 1:2:3 with labels tc rgb C_TRI, \
        datadir."/fig2_3_steptri.dat" with points pt 7 ps (1.0*PS) lc rgb C_POINT, \

@@ -19,7 +19,7 @@ do for [term in "png svg"] {
        datadir."/fig2_1_cavity.dat" with lines lw 3 lc rgb C_BALL_EDGE, \
        datadir."/fig2_4_outside.dat" with lines lw 3 lc rgb C_NEIGH_EDGE, \
        datadir."/fig2_4_circles.dat" every ::0::0 using 1:2:3 with circles lw 2 dt 2 lc rgb C_CIRCLE fs empty, \
-       datadir."/fig2_4_circles.dat" every ::1::1 using 1:2:3 with circles lw 2 dt (10,4,2,4) lc rgb C_CIRCLE fs empty, \
+       datadir."/fig2_4_circles.dat" every ::1::1 using 1:2:3 with circles lw 2 dt (10,5,1,5) lc rgb C_CIRCLE fs empty, \
        datadir."/fig2_1_points.dat" with points pt 7 ps (1.0*PS) lc rgb C_POINT, \
        datadir."/fig2_1_p.dat" using 1:2 with points pt 7 ps (1.6*PS) lc rgb C_NEW, \
        datadir."/fig2_4_labels.dat" every ::0::0 using 1:2:3 with labels tc rgb C_NEW, \

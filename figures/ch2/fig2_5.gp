@@ -2,8 +2,9 @@
 # p_{-2} p_{-1} p_{-4} that contain them all (DT_0), then the triangulation after the insertion
 # of 1, 2, 3, 4 and all 9 points. Inserted points are filled, the others hollow.
 # Data (sec2_2_bowyer_watson): fig2_5_{0,1,2,3,4,9}.dat (edges, each once), fig2_5_points.dat
-# and fig2_5_super.dat (x y label lx ly ax ay giflabel: the label's place in every panel, and in
-# the animation), fig2_5_view.gp (P1..P6: each panel's box and view, from the program's layout).
+# and fig2_5_super.dat (x y label giflabel: the markers), fig2_5_labels_{0,1,2,3,4,9}.dat (x y
+# label lx ly super: each panel's labels, placed beside their points with that panel's edges),
+# fig2_5_view.gp (P1..P6: each panel's box and view, from the program's layout).
 load system("dirname '".ARG0."'")."/style.gp"
 load datadir."/fig2_5_view.gp"
 array K[6] = [0, 1, 2, 3, 4, 9]
@@ -19,9 +20,9 @@ do for [term in "png svg"] {
     inserted = (k == 0) ? "" : sprintf(", datadir.'/fig2_5_points.dat' every ::0::%d using 1:2 with points pt 7 ps (1.3*PS) lc rgb C_POINT", k - 1)
     eval "plot datadir.sprintf('/fig2_5_%d.dat', k) with lines lw 1.5 lc rgb C_TRI, " . \
          "datadir.'/fig2_5_super.dat' using 1:2 with points pt 5 ps (1.3*PS) lc rgb C_SUPER, " . \
-         "datadir.'/fig2_5_super.dat' using 4:5:3 with labels tc rgb C_SUPER font ',' . sprintf('%.1f', 0.85 * FS), " . \
-         "datadir.'/fig2_5_points.dat' using 1:2 with points pt 6 ps (1.3*PS) lc rgb '#808080', " . \
-         "datadir.'/fig2_5_points.dat' using 4:5:3 with labels tc rgb C_TRI font ',' . sprintf('%.1f', 0.85 * FS)" . inserted
+         "datadir.sprintf('/fig2_5_labels_%d.dat', k) using 4:($6 == 1 ? $5 : NaN):3 with labels tc rgb C_SUPER font ',' . sprintf('%.1f', 0.85 * FS), " . \
+         "datadir.'/fig2_5_points.dat' using 1:2 with points pt 6 ps (1.3*PS) lc rgb C_PENDING, " . \
+         "datadir.sprintf('/fig2_5_labels_%d.dat', k) using 4:($6 == 0 ? $5 : NaN):3 with labels tc rgb C_TRI font ',' . sprintf('%.1f', 0.85 * FS)" . inserted
   }
   unset multiplot
 }

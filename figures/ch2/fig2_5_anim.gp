@@ -3,7 +3,13 @@
 # B(DT_{i-1}, p_i) (shaded, in DT_i). Every inserted point is labelled. PNG frames
 # fig2_5_anim_NN.png, and the animated GIF fig2_5_anim.gif written by gnuplot's own gif terminal
 # (libgd; no other program needed), which holds the last frame longer.
-# Data (sec2_2_bowyer_watson): fig2_5_anim_NN_{tri,fill,p,circles}.dat,
+# The circles come dashed in their data (gnuplot's gif terminal draws a dash type solid), so
+# they are drawn as plain lines. Each frame's labels (fig2_5_anim_NN_labels.dat: x y label lx ly
+# super giflabel) are placed by the program beside their points, clear of the frame's circles.
+# The view holds every circle of every frame; labels and markers are Figure 2.5's scaled to it
+# (fig2_5_view.gp: ANIM_FONT, ANIM_PS), so that a frame showing a panel's triangulation takes
+# that panel's label places with the same room around them.
+# Data (sec2_2_bowyer_watson): fig2_5_anim_NN_{tri,fill,p,circles,labels}.dat,
 # fig2_5_anim_{titles,count}.dat, fig2_5_super.dat, fig2_5_points.dat.
 load system("dirname '".ARG0."'")."/style.gp"
 stats datadir."/fig2_5_anim_count.dat" using 1 nooutput
@@ -42,20 +48,20 @@ do for [pass=0:1] {
   npoints = (f + 1) / 2
   plot (f == 0 ? datadir."/fig2_5_super.dat" : stem."_fill.dat") using 1:(cav ? $2 : NaN) with filledcurves closed fc rgb C_CAVITY fs solid 1.0 notitle, \
        (f == 0 ? datadir."/fig2_5_super.dat" : stem."_fill.dat") using 1:(bal ? $2 : NaN) with filledcurves closed fc rgb C_BALL fs solid 1.0 notitle, \
-       stem."_circles.dat" using 1:2 with lines lw 1.5 dt 2 lc rgb C_CIRCLE notitle, \
+       stem."_circles.dat" using 1:2 with lines lw 1.5 lc rgb C_CIRCLE notitle, \
        stem."_tri.dat" with lines lw 1.5 lc rgb C_TRI notitle, \
        (f == 0 ? datadir."/fig2_5_super.dat" : stem."_fill.dat") using 1:(cav ? $2 : NaN) with lines lw 2.5 lc rgb C_CAVITY_EDGE notitle, \
        (f == 0 ? datadir."/fig2_5_super.dat" : stem."_fill.dat") using 1:(bal ? $2 : NaN) with lines lw 2.5 lc rgb C_BALL_EDGE notitle, \
-       datadir."/fig2_5_super.dat" using 1:2 with points pt 5 ps (1.3*PS) lc rgb C_SUPER notitle, \
-       datadir."/fig2_5_super.dat" using 6:7:(pass == 0 ? strcol(3) : strcol(8)) with labels tc rgb C_SUPER notitle, \
-       datadir."/fig2_5_points.dat" using 1:2 with points pt 6 ps (1.3*PS) lc rgb "#808080" notitle, \
-       datadir."/fig2_5_points.dat" using 1:($0 < npoints ? $2 : NaN) with points pt 7 ps (1.3*PS) lc rgb C_POINT notitle, \
-       datadir."/fig2_5_points.dat" using 6:($0 < npoints ? $7 : NaN):(pass == 0 ? strcol(3) : strcol(8)) with labels tc rgb C_TRI notitle, \
-       (f == 0 ? datadir."/fig2_5_super.dat" : stem."_p.dat") using 1:(f == 0 ? NaN : $2) with points pt 7 ps (1.8*PS) lc rgb C_NEW notitle, \
+       datadir."/fig2_5_super.dat" using 1:2 with points pt 5 ps (ANIM_PS*PS) lc rgb C_SUPER notitle, \
+       stem."_labels.dat" using 4:($6 == 1 ? $5 : NaN):(pass == 0 ? strcol(3) : strcol(7)) with labels tc rgb C_SUPER font sprintf(',%.1f', ANIM_FONT * FS) notitle, \
+       datadir."/fig2_5_points.dat" using 1:2 with points pt 6 ps (ANIM_PS*PS) lc rgb C_PENDING notitle, \
+       datadir."/fig2_5_points.dat" using 1:($0 < npoints ? $2 : NaN) with points pt 7 ps (ANIM_PS*PS) lc rgb C_POINT notitle, \
+       stem."_labels.dat" using 4:($6 == 0 ? $5 : NaN):(pass == 0 ? strcol(3) : strcol(7)) with labels tc rgb C_TRI font sprintf(',%.1f', ANIM_FONT * FS) notitle, \
+       (f == 0 ? datadir."/fig2_5_super.dat" : stem."_p.dat") using 1:(f == 0 ? NaN : $2) with points pt 7 ps (1.4*ANIM_PS*PS) lc rgb C_NEW notitle, \
        NaN with boxes fs solid 1.0 fc rgb C_CAVITY title "cavity", \
        NaN with boxes fs solid 1.0 fc rgb C_BALL title "ball", \
        NaN with lines lw 1.5 dt 2 lc rgb C_CIRCLE title "circumcircles", \
-       NaN with points pt 7 ps (1.8*PS) lc rgb C_NEW title "new point"
+       NaN with points pt 7 ps (1.4*ANIM_PS*PS) lc rgb C_NEW title "new point"
   }
   set output
 }

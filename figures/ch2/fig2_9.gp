@@ -14,9 +14,9 @@ do for [term in "png svg"] {
   cut = strstrt(title, ";")
   set title (cut > 0 ? title[1:cut] . "\n" . title[cut + 1:] : title)
   plot datadir."/fig2_9_tri.dat" with lines lw 1.5 lc rgb C_TRI notitle, \
-       datadir."/fig2_9_vertices.dat" using 1:2:(R):($5 > 0 ? 0xf6d55c : 0xffffff) \
+       datadir."/fig2_9_vertices.dat" using 1:2:(R):($5 > 0 ? int("0x".C_HULL_VERTEX[2:]) : 0xffffff) \
          with circles lc rgb variable fs solid 1.0 border lc rgb "black" notitle, \
        datadir."/fig2_9_vertices.dat" using 1:2:(sprintf("%d", $3)) with labels notitle, \
-       NaN with points pt 7 ps (3*PS) lc rgb "#f6d55c" title "hull vertex", \
-       NaN with points pt 6 ps (3*PS) lc rgb "black" title "inner vertex (label: n_{vf})"
+       NaN with points pt 7 ps (3*PS) lc rgb C_HULL_VERTEX title "hull vertex", \
+       NaN with points pt 6 ps (3*PS) lc rgb "black" title "inner vertex (label: ".M."𝑛_{𝑣𝑓}})"
 }

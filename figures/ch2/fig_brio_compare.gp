@@ -47,7 +47,7 @@ do for [term in "png svg"] {
   set xtics nomirror; set ytics nomirror
   set logscale x
   set format x "10^{%T}"
-  set grid lc rgb "#d8d8d8" lw 1
+  set grid lc rgb C_GRID lw 1
   set xrange [xlo:xhi]
   eval layout(2, 2)
   eval rows(1)

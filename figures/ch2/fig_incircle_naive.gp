@@ -9,24 +9,24 @@ do for [term in "png svg"] {
   set output (term eq "png" ? outdir."/fig_incircle_naive.png" : outdir."/fig_incircle_naive.svg")
   set border
   set tics
-  set xlabel "i   (x_d = 1/2 + i 2^{-53})"
+  set xlabel map_xlabel("𝑑")
   eval layout(1, 2)
   eval sign_bar
   unset colorbox
   set lmargin at screen 0.12  # room for the y label's superscript at the left edge
   set rmargin at screen 0.46
-  set ylabel "j   (y_d = 1/2 + j 2^{-53})" offset 1,0
+  set ylabel map_ylabel("𝑑") offset 1,0
   set xrange [-0.5:255.5]
   set yrange [-0.5:255.5]
   set xtics 0,64,256 out nomirror
   set ytics 0,64,256 out nomirror
-  eval panel(1, "naive InC(a,b,c,d)")
+  eval panel(1, "naive ".M."𝒞(𝑎,𝑏,𝑐,𝑑)}")
   plot datadir."/map_incircle_naive_abcd.dat" matrix with image notitle
   set lmargin at screen 0.55
   set rmargin at screen 0.89
   unset ylabel
   set colorbox vertical user origin screen 0.915, screen 0.3 size screen 0.018, screen 0.45
-  eval panel(2, "naive InC(d,c,b,a)")
+  eval panel(2, "naive ".M."𝒞(𝑑,𝑐,𝑏,𝑎)}")
   plot datadir."/map_incircle_naive_dcba.dat" matrix with image notitle
   unset multiplot
   unset output

@@ -10,19 +10,19 @@ do for [term in "png svg"] {
   set output (term eq "png" ? outdir."/fig_incircle_robust.png" : outdir."/fig_incircle_robust.svg")
   set border
   set tics
-  set xlabel "i   (x_d = 1/2 + i 2^{-53})"
+  set xlabel map_xlabel("𝑑")
   eval layout(1, 2)
   eval sign_bar
   unset colorbox
   set lmargin at screen 0.12  # room for the y label's superscript at the left edge
   set rmargin at screen 0.46
-  set ylabel "j   (y_d = 1/2 + j 2^{-53})" offset 1,0
+  set ylabel map_ylabel("𝑑") offset 1,0
   set xrange [-0.5:255.5]
   set yrange [-0.5:255.5]
   set xtics 0,64,256 out nomirror
   set ytics 0,64,256 out nomirror
   set object 1 rect from -0.5, -0.5 to Z1, Z1 front fs empty border lc rgb "black" lw 2.5
-  eval panel(1, "robust InC(a,b,c,d)")
+  eval panel(1, "robust ".M."𝒞(𝑎,𝑏,𝑐,𝑑)}")
   plot datadir."/map_incircle_robust_abcd.dat" matrix with image notitle
   unset object 1
   set lmargin at screen 0.55
@@ -33,7 +33,7 @@ do for [term in "png svg"] {
   set yrange [-0.5:Z1]
   set xtics 0,4,16 out nomirror
   set ytics 0,4,16 out nomirror
-  eval panel(2, "zoom: 0 ≤ i, j < 16")
+  eval panel(2, "zoom: 0 ≤ ".M."𝑖}, ".M."𝑗} < 16")
   plot datadir."/map_incircle_robust_abcd.dat" matrix with image notitle
   unset multiplot
   unset output

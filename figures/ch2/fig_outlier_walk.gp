@@ -14,15 +14,15 @@ do for [term in "png svg"] {
   set xtics nomirror; set ytics nomirror
   set logscale xy
   set format x "10^{%T}"
-  set grid lc rgb "#d8d8d8" lw 1
-  set xlabel "n (uniform points + one outlier)"  # the longer label ran past the right edge of the PNG
+  set grid lc rgb C_GRID lw 1
+  set xlabel M."𝑛}"." (uniform points + one outlier)"  # the longer label ran past the right edge of the PNG
   set xrange [STATS_min / 1.5:STATS_max * 1.5]
   eval layout(1, 2)
-  eval panel(1, "N_{search}: mean walk length")
+  eval panel(1, M."𝑁_{search}}".": mean walk length")
   set key inside right center Left reverse samplen 2 spacing 1.1  # between the curves: at the top left it lay on them
   plot f index 0 using 1:3 with linespoints lw 2 pt 7 ps (1.2*PS) lc rgb word(C_SERIES, 2) title "fixed grid", \
        f index 1 using 1:3 with linespoints lw 2 pt 5 ps (1.2*PS) lc rgb word(C_SERIES, 1) title "adaptive", \
-       f index 0 using 1:(0.5 * sqrt($1)) with lines dt 2 lc rgb C_CONSTRUCT title "0.5 √n"
+       f index 0 using 1:(0.5 * sqrt($1)) with lines dt 2 lc rgb C_CONSTRUCT title "0.5 √".M."𝑛}"
   eval panel(2, "time per point (µs), ordering included")
   unset key
   plot f index 0 using 1:(1e6 * $5 / $1) with linespoints lw 2 pt 7 ps (1.2*PS) lc rgb word(C_SERIES, 2), \

@@ -15,12 +15,12 @@ do for [term in "png svg"] {
   # At 8 cm the text is large for the plot: a short x label, at most 5 x tics, the legend in
   # the empty band between the two curves (a longer label ran past the canvas, the tics into
   # each other).
-  set xlabel "point i (inserted in increasing x)"
-  set ylabel "faces in the cavity of point i"
+  set xlabel "point ".M."𝑖}"." (inserted in increasing ".M."𝑥}".")"
+  set ylabel "faces in the cavity of point ".M."𝑖}"
   set xtics xstep
   set key at graph 0.09, graph 0.47 left center Left reverse samplen 1.5 spacing 1.1
-  set grid lc rgb "#d8d8d8" lw 1
+  set grid lc rgb C_GRID lw 1
   set logscale y
-  plot datadir."/parabola_cavity.dat" using 1:3 with lines lw 2.5 lc rgb word(C_SERIES, 1) title "DT(S) with ghost faces", \
+  plot datadir."/parabola_cavity.dat" using 1:3 with lines lw 2.5 lc rgb word(C_SERIES, 1) title "DT(".M."𝑆}".") with ghost faces", \
        datadir."/parabola_cavity.dat" using 1:2 with lines lw 2.5 lc rgb word(C_SERIES, 2) title "super-triangles"
 }

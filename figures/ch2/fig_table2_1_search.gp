@@ -9,14 +9,14 @@ do for [term in "png svg"] {
   set tics out nomirror
   set xtics nomirror; set ytics nomirror
   set logscale xy
-  set xlabel "n (random points, random order)"
-  set ylabel "N_{search}"
+  set xlabel M."𝑛}"." (random points, random order)"
+  set ylabel M."𝑁_{search}}"
   set key bottom right
-  set grid lc rgb "#d8d8d8" lw 1
+  set grid lc rgb C_GRID lw 1
   set xrange [500:2e6]
   set format x "10^{%T}"
   set yrange [10:1000]
   plot datadir."/table2_1.dat" using 1:2 with linespoints pt 7 ps (1.3*PS) lw 2 lc rgb word(C_SERIES, 1) title "this library", \
        datadir."/table2_1.dat" using 1:5 with linespoints pt 6 ps (1.3*PS) lw 2 dt 2 lc rgb word(C_SERIES, 2) title "notes' Table 2.1", \
-       datadir."/table2_1_sqrt.dat" using 1:2 with lines lw 1.5 lc rgb C_CONSTRUCT title "slope 1/2 (N ∝ n^{1/2})"
+       datadir."/table2_1_sqrt.dat" using 1:2 with lines lw 1.5 lc rgb C_CONSTRUCT title "slope 1/2 (".M."𝑁 ∝ 𝑛^{1/2}})"
 }

@@ -45,9 +45,9 @@ do for [t in "png svg"] {
   set bmargin at screen marginB; set tmargin at screen marginT
   set offsets 0, 0, graph (y2hi + 0.04 - 1), 0
   set y2range [0:y2hi]
-  set label 101 "points n (uniform random)" at graph 0.5, screen 2.3 * EM / FH center
+  set label 101 "points ".M."𝑛}"." (uniform random)" at graph 0.5, screen 2.3 * EM / FH center
   set label 102 "CPU ns per point" at screen 1.0 * EM / FW, graph 0.5 center rotate by 90
-  set grid xtics ytics lc rgb "#c4c4c4" lw 1
+  set grid xtics ytics lc rgb C_GRID lw 1
   unset x2tics; unset y2tics
   set xtics nomirror; set ytics nomirror
   set key at screen 0.5, screen 0.9 * EM / FH center center vertical maxrows 1 Left reverse samplen 1.5 width 1

@@ -25,13 +25,14 @@ FIGSIZES = " fig2_1 1400 640" . \
            " fig2_6 1400 860" . \
            " fig2_7 1400 800" . \
            " fig2_7_errors 1500 800" . \
+           " fig2_7_deuteranopia 1400 800" . \
            " fig2_8 1400 800" . \
            " fig2_9 1200 1300" . \
            " fig2_10 1400 780" . \
            " fig2_11 1400 740" . \
            " fig2_12 1400 780" . \
            " fig_brio_compare 1500 900" . \
-           " fig_brio_rounds 1500 520" . \
+           " fig_brio_rounds 1500 560" . \
            " fig_flip 1400 760" . \
            " fig_incircle_naive 1400 800" . \
            " fig_incircle_robust 1400 800" . \
@@ -84,17 +85,22 @@ fig_open(t, n) = (fig_known(n) ? "" : "print 'style.gp: figure ".n." has no size
 M = "{/'DejaVu Math TeX Gyre' "
 
 # ---- colours: one meaning each, in every figure -------------------------------------------
+# This is the one table of colours: a figure script names a role (lc rgb C_CAVITY), never a
+# colour (black and white, the ink and the paper, are no roles), and no two roles share a colour (tests/test_figures_rules.cpp checks both). The pairs
+# a reader must tell apart (figures/ch2/meaning_pairs.txt) differ by a CIEDE2000 of at least 20
+# under normal vision, protanopia, deuteranopia and tritanopia (Machado et al. 2009), or carry
+# a second cue (a dash pattern, a marker shape) that the same test finds in the SVG.
 C_TRI = "#3c3c3c"            # edges of the triangulation
 C_POINT = "black"            # the points of S
-C_NEW = "#d62728"            # the point being inserted (p_{n+1}, p)
-C_CAVITY = "#f9c58d"         # fill of the Delaunay cavity C
+C_NEW = "#e31a1c"            # the point being inserted (p_{n+1}, p)
+C_CAVITY = "#f0a830"         # fill of the Delaunay cavity C
 C_CAVITY_EDGE = "#c65a00"    # its boundary
-C_BALL = "#b8e0b0"           # fill of the Delaunay ball B (the new triangles)
-C_BALL_EDGE = "#2e7d32"      # its boundary / new edges
-C_NEIGH = "#c6dbef"          # fill of the neighbours (outside triangles adjacent to C or B)
+C_BALL = "#e5f5d5"           # fill of the Delaunay ball B (the new triangles)
+C_BALL_EDGE = "#004d40"      # its boundary / new edges
+C_NEIGH = "#6aaed6"          # fill of the neighbours (outside triangles adjacent to C or B)
 C_NEIGH_EDGE = "#2b63a8"     # their edges, links to them
 C_CONFLICT = "#c51b7d"       # conflicts: wrong signs, crossing edges, removed edges
-C_UNCOVERED = "#f4b6d2"      # the part of the convex hull that no triangle covers
+C_UNCOVERED = "#f4a582"      # the part of the convex hull that no triangle covers
 C_HULL = "#dde6f0"           # a convex hull or polygon, shaded as background
 C_CIRCLE = "#1a3f8f"         # circumcircles (dashed)
 C_SUPER = "#7b3294"          # super-vertices p_{-1}, p_{-2}, ...
@@ -102,11 +108,23 @@ C_CONSTRUCT = "#8c8c8c"      # construction lines (dotted)
 C_KERNEL = "#fde49c"         # fill of a kernel ker(Σ) (Figure 2.2)
 C_KERNEL_EDGE = "#9a7400"    # its boundary
 C_SIGHT = "#5a5a5a"          # sight lines from a kernel point (thin, solid)
-# Sign maps (the notes' colours, 2.3.1): -1 green, 0 yellow, +1 red.
-C_MINUS = "#1a9641"
+C_PENDING = "#808080"        # points not inserted yet (Figure 2.5), earlier rounds (BRIO)
+C_MUTED = "#505050"          # secondary labels (Figure 2.11's cell numbers)
+C_GRID = "#d0d0d0"           # grid lines of charts (behind the data)
+C_HULL_VERTEX = "#f0c020"    # a vertex on the convex hull (Figure 2.9; inner vertices white)
+# Sign maps (2.3.1): -1 blue, 0 yellow, +1 red. The notes' green and red are one colour to a
+# red-green colour-blind reader; blue and red keep a CIEDE2000 of 44 or more for every reader.
+C_MINUS = "#2166ac"
 C_ZERO = "#ffd700"
-C_PLUS = "#d7191c"
-# Series of charts, in order.
+C_PLUS = "#ca0020"
+# Where a naive map is wrong (fig2_7_errors): right is white, a false 0 is C_ZERO, a flipped
+# sign black, and a sign where the exact value is 0:
+C_ERR_SIGN = "#4393c3"
+# A sequential palette: the rank in an order (Figure 2.12), from the first to the last.
+C_RANK_FIRST = "#20206a"
+C_RANK_MID = "#c03060"
+C_RANK_LAST = "#e0b000"
+# Series of charts, in order (each series also has its own marker shape).
 C_SERIES = "#1f77b4 #d62728 #2ca02c #9467bd #ff7f0e #8c564b"
 
 # ---- geometry panels: equal aspect, no axes ------------------------------------------------
@@ -127,5 +145,11 @@ NROWS = 1; NCOLS = 1
 layout(r, c) = sprintf("NROWS = %d; NCOLS = %d; set multiplot layout %d,%d; set tmargin 2.5", r, c, r, c)
 panel(k, text) = sprintf("unset title; set label 100 \"(%s) %s\" at screen %.4f, %.4f center front",   word("a b c d e f g h i j k l", k), text, ((k - 1) % NCOLS + 0.5) / NCOLS, 1 - (int((k - 1) / NCOLS) + 0.0) / NROWS - 1.0 * EM / FH)
 
-# A sign map's colour bar: three boxes with the ticks -1, 0, +1 at their centres.
-sign_bar = "set palette defined (-1.5 '".C_MINUS."', -0.5 '".C_MINUS."', -0.5 '".C_ZERO."', 0.5 '".C_ZERO."', 0.5 '".C_PLUS."', 1.5 '".C_PLUS."'); set cbrange [-1.5:1.5]; set cbtics ('-1' -1, '0' 0, '+1' 1) scale 0; set colorbox"
+# A sign map's colour bar: three boxes with the ticks -1, 0, +1 at their centres, in the colours
+# m, z, p (sign_bar: the style's; fig2_7_deuteranopia passes them as a deuteranope sees them).
+sign_bar_of(m, z, p) = "set palette defined (-1.5 '".m."', -0.5 '".m."', -0.5 '".z."', 0.5 '".z."', 0.5 '".p."', 1.5 '".p."'); set cbrange [-1.5:1.5]; set cbtics ('−1' -1, '0' 0, '+1' 1) scale 0; set colorbox"
+sign_bar = sign_bar_of(C_MINUS, C_ZERO, C_PLUS)
+# The axis labels of a map of cells (i, j): the point's coordinates (x_v, y_v) for the letter v
+# of the moving point (a for the orientation maps, d for the incircle maps).
+map_xlabel(v) = M."𝑖   (𝑥_{".v."} = 1/2 + 𝑖 2^{−53})}"
+map_ylabel(v) = M."𝑗   (𝑦_{".v."} = 1/2 + 𝑗 2^{−53})}"
