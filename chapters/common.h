@@ -5,6 +5,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <charconv>
 #include <chrono>
 #include <cmath>
@@ -512,6 +513,14 @@ std::string fmt(const char* f, A... a) {
   char buf[256];
   std::snprintf(buf, sizeof buf, f, a...);
   return buf;
+}
+
+/// The spread of some measurements beside their median (ch::median, timing.h), "min-max" in `format` ("-" for fewer
+/// than two): a wide one says the machine was noisy.
+inline std::string spread(const std::vector<double>& v, const char* format) {
+  if (v.size() < 2) return "-";
+  const auto mm = std::minmax_element(v.begin(), v.end());
+  return fmt(format, *mm.first) + "-" + fmt(format, *mm.second);
 }
 
 /// The numbers and verdicts a book page quotes in its prose, written by a chapter program as

@@ -48,8 +48,8 @@ const char* kUsage =
     "                 (-o /dev/null: no .ele) gets the .ele itself\n"
     "  --stats        print points, triangles, triangulation_seconds (and of it the\n"
     "                 system's time, triangulation_system_seconds), mean walk steps,\n"
-    "                 mean cavity size, threads used and why, and peak memory, one per\n"
-    "                 line, on stdout (on stderr when an output goes to stdout)\n"
+    "                 mean cavity size, threads asked for, used and why, and peak memory,\n"
+    "                 one per line, on stdout (on stderr when an output goes to stdout)\n"
     "  --svg FILE     also write an SVG drawing of the mesh ('-': standard output)\n"
     "  --msh FILE     also write a Gmsh ASCII (2.2) mesh ('-': standard output)\n"
     "  --no-check     skip the exact validation of the result (on by default)\n"
@@ -70,9 +70,10 @@ const char* kUsage =
     "  --threads N    at most N threads for the fast kernel with --order brio ('auto': the\n"
     "                 machine's cores; default 1: the sequential kernel, one output per\n"
     "                 input); more than one only where the parallel page's cost model says\n"
-    "                 they pay (--stats prints threads_used and threads_reason), and never\n"
-    "                 more than the CPUs the process may run on (capped, with a note); a\n"
-    "                 Delaunay DT(S), on cocircular points possibly another from run to run\n"
+    "                 they pay (--stats prints threads_requested, threads_used and\n"
+    "                 threads_reason), and never more than the CPUs the process may run\n"
+    "                 on (capped, with a note); a Delaunay DT(S), on cocircular points\n"
+    "                 possibly another from run to run\n"
     "  --progress     report progress on stderr (default: only when stderr is a terminal)\n"
     "  --no-progress  never report progress\n"
     "  -h, --help     this help\n"
@@ -553,8 +554,8 @@ int delaunay2d(int argc, char** argv, const dt::cli::TestHooks& hooks) {
                    double(r.walkSteps) / ins, double(r.cavityFaces) / ins);
       if (opt.superMethod)
         std::fprintf(so, "recovery_flips: %llu\n", (unsigned long long)r.recoveryFlips);
-      std::fprintf(so, "threads_used: %d\nthreads_reason: %s\n", r.threadsUsed,
-                   r.threadsReason.c_str());
+      std::fprintf(so, "threads_requested: %d\nthreads_used: %d\nthreads_reason: %s\n",
+                   opt.threads, r.threadsUsed, r.threadsReason.c_str());
       std::fprintf(so, "peak_memory_mb: %.1f\n", double(dt::peakResidentKB()) / 1024.0);
       errno = 0;
       if (std::fflush(so) != 0 || std::ferror(so) || closedAtStart[opt.statsOnStderr ? 2 : 1]) {

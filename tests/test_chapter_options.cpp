@@ -15,6 +15,7 @@
 #endif
 #include "../chapters/common.h"
 #include "../chapters/process.h"
+#include "fast_parallel.h"
 #include "support.h"
 
 namespace fs = std::filesystem;
@@ -293,6 +294,73 @@ TEST_CASE("chapter options bench_parallel writes the time budget of its five run
   CHECK(valueOf(values, "par.budget_best2") == "(not measured)");
   CHECK(valueOf(values, "par.budget_share_cost").find("not measured") == std::string::npos);
   CHECK(valueOf(values, "par.budget_best2_verdict").find("not measured") != std::string::npos);
+  CHECK(valueOf(values, "model.break_even_n").find("not measured") != std::string::npos);
+  fs::remove_all(d);
+}
+
+TEST_CASE("chapter options bench_parallel measures the cost model's constants and judges the code's against them") {
+  const fs::path d = freshDir("thread_constants");
+  const Run r = chapter("bench_parallel", {"--quick", "--no-plot", "--max-n", "20000", "--threads", "1,2", "--out",
+                                           d.string()},
+                        d);
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  const auto rows = csvRows(d / "table_thread_constants.csv");
+  // The sizes 10000 and 20000 (the largest n), and five squeezes at 20000.
+  REQUIRE(rows.size() == 8);
+  const std::vector<std::string>& head = rows[0];
+  auto col = [&](const std::string& name) {
+    const std::size_t c = std::size_t(std::find(head.begin(), head.end(), name) - head.begin());
+    REQUIRE(c < head.size());
+    return c;
+  };
+  const std::size_t cn = col("n"), cw = col("x squeezed to"), cf = col("forecast / uniform"),
+                    cr = col("2 threads / 1 (wall)"), cb = col("2 threads beat 1");
+  struct Row {
+    std::size_t n;
+    bool uniform;
+    double forecast, ratio;
+    bool beat;
+  };
+  std::vector<Row> got;
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    REQUIRE(rows[i].size() == head.size());
+    got.push_back({std::size_t(std::atol(rows[i][cn].c_str())), rows[i][cw] == "1 (uniform)",
+                   std::atof(rows[i][cf].c_str()), std::atof(rows[i][cr].c_str()), rows[i][cb] == "yes"});
+    CHECK(got.back().ratio > 0);
+    CHECK(got.back().beat == (got.back().ratio < 1));
+  }
+  // The forecast is computed, not timed: uniform points give about the reference share, the
+  // narrowest band far more than the model's bound.
+  CHECK(got[1].uniform);
+  CHECK(got[1].forecast > 0.5);
+  CHECK(got[1].forecast < 1.5);
+  CHECK(got.back().forecast > dt::ParallelModel::maxCutShareRatio);
+  // The values are the table's, recomputed: the break-even (the smallest uniform size from which
+  // two threads beat one at every larger size) and the bound (the largest forecast at the top
+  // size up to which they beat one on every set).
+  std::size_t breakEven = 0;
+  for (std::size_t i = 2; i-- > 0;) {
+    REQUIRE(got[i].uniform);
+    if (!got[i].beat) break;
+    breakEven = got[i].n;
+  }
+  std::vector<Row> top(got.begin() + 1, got.end());
+  std::stable_sort(top.begin(), top.end(), [](const Row& a, const Row& b) { return a.forecast < b.forecast; });
+  double bound = 0;
+  for (const Row& t : top) {
+    if (!t.beat) break;
+    bound = t.forecast;
+  }
+  const fs::path values = d / "values_bench_parallel.txt";
+  CHECK(valueOf(values, "model.n") == "20000");
+  CHECK(valueOf(values, "model.break_even_n") ==
+        (breakEven ? std::to_string(breakEven) : std::string("(not reached up to 20000)")));
+  CHECK(valueOf(values, "model.bound_measured") == (bound > 0 ? ch::fmt("%.2f", bound) : std::string("(none measured)")));
+  CHECK(valueOf(values, "model.code_size") == std::to_string(2 * dt::ParallelModel::minPointsPerThread));
+  // The model's size (far above 20000) can be judged only where two threads paid.
+  CHECK(valueOf(values, "model.size_verdict")
+            .rfind(breakEven ? "on the safe side" : "not judged", 0) == 0);
   fs::remove_all(d);
 }
 

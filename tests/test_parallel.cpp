@@ -1,9 +1,11 @@
 /// \file test_parallel.cpp Tests of the parallel kernel (code/fast/fast_parallel.h, the going-further page on both cores): the exact DT(S), the sequential kernel's triangulation in general position, a Delaunay triangulation on degenerate input.
 #include <doctest/doctest.h>
+#include <sched.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <set>
 #include <stdexcept>
@@ -238,20 +240,22 @@ TEST_CASE("parallel the shared core alone gives the sequential triangulation and
 
 namespace {
 
-// The cost model's decision for p with two threads asked for, and the result checked against
-// the sequential kernel's triangles (the same whatever the model chose, p in general position)
-// or, with `unique` false, exactly validated.
-dt::ParallelStats decided(const dttest::XY& p, bool unique) {
+// The cost model's decision for p with `threads` threads asked for, and the result validated
+// exactly and checked against the sequential kernel's triangles, triangle by triangle: when the
+// model ran one thread (that kernel itself, cocircular points or not), and whatever it chose
+// when DT(S) is unique (`unique`: p in general position).
+dt::ParallelStats decided(const dttest::XY& p, bool unique, int threads = 2) {
   dt::ParallelStats ps;
-  const dt::FastResult r = dt::fastDelaunayParallel(p, 2, {}, &ps);
-  if (unique) {
-    CHECK(canonical(r.tri) == canonical(dt::fastDelaunay(p).tri));
-  } else {
-    const dt::CheckReport c = dt::checkDelaunay(p, r.tri);
-    INFO(c.error);
-    CHECK(c.ok);
+  const dt::FastResult r = dt::fastDelaunayParallel(p, threads, {}, &ps);
+  const dt::CheckReport c = dt::checkDelaunay(p, r.tri);
+  INFO(c.error);
+  CHECK(c.ok);
+  if (unique || ps.threadsUsed == 1) {
+    const dt::FastResult seq = dt::fastDelaunay(p);
+    CHECK(canonical(r.tri) == canonical(seq.tri));
+    CHECK(r.duplicates == seq.duplicates);
   }
-  CHECK(ps.threadsRequested == 2);
+  CHECK(ps.threadsRequested == threads);
   return ps;
 }
 
@@ -276,6 +280,28 @@ TEST_CASE("parallel the cost model runs one thread below its size and says why")
   dt::fastDelaunayParallel(dttest::uniformPoints(1000, 6), 1, {}, &one);
   CHECK(one.threadsUsed == 1);
   CHECK(one.reason == dt::ParallelReason::OneRequested);
+}
+
+TEST_CASE("parallel the cost model runs one thread on tiny input and on a small circle") {
+  // However many threads are asked for: the sequential kernel, its triangles (decided compares
+  // them one by one, on the circle and the grid too, where only the same kernel with the same
+  // order gives the same ones), no concurrent round, and the reason.
+  std::vector<dttest::XY> sets;
+  for (std::size_t n : {3u, 4u, 17u, 500u}) sets.push_back(dttest::uniformPoints(n, 40 + n));
+  sets.push_back(dt::circlePoints(64));
+  sets.push_back(dt::gridPoints(9, 9));  // cocircular squares: DT(S) is not unique
+  sets.push_back({0, 0, 1, 0, 0, 1, 1, 0, 0, 0});  // duplicates merged as by the sequential kernel
+  for (const dttest::XY& p : sets)
+    for (int threads : {2, 8, dt::defaultThreadCount()}) {
+      CAPTURE(p.size() / 2);
+      CAPTURE(threads);
+      const dt::ParallelStats ps = decided(p, false, threads);
+      CHECK(ps.threadsUsed == 1);
+      CHECK(ps.reason == (threads > 1 ? onTwoCores(dt::ParallelReason::TooFewPoints)
+                                      : dt::ParallelReason::OneRequested));
+      CHECK(ps.parallelPoints == 0);
+      CHECK(ps.parallelRounds == 0);
+    }
 }
 
 TEST_CASE("parallel the cost model shares uniform points from its size on") {
@@ -365,7 +391,29 @@ TEST_CASE("parallel the command line prints the threads used and why") {
   const dttest::CliResult listings =
       dttest::runCli("'" + in + "' -o '" + out + "' --stats --threads 2 --kernel listings");
   CHECK(listings.out.find("\nthreads_reason: sequential_order_or_kernel\n") != std::string::npos);
-  const dttest::CliResult bad = dttest::runCli("'" + in + "' -o '" + out + "' --threads automatic");
-  CHECK(bad.status == 2);
-  CHECK(bad.err.find("'auto'") != std::string::npos);
+  // The threads asked for, as parsed: 'auto' is the machine's hardware threads, and no count
+  // exceeds the CPUs this process may run on (the command line caps it, with a note).
+  cpu_set_t cpus;
+  REQUIRE(::sched_getaffinity(0, sizeof cpus, &cpus) == 0);
+  const int usable = CPU_COUNT(&cpus);
+  for (const auto& [arg, want] : {std::pair<std::string, int>{"2", 2}, {"auto", dt::defaultThreadCount()},
+                                  {"1", 1}, {"0007", 7}}) {
+    CAPTURE(arg);
+    const dttest::CliResult r =
+        dttest::runCli("'" + in + "' -o '" + out + "' --stats --threads " + arg);
+    REQUIRE(r.status == 0);
+    CHECK(r.out.find("\nthreads_requested: " + std::to_string(std::min(want, usable)) + "\n") !=
+          std::string::npos);
+  }
+  // Bad values: refused before anything is read or written, naming the value.
+  for (const char* v : {"automatic", "0", "-1", "1025", "", "2.5", "auto ", "+2", "99999"}) {
+    CAPTURE(v);
+    std::remove((out + "_bad.ele").c_str());
+    const dttest::CliResult bad =
+        dttest::runCli("'" + in + "' -o '" + out + "_bad' --threads '" + v + "'");
+    CHECK(bad.status == 2);
+    CHECK(bad.err.find("--threads must be 'auto' or an integer from 1 to 1024, not '" +
+                       std::string(v) + "'") != std::string::npos);
+    CHECK(!dttest::fileExists(out + "_bad.ele"));
+  }
 }

@@ -281,13 +281,9 @@ Measure runChild(Method m, Family f, std::size_t n, bool check) {
   return r;
 }
 
-// The spread of some values (their median is ch::median).
+// The median of some values (timing.h) and their spread (common.h).
 using ch::median;
-std::string spread(const std::vector<double>& v, const char* format) {
-  if (v.size() < 2) return "-";
-  const auto mm = std::minmax_element(v.begin(), v.end());
-  return ch::fmt(format, *mm.first) + "-" + ch::fmt(format, *mm.second);
-}
+using ch::spread;
 
 // The runs of one method on one set: each run's measure, and their medians (peak: the largest).
 struct Runs {
