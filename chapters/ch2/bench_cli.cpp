@@ -1,4 +1,4 @@
-// bench_cli: the command line end to end (issue 18). `delaunay2d` reads a .node file of
+// bench_cli: the command line end to end. `delaunay2d` reads a .node file of
 // uniform points, triangulates, checks the result exactly and writes the .ele; beside it, when
 // CGAL is installed, a CGAL program reads the same file with iostreams and triangulates it
 // (Delaunay_triangulation_2, range insertion). Runs alternate (CLI, CGAL, CLI, CGAL, ...), each
@@ -67,7 +67,7 @@ int cgalReadAndTriangulate(const char* path) {
 }
 #endif
 
-// The target for the triangulation alone (issue 28): at most this share of CGAL's time.
+// The target for the triangulation alone: at most this share of CGAL's time.
 constexpr double kTriangulationBound = 0.5;
 
 struct Run {

@@ -75,7 +75,7 @@ const char* familyName(Family f) {
     default: return "1e+-300";
   }
 }
-// Exponent spread: 2.3.1's GMP-heavy case; 20,000 points (issue 18) whatever the size asked.
+// Exponent spread: 2.3.1's GMP-heavy case; 20,000 points whatever the size asked.
 std::size_t familySize(Family f, std::size_t n) {
   return f == Family::ExponentSpread ? std::min<std::size_t>(n, 20000) : n;
 }

@@ -79,7 +79,7 @@ constexpr int kSlots = 16;
 // The target for one thread against CGAL: at most this share of CGAL's CPU time (the page
 // cites it as @{par.target1_bound}; the verdict par.target1 compares with the same number).
 constexpr double kCpuTarget1 = 0.65;
-// The target for two threads against one (issue 28): at most this share of one thread's wall
+// The target for two threads against one: at most this share of one thread's wall
 // time (the page cites @{par.two_target}; the verdict par.two_target_verdict uses it).
 constexpr double kTwoTarget = 0.6;
 // Where Linux describes this machine's caches (chapters/cache_sizes.h); --cache-dir reads another.
@@ -324,7 +324,7 @@ int main(int argc, char** argv) {
     std::vector<std::size_t> sizes = {std::min<std::size_t>(maxN, 1000000)};
     if (maxN >= 10000000) sizes.push_back(10000000);
     const std::string loadBefore = loadAverage();
-    std::ostringstream pv;  // the verdicts on the targets of issue 18, computed
+    std::ostringstream pv;  // the verdicts on the speed targets, computed
     ch::Values values(o, "bench_parallel");  // the same, for the page's prose (largest n)
     ch::Table t;
     t.header = {"n", "kernel", "threads", "wall (s)", "CPU (s)", "wall / CGAL", "CPU / CGAL",
@@ -374,7 +374,7 @@ int main(int argc, char** argv) {
           pv << " Two sequential runs at once each took up to " << ch::fmt("%.2f", (*pairRun)[0] / (*seq)[0])
              << " times a lone run's wall time, so a perfect split of the work between the two "
                 "cores could reach " << ch::fmt("%.2f", ceiling) << " of one thread's wall time on "
-                "this machine (the target of issue 28: at most " << ch::fmt("%.2f", kTwoTarget)
+                "this machine (the target: at most " << ch::fmt("%.2f", kTwoTarget)
              << ", which this machine " << (ceiling <= kTwoTarget ? "allows" : "does not allow")
              << "; the parallel kernel: " << ch::fmt("%.2f", (*two)[0] / (*seq)[0]) << ", "
              << ((*two)[0] / (*seq)[0] <= kTwoTarget ? "met" : "missed") << ").";
@@ -382,7 +382,7 @@ int main(int argc, char** argv) {
         if (cg) {
           const double w2 = (*two)[0] / (*cg)[0], c1 = (*seq)[1] / (*cg)[1];
           pv << " Against CGAL: 2 threads take " << ch::fmt("%.2f", w2)
-             << " of its wall time (target of issue 18: at most 0.50, "
+             << " of its wall time (the target: at most 0.50, "
              << (w2 <= 0.5 ? "met" : "missed") << "); one thread takes " << ch::fmt("%.2f", c1)
              << " of its CPU time (target: at most " << ch::fmt("%.2f", kCpuTarget1) << ", "
              << (c1 <= kCpuTarget1 ? "met" : "missed")
