@@ -482,14 +482,23 @@ parse_ids_dir() {
 # line, sorted; the check builds dt_tests from these alone (and main.cpp), not from the whole
 # suite. Dies if a test names no file.
 test_files() {
-  local dir="$1" id name re found
+  local dir="$1" id name re found c k q='"'
   shift
   for id in "$@"; do
     [ "$(field "$id" kind)" = implement ] || continue
     while IFS= read -r name; do
-      # The name as an extended regular expression: specials escaped, then * for any characters.
-      re="$(printf '%s' "$name" | sed -e 's/[][\\.^$+?(){}|]/\\&/g' -e 's/\*/.*/g')"
-      found="$(grep -liE "TEST_CASE\(\"$re\"" "$dir"/tests/*.cpp || true)"
+      # The name as an extended regular expression: * for any characters, specials escaped.
+      re="" k=0
+      while [ "$k" -lt "${#name}" ]; do
+        c="${name:k:1}"
+        if [ "$c" = '*' ]; then re+='.*'
+        elif [[ '[]\.^$+?(){}|' == *"$c"* ]]; then re+="\\$c"
+        else re+="$c"
+        fi
+        k=$((k + 1))
+      done
+      re="TEST_CASE[(]$q$re$q"
+      found="$(grep -liE -- "$re" "$dir"/tests/*.cpp || true)"
       [ -n "$found" ] || die "exercise $id: no file of $dir/tests holds the test '$name'"
       printf '%s\n' "$found"
     done < <(field "$id" test)
