@@ -276,10 +276,12 @@ inline std::vector<std::string> typedValues(const std::string& page, const std::
   for (std::size_t k = 0; k < lines.size(); ++k)
     for (const TypedNumber& n : numbersIn(lines[k])) {
       if (!distinctive(n)) continue;
-      // A name, not a quantity: "Listing 2.4" is the notes' numbering whatever a run measured.
+      // A name, not a quantity: "Listing 2.4", "section 2.1", "§ 2.3" are the notes' numbering
+      // whatever a run measured (in either case: a sentence says "the kernel of section 2.1").
       static const std::regex named(
-          "(?:Listings?|Figures?|Fig\\.|Tables?|Propert(?:y|ies)|Propositions?|Sections?|Lemma|"
-          "Theorem|Algorithm|[Ee]xercises?|Chapter|Definition|Corollary|Remark|Errat(?:um|a))\\s+$");
+          "(?:(?:Listings?|Figures?|Fig\\.|Tables?|Propert(?:y|ies)|Propositions?|Sections?|Lemma|"
+          "Theorem|Algorithm|Exercises?|Chapter|Definition|Corollary|Remark|Errat(?:um|a))\\s+|\u00a7\\s*)$",
+          std::regex::ECMAScript | std::regex::icase);
       if (std::regex_search(lines[k].substr(0, n.at), named)) continue;
       auto it = held.end();
       for (auto h = held.begin(); h != held.end(); ++h)

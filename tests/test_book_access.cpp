@@ -84,6 +84,9 @@ TEST_CASE("book access a number typed in prose or a formula that a value holds i
   CHECK(bookaccess::typedValues("12.5\n", "f", values, programs).empty());
   // Listing 2.5 above is a name; the same number as a quantity is refused.
   CHECK(bookaccess::typedValues("a ratio of 2.5 here\n", "f", values, programs).size() == 1);
+  // A name in lower case, or after the section sign, is a name too (a full run once measured
+  // 2.1 where the page spoke of "the kernel of section 2.1").
+  CHECK(bookaccess::typedValues("the kernel of section 2.5, figures 2.5 and \u00a7 2.5 or \u00a72.5\n", "f", values, programs).empty());
 }
 
 TEST_CASE("book access the printed book links inside itself and prints where other links go") {
