@@ -571,122 +571,6 @@ int main(int argc, char** argv) {
                                   : std::string("would miss it even with 8 cores"));
     }
 
-    // ---- 1c. the cost model's constants, measured ----------------------------------------
-    // The two constants dt::ParallelModel decides with, measured here, where two threads (the
-    // concurrent rounds, forced) run against the sequential kernel, in turn, paired run by run
-    // (the median of the paired wall-time ratios, and their spread):
-    //  - the break-even size: uniform points at sizes up to the largest n of section 1; the
-    //    smallest size from which two threads beat one at that size and every larger one;
-    //  - the bound on the forecast: points squeezed in x by degrees (modelJob) at that largest
-    //    n; the largest forecast ratio up to which two threads beat one on every width.
-    // Each against the constant of the code: the verdicts say whether the model's size and bound
-    // are on the safe side of what this run measured. Only when --threads lists 2.
-    if (std::count(threadList.begin(), threadList.end(), 2) == 0) {
-      for (const char* k : {"model.n", "model.reps", "model.break_even_n", "model.break_even_per_thread",
-                            "model.bound_measured", "model.first_loss", "model.size_verdict",
-                            "model.bound_verdict"})
-        values.set(k, "(not measured: --threads did not list 2)");
-      values.set("model.code_size", std::to_string(2 * dt::ParallelModel::minPointsPerThread));
-      values.num("model.code_bound", dt::ParallelModel::maxCutShareRatio, "%g");
-    } else {
-      const std::size_t nTop = sizes.front();
-      const int mreps = std::max(3, reps);
-      std::vector<std::size_t> ladder;
-      for (std::size_t n : {10000u, 30000u, 100000u, 200000u, 400000u, 600000u, 1000000u})
-        if (n < nTop) ladder.push_back(n);
-      ladder.push_back(nTop);
-      const std::vector<double> widths = {1, 1e-1, 1e-2, 1e-3, 1e-4, 1e-6};
-      // One case: (n, width); the runs of both kernels, alternated.
-      struct Case {
-        std::size_t n;
-        double width;
-        std::vector<double> ratios;  // wall, two threads / one thread, run by run
-        double forecast = 0;
-      };
-      std::vector<Case> cases;
-      for (std::size_t n : ladder) cases.push_back({n, 1.0, {}, 0});
-      for (double w : widths)
-        if (w < 1) cases.push_back({nTop, w, {}, 0});
-      for (int k = 0; k < mreps; ++k)
-        for (Case& c : cases) {
-          std::vector<double> wall(3);
-          for (int threads : {1, 2}) {
-            const std::vector<double> r =
-                inChild([&](double* out) { modelJob(c.n, c.width, threads, k == 0, out); });
-            if (r.empty())
-              throw std::runtime_error("a run of the model's constants failed (n = " + std::to_string(c.n) + ")");
-            wall[std::size_t(threads)] = r[0];
-            c.forecast = r[2];
-          }
-          c.ratios.push_back(wall[2] / wall[1]);
-        }
-      ch::Table mc;
-      mc.header = {"measures", "n", "x squeezed to", "forecast / uniform", "2 threads / 1 (wall)",
-                   "min-max", "2 threads beat 1"};
-      // The break-even: the smallest size of the ladder from which every median ratio is below 1.
-      std::size_t breakEven = 0;
-      for (std::size_t i = ladder.size(); i-- > 0;) {
-        if (ch::median(cases[i].ratios) >= 1) break;
-        breakEven = ladder[i];
-      }
-      // The bound: the largest forecast ratio up to which every width's median ratio is below 1
-      // (the widths sorted by their forecast; the uniform set at nTop included).
-      std::vector<const Case*> byForecast;
-      for (const Case& c : cases)
-        if (c.n == nTop) byForecast.push_back(&c);
-      std::stable_sort(byForecast.begin(), byForecast.end(),
-                [](const Case* a, const Case* b) { return a->forecast < b->forecast; });
-      double bound = 0, firstLoss = 0;
-      for (const Case* c : byForecast) {
-        if (ch::median(c->ratios) >= 1) {
-          firstLoss = c->forecast;
-          break;
-        }
-        bound = c->forecast;
-      }
-      for (const Case& c : cases) {
-        const double m = ch::median(c.ratios);
-        mc.add({c.width == 1 && c.n != nTop ? "size" : c.width == 1 ? "size and split" : "split",
-                std::to_string(c.n), c.width == 1 ? "1 (uniform)" : ch::fmt("%g", c.width),
-                ch::fmt("%.2f", c.forecast), ch::fmt("%.2f", m), ch::spread(c.ratios, "%.2f"),
-                m < 1 ? "yes" : "no"});
-      }
-      mc.caption = "The cost model's two constants, measured: two threads (the concurrent rounds, "
-                   "whatever the model would choose) against the sequential kernel, each run in its "
-                   "own process, in turn, " + std::to_string(mreps) +
-                   " runs each; the median of the paired wall-time ratios and their spread "
-                   "(min-max). Size: uniform points in the unit square. Split: the same number "
-                   "of points with x squeezed into [0, w), so that more and more triangles cross "
-                   "the slabs' cut; forecast: dt::forecastSplit for two threads, the share of a "
-                   "sample's vertices no slab can take over uniform points'. The machine has " +
-                   std::to_string(hw) + " hardware threads; load average at the end: " + loadAverage() + ".";
-      mc.emit(o, "table_thread_constants");
-      const std::size_t modelSize = 2 * dt::ParallelModel::minPointsPerThread;
-      values.set("model.n", std::to_string(nTop));
-      values.set("model.reps", std::to_string(mreps));
-      values.set("model.break_even_n",
-                 breakEven ? std::to_string(breakEven) : "(not reached up to " + std::to_string(nTop) + ")");
-      values.set("model.break_even_per_thread",
-                 breakEven ? std::to_string(breakEven / 2) : "(not reached)");
-      values.set("model.code_size", std::to_string(modelSize));
-      // (The page: "the model's size ... is @{model.size_verdict}", likewise for the bound.)
-      values.set("model.size_verdict",
-                 breakEven == 0 ? (modelSize > nTop ? "not judged: two threads did not pay at any size measured, all below it"
-                                                    : "too small: two threads did not pay at any size measured, it included")
-                 : modelSize >= breakEven ? "on the safe side: at and above it, two threads paid"
-                                          : "too small: between it and the measured break-even, two threads lost");
-      values.set("model.bound_measured", bound > 0 ? ch::fmt("%.2f", bound) : "(none measured)");
-      values.set("model.first_loss", firstLoss > 0 ? ch::fmt("%.2f", firstLoss) : "(none measured)");
-      values.num("model.code_bound", dt::ParallelModel::maxCutShareRatio, "%g");
-      const double codeBound = dt::ParallelModel::maxCutShareRatio;
-      values.set("model.bound_verdict",
-                 bound == 0 ? "not judged: two threads did not pay even on uniform points at this size"
-                 : firstLoss > 0 && codeBound >= firstLoss
-                     ? "too loose: a set whose forecast was within it was slower with two threads"
-                 : codeBound <= bound ? "on the safe side: every set whose forecast was within it was faster with two threads"
-                                      : "not fully tested: no set measured had a forecast between the largest that paid and it, and none within it lost");
-    }
-
     // ---- 2. time per point -------------------------------------------------------------
     std::vector<std::size_t> pp;
     for (double e = 3; std::pow(10.0, e) <= double(maxN) * 1.0001; e += 0.5)
@@ -881,6 +765,125 @@ int main(int argc, char** argv) {
       values.set("tpp.steep_from", "-");
       values.set("tpp.steep_to", "-");
     }
+    // ---- 3. the cost model's constants, measured -----------------------------------------
+    // (Last: its runs grow this process, and a child forked later starts from that size, so
+    // the time-per-point chart's peak memory, whose bytes per point place the cache markers,
+    // is measured before them.)
+    // The two constants dt::ParallelModel decides with, measured here, where two threads (the
+    // concurrent rounds, forced) run against the sequential kernel, in turn, paired run by run
+    // (the median of the paired wall-time ratios, and their spread):
+    //  - the break-even size: uniform points at sizes up to the largest n of section 1; the
+    //    smallest size from which two threads beat one at that size and every larger one;
+    //  - the bound on the forecast: points squeezed in x by degrees (modelJob) at that largest
+    //    n; the largest forecast ratio up to which two threads beat one on every width.
+    // Each against the constant of the code: the verdicts say whether the model's size and bound
+    // are on the safe side of what this run measured. Only when --threads lists 2.
+    if (std::count(threadList.begin(), threadList.end(), 2) == 0) {
+      for (const char* k : {"model.n", "model.reps", "model.break_even_n", "model.break_even_per_thread",
+                            "model.bound_measured", "model.first_loss", "model.size_verdict",
+                            "model.bound_verdict"})
+        values.set(k, "(not measured: --threads did not list 2)");
+      values.set("model.code_size", std::to_string(2 * dt::ParallelModel::minPointsPerThread));
+      values.num("model.code_bound", dt::ParallelModel::maxCutShareRatio, "%g");
+    } else {
+      const std::size_t nTop = sizes.front();
+      const int mreps = std::max(3, reps);
+      std::vector<std::size_t> ladder;
+      for (std::size_t n : {10000u, 30000u, 100000u, 200000u, 400000u, 600000u, 1000000u})
+        if (n < nTop) ladder.push_back(n);
+      ladder.push_back(nTop);
+      const std::vector<double> widths = {1, 1e-1, 1e-2, 1e-3, 1e-4, 1e-6};
+      // One case: (n, width); the runs of both kernels, alternated.
+      struct Case {
+        std::size_t n;
+        double width;
+        std::vector<double> ratios;  // wall, two threads / one thread, run by run
+        double forecast = 0;
+      };
+      std::vector<Case> cases;
+      for (std::size_t n : ladder) cases.push_back({n, 1.0, {}, 0});
+      for (double w : widths)
+        if (w < 1) cases.push_back({nTop, w, {}, 0});
+      for (int k = 0; k < mreps; ++k)
+        for (Case& c : cases) {
+          std::vector<double> wall(3);
+          for (int threads : {1, 2}) {
+            const std::vector<double> r =
+                inChild([&](double* out) { modelJob(c.n, c.width, threads, k == 0, out); });
+            if (r.empty())
+              throw std::runtime_error("a run of the model's constants failed (n = " + std::to_string(c.n) + ")");
+            wall[std::size_t(threads)] = r[0];
+            c.forecast = r[2];
+          }
+          c.ratios.push_back(wall[2] / wall[1]);
+        }
+      ch::Table mc;
+      mc.header = {"measures", "n", "x squeezed to", "forecast / uniform", "2 threads / 1 (wall)",
+                   "min-max", "2 threads beat 1"};
+      // The break-even: the smallest size of the ladder from which every median ratio is below 1.
+      std::size_t breakEven = 0;
+      for (std::size_t i = ladder.size(); i-- > 0;) {
+        if (ch::median(cases[i].ratios) >= 1) break;
+        breakEven = ladder[i];
+      }
+      // The bound: the largest forecast ratio up to which every width's median ratio is below 1
+      // (the widths sorted by their forecast; the uniform set at nTop included).
+      std::vector<const Case*> byForecast;
+      for (const Case& c : cases)
+        if (c.n == nTop) byForecast.push_back(&c);
+      std::stable_sort(byForecast.begin(), byForecast.end(),
+                [](const Case* a, const Case* b) { return a->forecast < b->forecast; });
+      double bound = 0, firstLoss = 0;
+      for (const Case* c : byForecast) {
+        if (ch::median(c->ratios) >= 1) {
+          firstLoss = c->forecast;
+          break;
+        }
+        bound = c->forecast;
+      }
+      for (const Case& c : cases) {
+        const double m = ch::median(c.ratios);
+        mc.add({c.width == 1 && c.n != nTop ? "size" : c.width == 1 ? "size and split" : "split",
+                std::to_string(c.n), c.width == 1 ? "1 (uniform)" : ch::fmt("%g", c.width),
+                ch::fmt("%.2f", c.forecast), ch::fmt("%.2f", m), ch::spread(c.ratios, "%.2f"),
+                m < 1 ? "yes" : "no"});
+      }
+      mc.caption = "The cost model's two constants, measured: two threads (the concurrent rounds, "
+                   "whatever the model would choose) against the sequential kernel, each run in its "
+                   "own process, in turn, " + std::to_string(mreps) +
+                   " runs each; the median of the paired wall-time ratios and their spread "
+                   "(min-max). Size: uniform points in the unit square. Split: the same number "
+                   "of points with x squeezed into [0, w), so that more and more triangles cross "
+                   "the slabs' cut; forecast: dt::forecastSplit for two threads, the share of a "
+                   "sample's vertices no slab can take over uniform points'. The machine has " +
+                   std::to_string(hw) + " hardware threads; load average at the end: " + loadAverage() + ".";
+      mc.emit(o, "table_thread_constants");
+      const std::size_t modelSize = 2 * dt::ParallelModel::minPointsPerThread;
+      values.set("model.n", std::to_string(nTop));
+      values.set("model.reps", std::to_string(mreps));
+      values.set("model.break_even_n",
+                 breakEven ? std::to_string(breakEven) : "(not reached up to " + std::to_string(nTop) + ")");
+      values.set("model.break_even_per_thread",
+                 breakEven ? std::to_string(breakEven / 2) : "(not reached)");
+      values.set("model.code_size", std::to_string(modelSize));
+      // (The page: "the model's size ... is @{model.size_verdict}", likewise for the bound.)
+      values.set("model.size_verdict",
+                 breakEven == 0 ? (modelSize > nTop ? "not judged: two threads did not pay at any size measured, all below it"
+                                                    : "too small: two threads did not pay at any size measured, it included")
+                 : modelSize >= breakEven ? "on the safe side: at and above it, two threads paid"
+                                          : "too small: between it and the measured break-even, two threads lost");
+      values.set("model.bound_measured", bound > 0 ? ch::fmt("%.2f", bound) : "(none measured)");
+      values.set("model.first_loss", firstLoss > 0 ? ch::fmt("%.2f", firstLoss) : "(none measured)");
+      values.num("model.code_bound", dt::ParallelModel::maxCutShareRatio, "%g");
+      const double codeBound = dt::ParallelModel::maxCutShareRatio;
+      values.set("model.bound_verdict",
+                 bound == 0 ? "not judged: two threads did not pay even on uniform points at this size"
+                 : firstLoss > 0 && codeBound >= firstLoss
+                     ? "too loose: a set whose forecast was within it was slower with two threads"
+                 : codeBound <= bound ? "on the safe side: every set whose forecast was within it was faster with two threads"
+                                      : "not fully tested: no set measured had a forecast between the largest that paid and it, and none within it lost");
+    }
+
     values.write();
     ch::writeOut(o, "time_per_point_verdict.html", v.str());
     ch::runGnuplot(o, "fig_time_per_point.gp");
