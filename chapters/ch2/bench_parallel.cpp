@@ -84,6 +84,13 @@ constexpr double kCpuTarget1 = 0.65;
 constexpr double kTwoTarget = 0.6;
 // Where Linux describes this machine's caches (chapters/cache_sizes.h); --cache-dir reads another.
 constexpr const char* kSysCacheDir = "/sys/devices/system/cpu/cpu0/cache";
+// The end of a timing table's caption: the machine's hardware threads and its load when the
+// table was made (a loaded machine's ratios measure the waiting as much as the work).
+std::string machineNote(int hw) {
+  return " The machine has " + std::to_string(hw) + " hardware threads; load average at the end: " +
+         loadAverage() + ".";
+}
+
 std::vector<double> inChild(const std::function<void(double*)>& job) {
   int fd[2];
   if (pipe(fd) != 0) return {};
@@ -515,8 +522,7 @@ int main(int argc, char** argv) {
                    "the threads. Output: the final compaction. The rest: the wall time minus sort, "
                    "lone, concurrent rounds and output (the set-up of the shared arrays). Busy per "
                    "point: busy time per point of the concurrent rounds, over the sequential "
-                   "kernel's time after the sort per point. The machine has " +
-                   std::to_string(hw) + " hardware threads; load average at the end: " + loadAverage() + ".";
+                   "kernel's time after the sort per point." + machineNote(hw);
       bt.emit(o, "table_parallel_budget");
 
       // The budget's values. A perfect split: the concurrent rounds take the shared core's
@@ -855,8 +861,7 @@ int main(int argc, char** argv) {
                    "(min-max). Size: uniform points in the unit square. Split: the same number "
                    "of points with x squeezed into [0, w), so that more and more triangles cross "
                    "the slabs' cut; forecast: dt::forecastSplit for two threads, the share of a "
-                   "sample's vertices no slab can take over uniform points'. The machine has " +
-                   std::to_string(hw) + " hardware threads; load average at the end: " + loadAverage() + ".";
+                   "sample's vertices no slab can take over uniform points'." + machineNote(hw);
       mc.emit(o, "table_thread_constants");
       const std::size_t modelSize = 2 * dt::ParallelModel::minPointsPerThread;
       values.set("model.n", std::to_string(nTop));
