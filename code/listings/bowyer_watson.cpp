@@ -1,6 +1,7 @@
 #include "bowyer_watson.h"
 
 #include <algorithm>
+#include <map>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -12,7 +13,7 @@ namespace dt {
 
 //! [delaunayKernelStep]
 KernelStep delaunayKernelStep(const std::vector<double>& xy, std::vector<Tri>& tri, int ip,
-                              std::uint64_t* incircleTests) {
+                              std::uint64_t* incircleTests, const InsideTest& inside) {
   // BEGIN SOLUTION 2.2-1
   const double px = xy[2 * ip], py = xy[2 * ip + 1];
   auto X = [&](int i) { return xy[2 * i]; };
@@ -26,7 +27,7 @@ KernelStep delaunayKernelStep(const std::vector<double>& xy, std::vector<Tri>& t
     if (incircleTests) ++*incircleTests;  // one real call per triangle tested
     // "Contains" is the open disk, decided exactly: a point on the circle (cocircular input)
     // leaves the triangle in place, and the cavity stays star-shaped (Proposition 2.1.1).
-    if (incircle(X(t[0]), Y(t[0]), X(t[1]), Y(t[1]), X(t[2]), Y(t[2]), px, py) > 0)
+    if (inside ? inside(t, ip) : incircle(X(t[0]), Y(t[0]), X(t[1]), Y(t[1]), X(t[2]), Y(t[2]), px, py) > 0)
       cavity.push_back(t);
     else
       tri[kept++] = t;
@@ -56,7 +57,7 @@ KernelStep delaunayKernelStep(const std::vector<double>& xy, std::vector<Tri>& t
 //! [delaunayKernelStep]
 
 //! [bowyerWatson]
-BowyerWatsonResult bowyerWatson(const std::vector<double>& xy, double factor) {
+BowyerWatsonResult bowyerWatson(const std::vector<double>& xy, double factor, CircleTest test) {
   // BEGIN SOLUTION 2.2-1
   BowyerWatsonResult r;
   const std::size_t n = xy.size() / 2;
@@ -80,15 +81,43 @@ BowyerWatsonResult bowyerWatson(const std::vector<double>& xy, double factor) {
     r.xy.push_back(xy[2 * i + 1]);
     r.ids.push_back(long(i));
   }
+  // Section 2.3's tests. Stored: a triangle's circle in floating point, computed the first time
+  // the triangle is tested and kept (a triangle, once made, never changes).
+  auto X = [&r](int i) { return r.xy[2 * i]; };
+  auto Y = [&r](int i) { return r.xy[2 * i + 1]; };
+  std::map<Tri, std::array<double, 3>> circle;  // centre x, centre y, squared radius
+  InsideTest inside;                            // none: the exact incircle
+  if (test == CircleTest::Naive)
+    inside = [&](const Tri& t, int ip) {
+      return incircleNaive(X(t[0]), Y(t[0]), X(t[1]), Y(t[1]), X(t[2]), Y(t[2]), X(ip), Y(ip)) > 0;
+    };
+  if (test == CircleTest::Stored)
+    inside = [&](const Tri& t, int ip) {
+      auto c = circle.find(t);
+      if (c == circle.end()) {
+        const double ax = X(t[0]), ay = Y(t[0]), bx = X(t[1]) - ax, by = Y(t[1]) - ay;
+        const double dx = X(t[2]) - ax, dy = Y(t[2]) - ay, den = 2 * (bx * dy - by * dx);
+        const double ux = (dy * (bx * bx + by * by) - by * (dx * dx + dy * dy)) / den;
+        const double uy = (bx * (dx * dx + dy * dy) - dx * (bx * bx + by * by)) / den;
+        c = circle.emplace(t, std::array<double, 3>{ax + ux, ay + uy, ux * ux + uy * uy}).first;
+      }
+      const double ex = X(ip) - c->second[0], ey = Y(ip) - c->second[1];
+      return ex * ex + ey * ey < c->second[2];
+    };
   for (std::size_t i = 0; i < n; ++i) {
     const int ip = int(4 + i);
-    const KernelStep s = delaunayKernelStep(r.xy, r.tri, ip, &r.incircleTests);
+    const KernelStep s = delaunayKernelStep(r.xy, r.tri, ip, &r.incircleTests, inside);
+    // Only an inexact test can pass this bound: its cavities need not be disks, a ball fanned
+    // from one that is not overlaps what was kept, and the list only grows. N points have at
+    // most 2N - 5 triangles.
+    if (r.tri.size() > r.ids.size() * 2) break;
     if (s.cavity == 0) {
       // Algorithm 1 does not say: an empty cavity means the point is on a vertex (a point
-      // inside a triangle or on an edge is strictly inside its circle) or outside DT_0.
+      // inside a triangle or on an edge is strictly inside its circle) or outside DT_0. An
+      // inexact test may also miss every circle: the point is then left out.
       bool dup = false;
-      for (int v = 0; v < ip && !dup; ++v)
-        dup = r.xy[2 * v] == r.xy[2 * ip] && r.xy[2 * v + 1] == r.xy[2 * ip + 1];
+      for (int v = 0; v < ip && !dup; ++v) dup = X(v) == X(ip) && Y(v) == Y(ip);
+      if (!dup && test != CircleTest::Exact) continue;
       if (!dup) throw std::out_of_range("bowyerWatson: point " + std::to_string(i) +
                                         " lies outside the super-triangles");
       ++r.duplicates;

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "tri.h"
@@ -17,15 +18,29 @@ struct KernelStep {
   std::size_t ball = 0;    ///< |B|: triangles added (|C| + 2 when p is inside the domain)
 };
 
+/// A circle test other than the exact one: true iff point `ip` is to be taken as inside the
+/// circumcircle of triangle `t` (section 2.3's experiments; see CircleTest).
+using InsideTest = std::function<bool(const Tri& t, int ip)>;
+
 //! [delaunayKernelStepDecl]
 /// Eq. (2.1) on a plain triangle list: DT_{n+1} = DT_n - C + B for the point `ip` of `xy`.
 /// C is every triangle whose open circumdisk contains the point (each triangle is tested:
 /// O(size of tri)); B is the fan joining the point to every edge of C not shared by two
 /// triangles of C. Kept triangles stay in order, the ball is appended. If `incircleTests` is
-/// given, each incircle call made is counted in it.
+/// given, each circle test made is counted in it. The test is the exact `incircle`, or
+/// `inside` when one is given.
 KernelStep delaunayKernelStep(const std::vector<double>& xy, std::vector<Tri>& tri, int ip,
-                              std::uint64_t* incircleTests = nullptr);
+                              std::uint64_t* incircleTests = nullptr,
+                              const InsideTest& inside = nullptr);
 //! [delaunayKernelStepDecl]
+
+/// How Algorithm 1 decides that a triangle's circumcircle contains the new point.
+enum class CircleTest {
+  Exact,   ///< `incircle`, exact: the corrected algorithm
+  Naive,   ///< `incircleNaive`, the determinant in floating point (2.3.1: invalid meshes)
+  Stored,  ///< each triangle's centre and squared radius, computed in floating point once,
+           ///< when the triangle is first tested, then compared with (2.3: "computed in advance")
+};
 
 /// The result of Algorithm 1: points (the four super-vertices first, ids -1..-4, then the input
 /// points, ids 0..n-1) and the triangles of DT(S ∪ S0).
@@ -43,7 +58,13 @@ struct BowyerWatsonResult {
 /// same `factor`, then the points are inserted in the given order by delaunayKernelStep.
 /// Gives the same triangles as delaunayTrgl on the same input (compare with
 /// canonicalTriangles). Throws std::out_of_range if a point is outside the super-triangles.
-BowyerWatsonResult bowyerWatson(const std::vector<double>& xy, double factor = 10.0);
+/// With a `test` other than Exact (section 2.3's experiments) every triangle is still tested at
+/// every insertion, but the result may be no triangulation at all (check it with
+/// checkDelaunay): a cavity that is not a disk gives a ball that overlaps the kept triangles, so
+/// the insertions stop once the list holds more triangles than a triangulation of its points
+/// can have.
+BowyerWatsonResult bowyerWatson(const std::vector<double>& xy, double factor = 10.0,
+                                CircleTest test = CircleTest::Exact);
 //! [bowyerWatsonDecl]
 
 /// Triangles named by point ids, each rotated to start at its smallest id (orientation kept),
