@@ -1,7 +1,7 @@
 # The answer values of book/solutions.md ("<!-- values: a | b -->", passed as -v values, one per
 # line) in the lines of the files given, found as the book's edition check finds them: white
 # space squeezed (kept only between two letters or digits), adjacent string literals joined,
-# "\n" in a literal read as a line break, and a value only as a whole (16n is not in 16namespace).
+# "\n" in a literal read as a line break, and a value only as a whole (4k is not in 4kB).
 # -v mode=list prints FILE:LINE:VALUE for every line holding one; -v mode=strip prints the file
 # (one file only) with such a line left out when it is a comment line, its trailing // comment
 # cut when the code before it holds no value, and lists on stderr the lines it cannot clean.

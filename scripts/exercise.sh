@@ -6,10 +6,17 @@
 #
 # The teacher:
 #   scripts/exercise.sh list
-#   scripts/exercise.sh release ID... DIR    a workspace for the class, outside this repository:
+#   scripts/exercise.sh release [--variant N] ID... DIR
+#                                            a workspace for the class, outside this repository:
 #                                            EVERY exercise's solution stripped (the markers stay,
-#                                            around a stub), the IDs stored in DIR/.exercise,
-#                                            answers.md for prove and measure exercises
+#                                            around a stub), the IDs (and the variant N: the seed
+#                                            its tests mix into their random inputs) stored in
+#                                            DIR/.exercise, answers.md for prove and measure
+#                                            exercises
+#   scripts/exercise.sh release --roster FILE ID... DIR
+#                                            one such workspace per student, DIR/NAME, the
+#                                            roster's seed as its variant (the seed grade --roster
+#                                            gives the judge)
 #   scripts/exercise.sh grade [--format tsv|canvas|moodle|gradescope|junit] [--seed N]
 #                             [--roster FILE] [--summary DIR] [--unsandboxed] ID STUDENT_DIR...
 #                                            each student's solution region put into this tree's
@@ -37,11 +44,13 @@
 #                                            is saved (Ctrl-C stops)
 # The machinery's own tests:
 #   scripts/exercise.sh selftest BUILD [ID...] each implement exercise: the stub compiles and
-#                                            fails, the restored solution passes; the judge of
-#                                            grade tells the stub from the solution
+#                                            fails, the restored solution passes (also in a
+#                                            variant); the judge of grade tells the stub from
+#                                            the solution
 #   scripts/exercise.sh lint BUILD           the list, the tests, the pages and regions agree
 # Environment: DT_TEST_TIMEOUT (seconds per test: 60 in check, 10 in grade),
-#   DT_EXERCISE_JOBS (parallel jobs), DT_GRADE_BUILD (the teacher's build, default build/),
+#   DT_EXERCISE_JOBS (parallel jobs), DT_VARIANT (set by check from the workspace's variant),
+#   DT_SELFTEST_VARIANT (the variant selftest also runs the restored solutions in, default 7), DT_GRADE_BUILD (the teacher's build, default build/),
 #   DT_GRADE_NO_BUILD=1 (grade without bringing the build up to date first),
 #   DT_GRADE_UNSANDBOXED=1 (as --unsandboxed), DT_GRADE_BWRAP (the bubblewrap program, default
 #   bwrap), DT_GRADE_STATIC_CHECKS=0 (the token and symbol checks off: for the machinery's test
@@ -376,7 +385,47 @@ answer_values() {
 }
 
 cmd_release() {
-  [ $# -ge 2 ] || die "usage: release ID... DIR"
+  local variant="" roster=""
+  while [ $# -gt 0 ]; do
+    case "$1" in
+      --variant) variant="${2:-}"; shift 2 || die "release: --variant wants a number" ;;
+      --roster) roster="${2:-}"; shift 2 || die "release: --roster wants a file" ;;
+      --*) die "release: unknown option '$1' (--variant N, --roster FILE)" ;;
+      *) break ;;
+    esac
+  done
+  [ $# -ge 2 ] || die "usage: release [--variant N | --roster FILE] ID... DIR"
+  [ -z "$variant" ] || [[ $variant =~ ^[0-9]{1,18}$ ]] || die "release: --variant wants a number, not '$variant'"
+  [ -z "$variant" ] || [ -z "$roster" ] || die "release: --variant and --roster exclude each other (the roster gives each student's variant)"
+  if [ -n "$roster" ]; then
+    # One workspace per student of the roster, DIR/NAME, each with its seed as the variant:
+    # the seed that grade --roster then draws the judge's inputs from.
+    [ -f "$roster" ] || die "release: no roster file '$roster'"
+    local names=() name sd line=0
+    while IFS=$'\t' read -r name sd _; do
+      line=$((line + 1))
+      case "$name" in ''|'#'*) continue ;; esac
+      [[ $name =~ ^[A-Za-z0-9._-]+$ ]] && [ "$name" != . ] && [ "$name" != .. ] ||
+        die "release: $roster, line $line: the workspace name '$name' is not letters, digits, '.', '_' or '-'"
+      [[ $sd =~ ^[0-9]{1,18}$ ]] || die "release: $roster, line $line: the seed of $name is '$sd', not a number"
+      names+=("$name:$sd")
+    done <"$roster"
+    [ ${#names[@]} -gt 0 ] || die "release: $roster names no student"
+    local dir="${!#}" ns
+    [ ! -e "$dir" ] || [ -z "$(ls -A "$dir" 2>/dev/null)" ] || die "$dir exists and is not empty"
+    local out made=()
+    for ns in "${names[@]}"; do
+      if ! out="$(cmd_release --variant "${ns##*:}" "${@:1:$#-1}" "$dir/${ns%:*}")"; then
+        # Nothing half-made: the workspaces of this command go with the one that failed.
+        local m; for m in "${made[@]}"; do rm -rf "${dir:?}/$m"; done
+        die "release: stopped at ${ns%:*}; none of the roster's workspaces was kept"
+      fi
+      made+=("${ns%:*}")
+      echo "${out%%$'\n'*}"
+    done
+    echo "students check with: scripts/exercise.sh check   (inside their workspace)"
+    return
+  fi
   local dir="${!#}" sel=("${@:1:$#-1}") id
   for id in "${sel[@]}"; do exists "$id"; done
   local abs; abs="$(readlink -m -- "$dir")"
@@ -422,7 +471,8 @@ $why"
   fi
   rm -f "$abs/.leaks"
   { echo "# Made by scripts/exercise.sh release: the exercises of this workspace."
-    echo "ids: ${sel[*]}"; } >"$abs/.exercise"
+    echo "ids: ${sel[*]}"
+    [ -z "$variant" ] || echo "variant: $variant"; } >"$abs/.exercise"
   local written=0
   for id in "${sel[@]}"; do
     case "$(field "$id" kind)" in
@@ -440,7 +490,7 @@ $why"
           echo "<!-- write your answer below this line -->"; } >>"$abs/answers.md" ;;
     esac
   done
-  echo "released ${sel[*]} into $abs (every solution stripped; hand this directory out)"
+  echo "released ${sel[*]} into $abs${variant:+ (variant $variant)} (every solution stripped; hand this directory out)"
   for id in "${sel[@]}"; do
     echo "exercise $id ($(field "$id" kind)): $(field "$id" title)"
     if [ "$(field "$id" kind)" = implement ]; then
@@ -458,6 +508,13 @@ $why"
 workspace_ids() {
   [ -f "$1/.exercise" ] || return 0
   awk '/^ids:/ { sub(/^ids:[ \t]*/, ""); print }' "$1/.exercise" | tr ' ' '\n' | sed '/^$/d'
+}
+
+# workspace_variant DIR: the variant stored by release --variant in DIR/.exercise (nothing when
+# none, or when it is not a number: the tests then draw the inputs every workspace draws).
+workspace_variant() {
+  [ -f "$1/.exercise" ] || return 0
+  awk '/^variant:[ \t]*[0-9]+[ \t]*$/ { sub(/^variant:[ \t]*/, ""); sub(/[ \t]*$/, ""); print; exit }' "$1/.exercise"
 }
 
 # parse_ids_dir ARGS...: sets SEL (the IDs) and DIR (a directory argument, default the current
@@ -525,6 +582,13 @@ cmd_check() {
       return 1
     fi
     rm -f "$log"
+  fi
+  local variant; variant="$(workspace_variant "$dir")"
+  if [ -n "$variant" ]; then
+    echo "variant $variant: your tests draw their own random inputs"
+    export DT_VARIANT="$variant"
+  else
+    unset DT_VARIANT
   fi
   for id in "${SEL[@]}"; do
     case "$(field "$id" kind)" in
@@ -1383,6 +1447,8 @@ cmd_selftest() {
   local objs="$build/CMakeFiles/dt_tests.dir/tests"
   [ -f "$build/libdt.a" ] && [ -d "$objs" ] || die "$build has no libdt.a or dt_tests objects (build dt_tests first)"
   TEST_TIMEOUT="${DT_TEST_TIMEOUT:-60}"
+  SELFTEST_VARIANT="${DT_SELFTEST_VARIANT:-7}"
+  [[ $SELFTEST_VARIANT =~ ^[1-9][0-9]{0,17}$ ]] || die "DT_SELFTEST_VARIANT wants a number from 1, not '$SELFTEST_VARIANT'"
   local sel="$*" id fail=0 work f o
   if [ -z "$sel" ]; then
     for id in $(ids); do
@@ -1433,6 +1499,10 @@ cmd_selftest() {
       else
         if [ $rc -ne 0 ]; then echo "FAIL $id: its tests fail on the restored solution:"; echo "$res"; fail=1
         else echo "ok   $id: the restored solution passes"; fi
+        # A released workspace's variant draws other random inputs: the tests must hold there too.
+        set +e; res="$(DT_VARIANT=$SELFTEST_VARIANT run_tests "$id" "$work/t")"; rc=$?; set -e
+        if [ $rc -ne 0 ]; then echo "FAIL $id: its tests fail on the restored solution in variant $SELFTEST_VARIANT:"; echo "$res"; fail=1
+        else echo "ok   $id: the restored solution passes in variant $SELFTEST_VARIANT"; fi
       fi
       # The judge of grade, where the exercise has one: the restored solution prints what the
       # library's prints, the stub does not.

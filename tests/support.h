@@ -6,12 +6,15 @@
 #include <unistd.h>
 
 #include <array>
+#include <cerrno>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -30,6 +33,27 @@ using dt::circlePoints;
 using dt::gridPoints;
 using dt::uniformPoints;
 inline void shuffle(XY& p, unsigned seed) { dt::shufflePoints(p, seed); }
+
+// The seed of a random input of an exercise's test, in a workspace's variant: `scripts/exercise.sh
+// release --variant N` (or --roster) records N in the workspace, and `check` passes it to the
+// tests as DT_VARIANT, so that each student's tests draw their own inputs and one student's
+// printed failure is not another's answer key. Unset or 0: `seed` itself. The tests of an
+// exercise hold for every variant (scripts/exercise.sh selftest runs them under one).
+inline unsigned variant(unsigned seed) {
+  const char* text = std::getenv("DT_VARIANT");
+  if (text == nullptr || *text == '\0') return seed;
+  char* end = nullptr;
+  errno = 0;
+  const unsigned long long v = std::strtoull(text, &end, 10);
+  if (*end != '\0' || errno != 0 || *text < '0' || *text > '9')
+    throw std::invalid_argument(std::string("DT_VARIANT='") + text + "' is not a variant number");
+  if (v == 0) return seed;
+  // SplitMix64's finaliser of the pair: nearby variants and seeds give unrelated inputs.
+  std::uint64_t z = (std::uint64_t(seed) << 32 ^ v) + 0x9e3779b97f4a7c15ull;
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+  return unsigned(z ^ (z >> 31));
+}
 
 // DT(S) with the hull method, extracted and checked exactly. Returns the report.
 inline dt::CheckReport triangulateAndCheck(const XY& p, dt::InsertionStats* st = nullptr,

@@ -223,14 +223,14 @@ TEST_CASE("2.1.1 ker(Sigma) is the intersection of the half-planes of the orient
 TEST_CASE("2.1.2 Prop. 2.1.1: the cavity is non-empty and edge-connected and star-shaped with p in its kernel") {
   // Checked exactly at every insertion; the cavity is computed by testing every face, so its
   // connectivity is a real check. Grids and exactly cocircular points are the hard cases.
-  XY uniform = dt::uniformPoints(2000, 7);
+  XY uniform = dt::uniformPoints(2000, dttest::variant(7));
   XY grid = dt::gridPoints(30, 30, 0.125);
-  dt::shufflePoints(grid, 8);
+  dt::shufflePoints(grid, dttest::variant(8));
   XY circle = dt::circlePoints(400);
-  dt::shufflePoints(circle, 9);
+  dt::shufflePoints(circle, dttest::variant(9));
   XY cocircular = integerCirclePoints();
   REQUIRE(cocircular.size() / 2 == 324);
-  dt::shufflePoints(cocircular, 10);
+  dt::shufflePoints(cocircular, dttest::variant(10));
   XY gridSorted = dt::gridPoints(20, 20);  // lexicographic order: long thin cavities
   std::size_t total = 0;
   for (const XY* p : {&uniform, &grid, &circle, &cocircular, &gridSorted}) {
@@ -246,7 +246,7 @@ TEST_CASE("2.1.2 Prop. 2.1.1: the cavity is non-empty and edge-connected and sta
 TEST_CASE("2.1.2 Property 2.1.1: no point of S_n inside the cavity hence |bnd| = |C| + 2") {
   // checkCavity counts the vertices off the boundary and the boundary edges; a cavity that
   // violated Property 2.1.1 would show |bnd| = |C| + 2 - 2 (inner vertices).
-  const KernelRun run = runKernel(dt::uniformPoints(500, 11), 1u << 30);
+  const KernelRun run = runKernel(dt::uniformPoints(500, dttest::variant(11)), 1u << 30);
   INFO(run.error);
   CHECK(run.ok);
   // Control: the star of an interior vertex s (all its faces) with p next to s is not a

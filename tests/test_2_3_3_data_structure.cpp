@@ -61,7 +61,7 @@ TEST_CASE("2.3.3 exercise 2: vertexStar lists exactly the triangles of a vertex"
     dt::Triangulation T;
     std::vector<dt::Vertex*> S;
     dt::XY p = dt::gridPoints(6, 5);
-    const dt::XY r = dt::uniformPoints(40, 3, 0, 5);
+    const dt::XY r = dt::uniformPoints(40, dttest::variant(3), 0, 5);
     p.insert(p.end(), r.begin(), r.end());
     for (std::size_t i = 0; i < p.size() / 2; ++i) S.push_back(T.addVertex(p[2 * i], p[2 * i + 1], long(i)));
     if (method == 0) {

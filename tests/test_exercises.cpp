@@ -54,9 +54,11 @@ TEST_CASE("exercises release check hint and watch end to end in a temporary dire
   const std::string dir = (std::filesystem::temp_directory_path() /
                            ("dt_exercise_e2e_" + std::to_string(::getpid()))).string();
   std::filesystem::remove_all(dir);
-  const Run s = exercise({"release", "2.3.2-1", dir});
+  const Run s = exercise({"release", "--variant", "5", "2.3.2-1", dir});
   INFO(s.out);
   REQUIRE(s.status == 0);
+  CHECK(contains(s.out, "(variant 5)"));
+  CHECK(contains(dttest::readText(dir + "/.exercise"), "\nvariant: 5\n"));
   const std::string stats = dttest::readText(dir + "/code/checks/stats.cpp");
   // (The marker is spelled in two literals so that the book's source pages never show it.)
   CHECK(contains(stats, "  // BEGIN " "SOLUTION 2.3.2-1\n  throw std::logic_error(\"exercise 2.3.2-1: not implemented yet\");\n"));
@@ -74,6 +76,7 @@ TEST_CASE("exercises release check hint and watch end to end in a temporary dire
   const Run fail = exercise({"check", dir});
   INFO(fail.out);
   CHECK(fail.status == 1);
+  CHECK(contains(fail.out, "variant 5: your tests draw their own random inputs"));
   // Only the test file of 2.3.2-1 is compiled into the workspace's dt_tests, not the suite.
   CHECK(contains(fail.out, "(target dt_tests, from tests/test_2_3_2_adjacencies.cpp) ..."));
   CHECK(contains(fail.out, "FAIL 2.3.2-1"));
@@ -94,6 +97,48 @@ TEST_CASE("exercises release check hint and watch end to end in a temporary dire
   CHECK(pass.status == 0);
   CHECK(contains(pass.out, "PASS 2.3.2-1"));
   std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("exercises release gives each student of a roster a workspace with the roster's seed as its variant") {
+  const std::string dir = (std::filesystem::temp_directory_path() /
+                           ("dt_exercise_roster_" + std::to_string(::getpid()))).string();
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  dttest::writeText(dir + "/roster.tsv", "# workspace\tseed\tname\nada\t11\tAda L.\n\nbob\t42\tBob K.\n");
+  const Run r = exercise({"release", "--roster", dir + "/roster.tsv", "2.3.3-2", dir + "/class"});
+  INFO(r.out << r.err);
+  REQUIRE(r.status == 0);
+  CHECK(contains(dttest::readText(dir + "/class/ada/.exercise"), "\nvariant: 11\n"));
+  CHECK(contains(dttest::readText(dir + "/class/bob/.exercise"), "\nvariant: 42\n"));
+  CHECK(contains(dttest::readText(dir + "/class/bob/code/checks/stats.cpp"), "exercise 2.3.3-2: not implemented yet"));
+  // A seed that is not a number names the file, the line and the value; nothing is released.
+  dttest::writeText(dir + "/bad.tsv", "ada\t11\nbob\tx7\n");
+  const Run bad = exercise({"release", "--roster", dir + "/bad.tsv", "2.3.3-2", dir + "/bad"});
+  CHECK(bad.status == 2);
+  CHECK(contains(bad.out, "bad.tsv, line 2: the seed of bob is 'x7', not a number"));
+  CHECK_FALSE(std::filesystem::exists(dir + "/bad"));
+  const Run both = exercise({"release", "--variant", "3", "--roster", dir + "/roster.tsv", "2.3.3-2", dir + "/x"});
+  CHECK(both.status == 2);
+  CHECK(contains(both.out, "exclude each other"));
+  std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("exercises a workspace's variant changes the seeds of the exercises' random inputs") {
+  // tests/support.h: DT_VARIANT (set by check from the workspace) mixes into each seed.
+  ::unsetenv("DT_VARIANT");
+  CHECK(dttest::variant(21) == 21u);
+  ::setenv("DT_VARIANT", "0", 1);
+  CHECK(dttest::variant(21) == 21u);
+  ::setenv("DT_VARIANT", "5", 1);
+  const unsigned five = dttest::variant(21);
+  CHECK(five != 21u);
+  CHECK(dttest::variant(22) != five);
+  CHECK(dt::uniformPoints(10, dttest::variant(21)) != dt::uniformPoints(10, 21));
+  ::setenv("DT_VARIANT", "6", 1);
+  CHECK(dttest::variant(21) != five);
+  ::setenv("DT_VARIANT", "5x", 1);
+  CHECK_THROWS_WITH(dttest::variant(21), "DT_VARIANT='5x' is not a variant number");
+  ::unsetenv("DT_VARIANT");
 }
 
 TEST_CASE("exercises a handout is self-contained and stops on a missing figure") {

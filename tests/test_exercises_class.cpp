@@ -620,7 +620,7 @@ TEST_CASE("exercises class grade catches the planted bugs of 2.1-1 and collects 
   INFO(g.out << g.err);
   REQUIRE(g.status == 0);
   const auto rows = tsv(g.out);
-  REQUIRE(rows.size() == 4);
+  REQUIRE(rows.size() == 5);
   for (std::size_t i = 0; i < cls.size(); ++i) {
     INFO(cls[i].name);
     CHECK(rows[i + 1][0] == cls[i].name);
@@ -714,7 +714,9 @@ TEST_CASE("exercises class grade reads operators as tokens checks the called fun
       {"question_string", "  const char* why = \"why?\";\n  (void)why;\n" + solution},
       {"keys_fast", "  std::vector<std::uint64_t> hilbertKeysFast(const std::vector<double>&, int);\n"
                     "  return hilbertKeysFast(std::vector<double>{double(i), double(j)}, depth).at(0);\n"},
-      {"question_mark", "  return depth < 0 ? 0 : 1;\n"}};
+      {"question_mark", "  return depth < 0 ? 0 : 1;\n"},
+      // A table of the library's loop written out by hand: no branch, but no exercise either.
+      {"table", "  static const unsigned char next[2] = {0, 1};\n  return next[depth & 1];\n"}};
   std::vector<std::string> args = {"grade", "2.3.5-5"};
   for (const auto& s : cls) {
     const std::string d = root + "/" + s.first;
@@ -727,13 +729,15 @@ TEST_CASE("exercises class grade reads operators as tokens checks the called fun
   INFO(g.out << g.err);
   REQUIRE(g.status == 0);
   const auto rows = tsv(g.out);
-  REQUIRE(rows.size() == 4);
+  REQUIRE(rows.size() == 5);
   CHECK(rows[1][1] == "PASS");
   CHECK(rows[2][1] == "FORBIDDEN");
   CHECK(contains(rows[2][6], "calls dt::hilbertKeysFast("));
   CHECK(rows[3][1] == "FORBIDDEN");
   CHECK(contains(rows[3][6], "code/exercises/ex_hilbert.cpp:"));
   CHECK(contains(rows[3][6], ": '?'"));
+  CHECK(rows[4][1] == "FORBIDDEN");
+  CHECK(contains(rows[4][6], ": '['"));
 
   // No sandbox: no grading, and the reason; --unsandboxed grades with a warning on every row.
   auto noSandbox = env;

@@ -15,6 +15,8 @@
 #include <cstdlib>
 #include <iostream>
 #include <map>
+#include <set>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -119,13 +121,14 @@ void figure25(const ch::Options& o) {
   for (int k = 1; k <= 9; ++k) {
     const int ip = 3 + k;
     const std::vector<dt::Tri> before = tri;
-    std::vector<dt::Tri> cavity;
-    for (const dt::Tri& t : before)
-      if (dt::incircle(xy[2 * t[0]], xy[2 * t[0] + 1], xy[2 * t[1]], xy[2 * t[1] + 1], xy[2 * t[2]],
-                       xy[2 * t[2] + 1], xy[2 * ip], xy[2 * ip + 1]) > 0)
-        cavity.push_back(t);
     const dt::KernelStep s = dt::delaunayKernelStep(xy, tri, ip);
     std::vector<dt::Tri> ball(tri.end() - long(s.ball), tri.end());
+    // The cavity: the triangles of DT_{k-1} that the library's step took away.
+    const std::set<dt::Tri> kept(tri.begin(), tri.end() - long(s.ball));
+    std::vector<dt::Tri> cavity;
+    for (const dt::Tri& t : before)
+      if (!kept.count(t)) cavity.push_back(t);
+    if (cavity.size() != s.cavity) throw std::logic_error("figure 2.5: the step's cavity is not what it removed");
     // Titles: the PNG frames in the notes' notation; the GIF (libgd) cannot show 𝒞, so words.
     const std::string name = pname(all.ids[ip]);
     writeFrame(before, cavity, ip, "inserting " + ch::mathText(name) + ": the cavity " + ch::mathText("\\mathscr{C}") + " (" +
