@@ -375,9 +375,11 @@ answers_section() {
     p && !/^<!-- write your answer/' "$2"
 }
 
-# The files a release leaves out: they state answers, and only the teacher's tree runs them.
+# The files a release leaves out: they state answers, and only the teacher's tree runs them
+# (the judges of grade compute what the exercises ask, 2.3.2-2's in three lines).
 RELEASE_LEAVE_OUT=(tests/test_exercises.cpp tests/test_exercises_class.cpp tests/test_book.cpp
-                   tests/mutants.txt tests/mutants_selftest.txt)
+                   tests/mutants.txt tests/mutants_selftest.txt exercises/judge.cpp
+                   exercises/judge_2_1.h exercises/judge_2_2.h exercises/judge_2_3.h)
 
 # answer_values: the values of the answers, one per line, from book/solutions.md.
 answer_values() {

@@ -295,7 +295,7 @@ TEST_CASE("2.3.1 exercise 2: exactBits bits make MPFR exact on wide random input
              incircleQ(v);
   }
   CHECK(wrong == 0);
-  CHECK(exactBitsOrient2d(1.5, 1.25, 1.75, 1.125, 1.0, 1.875) == 109);  // one binade: 2*53 + 3
+  CHECK(exactBitsOrient2d(1.5, 1.25, 1.75, 1.125, 1.0, 1.875) == 109);  // one binade
   CHECK(exactBitsIncircle(1.5, 1.25, 1.75, 1.125, 1.0, 1.875, 1.5, 1.5) == 220);  // > 200
 }
 

@@ -65,6 +65,7 @@ TEST_CASE("exercises release check hint and watch end to end in a temporary dire
   CHECK_FALSE(contains(stats, "2 * (nx + ny) - 4"));  // the solution's hull count
   CHECK(contains(stats, "exercise 2.3.2-2: not implemented yet"));  // every exercise is stripped
   CHECK_FALSE(dttest::fileExists(dir + "/.git/HEAD"));
+  CHECK_FALSE(dttest::fileExists(dir + "/exercises/judge_2_3.h"));  // the judges compute the answers
   const std::string solutions = dttest::readText(dir + "/book/solutions.md");
   CHECK_FALSE(contains(solutions, "sol_2_3_2_1"));
   CHECK_FALSE(contains(solutions, "sol_2_3_2_2"));
