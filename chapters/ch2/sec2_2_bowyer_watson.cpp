@@ -380,6 +380,13 @@ void figure26(const ch::Options& o) {
     superLabel += num(bw.xy[2 * s]) + " " + num(bw.xy[2 * s + 1]) + " " + ch::quoted(text) + " " + num(lx) + " " + num(ly) + " " +
                   (std::count(mi.superInCircle.begin(), mi.superInCircle.end(), s) ? "1" : "0") + "\n";
   }
+  // p_k, p_j, p_l named in (a) too, clear of the super-vertices' labels.
+  std::string labelsA;
+  for (const auto& [idx, name] : std::vector<std::pair<int, std::string>>{{K, "p_k"}, {J, "p_j"}, {L, "p_l"}}) {
+    const std::string text = ch::mathText(name);
+    const auto [lx, ly] = placeA.place(bw.xy[2 * idx], bw.xy[2 * idx + 1], text);
+    labelsA += num(lx) + " " + num(ly) + " " + ch::quoted(text) + "\n";
+  }
   for (const auto& [a, b] : mi.crossing) {
     const int sv = a < 4 ? a : b, other = a < 4 ? b : a;
     ch::Seg cl;
@@ -404,6 +411,7 @@ void figure26(const ch::Options& o) {
                                             num(p[2 * k]) + " " + num(p[2 * k + 1]) + "\n");
   ch::writeOut(o, "fig2_6_circle.dat", num(c.x) + " " + num(c.y) + " " + num(c.r) + "\n");
   ch::writeOut(o, "fig2_6_labels.dat", labels);
+  ch::writeOut(o, "fig2_6_labels_a.dat", labelsA);
   ch::writeOut(o, "fig2_6_super.dat", superLabel);
   ch::writeOut(o, "fig2_6_exit.dat", exitLabel.empty() ? "NaN NaN NaN NaN x\n" : exitLabel);
   ch::writeOut(o, "fig2_6_crossing.dat", crossing);
