@@ -50,7 +50,8 @@
 #   scripts/exercise.sh lint BUILD           the list, the tests, the pages and regions agree
 # Environment: DT_TEST_TIMEOUT (seconds per test: 60 in check, 10 in grade),
 #   DT_EXERCISE_JOBS (parallel jobs), DT_VARIANT (set by check from the workspace's variant),
-#   DT_SELFTEST_VARIANT (the variant selftest also runs the restored solutions in, default 7), DT_GRADE_BUILD (the teacher's build, default build/),
+#   DT_SELFTEST_VARIANT (the variant selftest also runs the restored solutions in, default 7),
+#   DT_GRADE_BUILD (the teacher's build, default build/),
 #   DT_GRADE_NO_BUILD=1 (grade without bringing the build up to date first),
 #   DT_GRADE_UNSANDBOXED=1 (as --unsandboxed), DT_GRADE_BWRAP (the bubblewrap program, default
 #   bwrap), DT_GRADE_STATIC_CHECKS=0 (the token and symbol checks off: for the machinery's test
