@@ -39,8 +39,27 @@ if grep -q 'good.html' <<< "$out"; then echo "FAIL: the good page was blamed" >&
 if ! g=$(bash "$here/axe_check.sh" "$dir" good.html 2>&1); then
   echo "FAIL: the good page alone failed: $g" >&2; fail=1
 fi
+# The stamp of a directory that passed: the same files again are not checked again, but a page
+# changed after the stamp (here a violation planted in it) or any other file changed is.
+clean="$work/clean"
+mkdir -p "$clean"
+cp "$dir/good.html" "$dir/dot.svg" "$clean/"
+if ! c1=$(bash "$here/axe_check.sh" "$clean" 2>&1) || [ ! -f "$clean/.axe_passed" ]; then
+  echo "FAIL: a clean directory failed or got no stamp: $c1" >&2; fail=1
+fi
+c2=$(bash "$here/axe_check.sh" "$clean" 2>&1) || { echo "FAIL: the stamped directory failed: $c2" >&2; fail=1; }
+grep -q 'the same files passed before' <<< "$c2" || { echo "FAIL: the stamp was not used: $c2" >&2; fail=1; }
+echo '<svg xmlns="http://www.w3.org/2000/svg" width="64" height="8"/>' > "$clean/dot.svg"
+c3=$(bash "$here/axe_check.sh" "$clean" 2>&1) || { echo "FAIL: after a new image: $c3" >&2; fail=1; }
+if grep -q 'the same files passed before' <<< "$c3"; then echo "FAIL: a changed image kept the stamp" >&2; fail=1; fi
+sed -i 's/<html lang="en">/<html>/' "$clean/good.html"
+status=0
+c4=$(bash "$here/axe_check.sh" "$clean" 2>&1) || status=$?
+if [ "$status" != 1 ] || ! grep -q 'good.html: html-has-lang' <<< "$c4"; then
+  echo "FAIL: a violation planted after the stamp was not found (exit $status): $c4" >&2; fail=1
+fi
 if [ $fail = 0 ]; then
-  echo "axe check self-test: 5 planted violations found, the good page passes"
+  echo "axe check self-test: 5 planted violations found, the good page passes, a stamp hides no change"
 else
   echo "--- the check's output:" >&2; cat <<< "$out" >&2
 fi

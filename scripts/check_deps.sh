@@ -27,6 +27,7 @@ c++          g++                cmake (the compiler of every target)
 cmake        cmake              scripts/main.sh scripts/test.sh scripts/fuzz.sh
 ctest        cmake              scripts/test.sh
 make         make               cmake (the generator)
+ccache       ccache             CMakeLists.txt (compiles a file once for every copy of the tree)
 gnuplot      gnuplot-nox        chapters/common.h runGnuplot (runProgram)
 doxygen      doxygen            book/CMakeLists.txt
 clang++      clang              scripts/fuzz.sh

@@ -7,7 +7,7 @@ set -euo pipefail
 DT_PACKAGES=(g++ cmake make libgmp-dev libmpfr-dev doctest-dev gnuplot-nox doxygen
              libjs-mathjax clang libclang-rt-14-dev chromium fonts-dejavu-core fonts-dejavu-extra git
              shellcheck emscripten dpkg-dev bubblewrap binutils nodejs
-             poppler-utils)
+             poppler-utils ccache)
 # Optional: CGAL, the reference of bench_kernels (the build detects it; without it the benchmark
 # compares the listings with the fast kernel only), and perf, which samples one Table 2.1 run for
 # the 2.3.4 page (without it that table says so). Installed only when asked, e.g. by

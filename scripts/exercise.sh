@@ -1443,12 +1443,13 @@ cmd_handout() {
 
 # ---- the machinery's own tests ---------------------------------------------------------------------
 # The fast path of the machinery tests: compile the stripped files alone and link them before
-# BUILD's library, whose members for those files are then never pulled in.
+# BUILD's library, whose members for those files are then never pulled in; the restored
+# solutions are BUILD's dt_tests itself.
 cmd_selftest() {
   [ $# -ge 1 ] || die "usage: selftest BUILD [ID...]"
   local build; build="$(cd "$1" && pwd)"; shift
   local objs="$build/CMakeFiles/dt_tests.dir/tests"
-  [ -f "$build/libdt.a" ] && [ -d "$objs" ] || die "$build has no libdt.a or dt_tests objects (build dt_tests first)"
+  [ -f "$build/libdt.a" ] && [ -d "$objs" ] && [ -x "$build/dt_tests" ] || die "$build has no libdt.a, dt_tests or its objects (build dt_tests first)"
   TEST_TIMEOUT="${DT_TEST_TIMEOUT:-60}"
   SELFTEST_VARIANT="${DT_SELFTEST_VARIANT:-7}"
   [[ $SELFTEST_VARIANT =~ ^[1-9][0-9]{0,17}$ ]] || die "DT_SELFTEST_VARIANT wants a number from 1, not '$SELFTEST_VARIANT'"
@@ -1477,52 +1478,45 @@ cmd_selftest() {
   for id in $sel; do
     local files; files="$(region_files "$id" "$HERE" | grep '^code/.*\.cpp$' || true)"
     if [ -z "$files" ]; then echo "FAIL $id: no solution region in a .cpp of code/"; fail=1; continue; fi
-    for variant in stub restored; do
-      local o_list=() ok=1
-      for f in $files; do
-        o="$work/$(basename "$f" .cpp).$variant.o"
-        if [ $variant = stub ]; then strip_file "$id" "$HERE/$f" >"$work/$(basename "$f")"
-        else cp "$HERE/$f" "$work/$(basename "$f")"; fi
-        if ! g++ -std=c++17 -O1 -ffp-contract=off "${code_inc[@]}" -c "$work/$(basename "$f")" -o "$o" \
-             2>"$work/cc.log"; then
-          echo "FAIL $id: the $variant copy of $f does not compile:"; head -n 20 "$work/cc.log"; ok=0
-        fi
-        o_list+=("$o")
-      done
-      [ $ok = 1 ] || { fail=1; continue; }
-      if ! g++ -o "$work/t" "${o_list[@]}" "${test_objs[@]}" "$build/libdt.a" -lmpfr -lgmp -pthread 2>"$work/ld.log"; then
-        echo "FAIL $id: the $variant copy does not link:"; head -n 20 "$work/ld.log"; fail=1; continue
+    # The stub, compiled and linked before BUILD's library: its check must fail and say why.
+    local o_list=() ok=1 res rc same f o
+    for f in $files; do
+      o="$work/$(basename "$f" .cpp).stub.o"
+      strip_file "$id" "$HERE/$f" >"$work/$(basename "$f")"
+      if ! g++ -std=c++17 -O1 -ffp-contract=off "${code_inc[@]}" -c "$work/$(basename "$f")" -o "$o" \
+           2>"$work/cc.log"; then
+        echo "FAIL $id: the stub copy of $f does not compile:"; head -n 20 "$work/cc.log"; ok=0
       fi
-      local res; set +e; res="$(run_tests "$id" "$work/t")"; local rc=$?; set -e
-      if [ $variant = stub ]; then
-        if [ $rc -eq 0 ]; then echo "FAIL $id: its tests pass on the stub"; fail=1
-        elif ! grep -q "exercise $id: not implemented yet" <<<"$res"; then
-          echo "FAIL $id: the failure of the stub does not say so:"; echo "$res"; fail=1
-        else echo "ok   $id: the stub compiles and its check fails"; fi
-      else
-        if [ $rc -ne 0 ]; then echo "FAIL $id: its tests fail on the restored solution:"; echo "$res"; fail=1
-        else echo "ok   $id: the restored solution passes"; fi
-        # A released workspace's variant draws other random inputs: the tests must hold there too.
-        set +e; res="$(DT_VARIANT=$SELFTEST_VARIANT run_tests "$id" "$work/t")"; rc=$?; set -e
-        if [ $rc -ne 0 ]; then echo "FAIL $id: its tests fail on the restored solution in variant $SELFTEST_VARIANT:"; echo "$res"; fail=1
-        else echo "ok   $id: the restored solution passes in variant $SELFTEST_VARIANT"; fi
-      fi
-      # The judge of grade, where the exercise has one: the restored solution prints what the
-      # library's prints, the stub does not.
-      if grep -qxF -- "$id" <<<"$judged"; then
-        if ! g++ -o "$work/j" "${o_list[@]}" "$work/judge.o" "$build/libdt.a" -lmpfr -lgmp -pthread 2>"$work/ld.log"; then
-          echo "FAIL $id: the judge does not link with the $variant copy:"; head -n 20 "$work/ld.log"; fail=1; continue
-        fi
-        [ -f "$work/ref_$id" ] || "$work/judge_ref" "$id" 1 >"$work/ref_$id" || { echo "FAIL $id: the judge fails on the library"; fail=1; continue; }
-        local same=0; "$work/j" "$id" 1 >"$work/got_$id" 2>/dev/null && cmp -s "$work/ref_$id" "$work/got_$id" && same=1
-        if [ $variant = stub ] && [ $same = 1 ]; then echo "FAIL $id: the judge prints the solution's output on the stub"; fail=1
-        elif [ $variant = restored ] && [ $same = 0 ]; then
-          echo "FAIL $id: the judge's output on the restored solution is not the library's:"
-          judge_differences "$work/ref_$id" "$work/got_$id" | head -n 3; fail=1
-        elif [ $variant = stub ]; then echo "ok   $id: the judge tells the stub from the solution"
-        else echo "ok   $id: the judge prints the library's output on the restored solution"; fi
-      fi
+      o_list+=("$o")
     done
+    [ $ok = 1 ] || { fail=1; continue; }
+    if ! g++ -o "$work/t" "${o_list[@]}" "${test_objs[@]}" "$build/libdt.a" -lmpfr -lgmp -pthread 2>"$work/ld.log"; then
+      echo "FAIL $id: the stub copy does not link:"; head -n 20 "$work/ld.log"; fail=1; continue
+    fi
+    set +e; res="$(run_tests "$id" "$work/t")"; rc=$?; set -e
+    if [ $rc -eq 0 ]; then echo "FAIL $id: its tests pass on the stub"; fail=1
+    elif ! grep -q "exercise $id: not implemented yet" <<<"$res"; then
+      echo "FAIL $id: the failure of the stub does not say so:"; echo "$res"; fail=1
+    else echo "ok   $id: the stub compiles and its check fails"; fi
+    # The judge of grade, where the exercise has one, must not print the library's output on the stub.
+    if grep -qxF -- "$id" <<<"$judged"; then
+      if ! g++ -o "$work/j" "${o_list[@]}" "$work/judge.o" "$build/libdt.a" -lmpfr -lgmp -pthread 2>"$work/ld.log"; then
+        echo "FAIL $id: the judge does not link with the stub copy:"; head -n 20 "$work/ld.log"; fail=1; continue
+      fi
+      "$work/judge_ref" "$id" 1 >"$work/ref_$id" || { echo "FAIL $id: the judge fails on the library"; fail=1; continue; }
+      same=0; "$work/j" "$id" 1 >"$work/got_$id" 2>/dev/null && cmp -s "$work/ref_$id" "$work/got_$id" && same=1
+      if [ $same = 1 ]; then echo "FAIL $id: the judge prints the solution's output on the stub"; fail=1
+      else echo "ok   $id: the judge tells the stub from the solution"; fi
+    fi
+    # The restored solution is the library's own source, from which BUILD's dt_tests was linked
+    # (and the judge's reference above): its tests run there, in the default variant and in
+    # another, since a released workspace's variant draws other random inputs.
+    set +e; res="$(run_tests "$id" "$build/dt_tests")"; rc=$?; set -e
+    if [ $rc -ne 0 ]; then echo "FAIL $id: its tests fail on the restored solution:"; echo "$res"; fail=1
+    else echo "ok   $id: the restored solution passes"; fi
+    set +e; res="$(DT_VARIANT=$SELFTEST_VARIANT run_tests "$id" "$build/dt_tests")"; rc=$?; set -e
+    if [ $rc -ne 0 ]; then echo "FAIL $id: its tests fail on the restored solution in variant $SELFTEST_VARIANT:"; echo "$res"; fail=1
+    else echo "ok   $id: the restored solution passes in variant $SELFTEST_VARIANT"; fi
   done
   return $fail
 }

@@ -195,9 +195,11 @@ else
   trap 'rm -rf "$work"' EXIT
 fi
 src="$work/src"
-build="$work/build"
-rm -rf "$src"
+# The build sits in the copy where a checkout has its own (build/): the compile commands are
+# then a checkout's, and ccache (see CMakeLists.txt) serves every file the mutant did not touch.
+build="$src/build"
 mkdir -p "$src"
+find "$src" -mindepth 1 -maxdepth 1 ! -name build -exec rm -rf {} +
 # The repository as it is now (uncommitted edits included), without .git and build
 # directories, with its file times: a kept build recompiles only what changed since.
 (cd "$repo" && find . \( -path ./.git -o -path './build*' \) -prune -o -type f -print0 |
