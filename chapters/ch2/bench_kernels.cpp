@@ -32,6 +32,7 @@
 #include <cmath>
 #include <cstring>
 #include <iostream>
+#include <iterator>
 #include <random>
 #include <string>
 #include <vector>
@@ -316,14 +317,21 @@ std::vector<double> pairedRatios(const Runs& a, const Runs& b) {
   return r;
 }
 
-}  // namespace
 
-int main(int argc, char** argv) {
-  const ch::Program p{"bench_kernels",
-                      "The kernels against CGAL on nine point families (no figure); --max-n 10000000 adds 10^7, 100000000 adds 10^8.",
-                      1000, 100000000, {},
-                      {{"--reps", "N", "runs per kernel, the median kept (default 5, 3 with --quick)", 1, 1000}}};
-  const ch::Options o = ch::parseOptions(argc, argv, p);
+// ---- the run's settings -------------------------------------------------------------------
+
+// What every part of the run reads from the options.
+struct Bench {
+  const ch::Options& o;
+  int reps;                        // runs per kernel, the median kept
+  std::vector<std::size_t> sizes;
+  std::vector<Method> methods;
+  bool haveCgal;                   // CGAL is the reference of the ratios, else the listings
+  int cores;
+  std::size_t verdictN;            // the largest n below 10^8: the page's targets are judged there
+};
+
+Bench benchOf(const ch::Options& o) {
   const int reps = int(o.number("--reps", o.quick ? 3 : 5));
   std::vector<std::size_t> sizes = o.quick ? std::vector<std::size_t>{10000, 100000}
                                            : std::vector<std::size_t>{100000, 1000000};
@@ -340,7 +348,43 @@ int main(int argc, char** argv) {
   const bool haveCgal = false;
   std::cout << "CGAL not found at build time: ratios are to the corrected listings\n";
 #endif
+  const int cores = dt::defaultThreadCount();
+  std::size_t verdictN = 0;
+  for (std::size_t n : sizes)
+    if (n < 100000000) verdictN = n;
+  return {o, reps, sizes, methods, haveCgal, cores, verdictN};
+}
 
+const Family kFamilies[] = {Family::Uniform,   Family::Clustered,     Family::Grid,
+                            Family::Circle,    Family::Outlier,       Family::ClusterBeside,
+                            Family::LogRadius, Family::ExponentSpread, Family::Mixed300};
+// The margin a ratio of the threads to one thread may exceed 1 by.
+constexpr double kNoise = 1.05;
+// The targets the verdicts compare with, named once: the book cites these same values.
+constexpr double kSpeedBound = 2.0, kMemoryBound = 0.5, kFamilyBound = 1.2, kListingsBound = 4.0;
+
+// What the page's values gather over all sets and sizes.
+struct Tally {
+  // The threads (as the model chose) against one thread: the runs in which they beat it, the
+  // worst median ratio and where, the sets they lost on beyond the noise, the model's share of
+  // the wall time on uniform points.
+  std::size_t pairsBeat = 0, pairs = 0;
+  double worstTwo = 0, decisionShare = 0;
+  std::string worstTwoFamily, lostOn;
+  std::size_t worstTwoN = 0;
+  // For the page's targets: at the largest n where CGAL runs (not at 10^8; a family measured
+  // at one size only: there), the speed-up on uniform points, the worst time and peak ratios
+  // of the fast kernel, and the listings' worst time ratio (all to CGAL).
+  double uniformSpeedup = 0, worstFast = 0, worstPeak = 0, worstListings = 0;
+  std::string worstListingsFamily, winsOn, losesOn, worstPeakFamily;
+  long worstPeakN = 0, familiesCompared = 0;
+};
+
+// ---- the tables (table_bench, table_thread_model) ------------------------------------------
+
+ch::Table benchTable(const Bench& b) {
+  const int reps = b.reps;
+  const bool haveCgal = b.haveCgal;
   ch::Table t;
   t.caption = std::string("Kernels on the same points, one process per run, the kernels in turn, "
                           "median of ") +
@@ -356,8 +400,12 @@ int main(int argc, char** argv) {
               "same count"};
   // On the page, two tables of the same rows: fourteen columns were wider than the text column.
   t.htmlParts = {{0, 1, 2, 3, 4, 5, 6, 7, 8}, {0, 1, 2, 9, 10, 11, 12, 13}};
-  // The cost model's table: its forecast and decision on each set, against the measured ratios.
-  const int cores = dt::defaultThreadCount();
+  return t;
+}
+
+// The cost model's table: its forecast and decision on each set, against the measured ratios.
+ch::Table threadModelTable(const Bench& b) {
+  const int cores = b.cores;
   ch::Table mt;
   mt.caption = "The cost model of the parallel kernel on bench_kernels' sets (this run): the share "
                "of a sample's vertices on a triangle no slab can take, against uniform points "
@@ -369,152 +417,149 @@ int main(int argc, char** argv) {
   mt.header = {"points", "n", "cut share", "against uniform", "threads used", "reason",
                "forced / 1 thread", "forced min-max", "model / 1 thread", "model min-max",
                "model slower than 1 thread by over 5 %"};
-  // Over all sets and sizes: the runs in which the threads (as the model chose) beat one
-  // thread, and the worst median ratio; 'noise' is the margin a ratio may exceed 1 by.
-  const double noise = 1.05;
-  std::size_t pairsBeat = 0, pairs = 0;
-  double worstTwo = 0, decisionShare = 0;
-  std::string worstTwoFamily, lostOn;
-  std::size_t worstTwoN = 0;
-  const Family families[] = {Family::Uniform,        Family::Clustered, Family::Grid,
-                             Family::Circle,         Family::Outlier,   Family::ClusterBeside,
-                             Family::LogRadius,      Family::ExponentSpread, Family::Mixed300};
-  const std::size_t nFamilies = sizeof families / sizeof families[0];
-  // For the page's targets: at the largest n where CGAL runs (not at 10^8; a family measured
-  // at one size only: there), the speed-up on uniform points, the worst time and peak ratios
-  // of the fast kernel, and the listings' worst time ratio (all to CGAL).
-  double uniformSpeedup = 0, worstFast = 0, worstPeak = 0, worstListings = 0;
-  std::string worstListingsFamily, winsOn, losesOn, worstPeakFamily;
-  long worstPeakN = 0, familiesCompared = 0;
-  // The targets the verdicts compare with, named once: the book cites these same values.
-  const double speedBound = 2.0, memoryBound = 0.5, familyBound = 1.2, listingsBound = 4.0;
-  std::size_t verdictN = 0;
-  for (std::size_t n : sizes)
-    if (n < 100000000) verdictN = n;
-  std::uint64_t runs = 0;
-  for (std::size_t n : sizes) runs += n >= 100000000 ? 2 : nFamilies * methods.size();
-  ch::Progress progress("bench_kernels", runs);
-  std::uint64_t done = 0;
-  for (std::size_t n : sizes) {
-    for (Family f : families) {
-      if (familySize(f, n) < n && n != sizes.front()) continue;  // its one size: measured once
-      // 10^8: the fast kernels on uniform points only (CGAL and the listings would take long).
-      if (n >= 100000000 && f != Family::Uniform) continue;
-      std::vector<Method> ran;
-      for (Method m : methods)
-        if (n < 100000000 || m == Method::Fast || m == Method::FastParallel) ran.push_back(m);
-      // In turn: repetition k of every method before repetition k + 1 of any.
-      std::vector<Runs> runsOf(ran.size());
-      for (int k = 0; k < reps; ++k)
-        for (std::size_t j = 0; j < ran.size(); ++j) {
-          const Method m = ran[j];
-          // The listings at 10^6 and beyond take long, and everything at 10^7: once is enough.
-          const int r = (n >= 10000000 || (m == Method::Listings && n >= 1000000)) ? 1 : reps;
-          if (k >= r || (k > 0 && !runsOf[j].ok())) continue;
-          if (n >= 100000000) std::cout << "running " << methodName(m) << " at 10^8..." << std::endl;
-          // Validated once (the first repetition): the same points every time.
-          runsOf[j].all.push_back(runChild(m, f, familySize(f, n), k == 0));
-          if (k + 1 == std::min(r, reps) || !runsOf[j].ok()) progress.update(++done);
+  return mt;
+}
+
+// One set (a family at a size): the runs of each kernel in `ran`, in turn (repetition k of every
+// kernel before repetition k + 1 of any).
+std::vector<Runs> runSet(const Bench& b, Family f, std::size_t n, const std::vector<Method>& ran,
+                         ch::Progress& progress, std::uint64_t& done) {
+  const int reps = b.reps;
+  // In turn: repetition k of every method before repetition k + 1 of any.
+  std::vector<Runs> runsOf(ran.size());
+  for (int k = 0; k < reps; ++k)
+    for (std::size_t j = 0; j < ran.size(); ++j) {
+      const Method m = ran[j];
+      // The listings at 10^6 and beyond take long, and everything at 10^7: once is enough.
+      const int r = (n >= 10000000 || (m == Method::Listings && n >= 1000000)) ? 1 : reps;
+      if (k >= r || (k > 0 && !runsOf[j].ok())) continue;
+      if (n >= 100000000) std::cout << "running " << methodName(m) << " at 10^8..." << std::endl;
+      // Validated once (the first repetition): the same points every time.
+      runsOf[j].all.push_back(runChild(m, f, familySize(f, n), k == 0));
+      if (k + 1 == std::min(r, reps) || !runsOf[j].ok()) progress.update(++done);
+    }
+  return runsOf;
+}
+
+// The set's rows of table_bench (medians, ratios to the reference) and the targets' tallies.
+void addBenchRows(const Bench& b, Family f, std::size_t n, const std::vector<Method>& ran,
+                  const std::vector<Runs>& runsOf, ch::Table& t, Tally& tally) {
+  const bool haveCgal = b.haveCgal;
+  const std::size_t verdictN = b.verdictN;
+  std::vector<Measure> res;
+  for (const Runs& r : runsOf) res.push_back(r.ok() ? r.summary() : r.all.back());
+  // The reference: CGAL if present, else the listings; none at 10^8 (neither runs there).
+  const Measure* base = nullptr;
+  for (std::size_t k = 0; k < ran.size(); ++k)
+    if (ran[k] == (haveCgal ? Method::Cgal : Method::Listings)) base = &res[k];
+  const bool ratios = base && base->ok;
+  for (std::size_t k = 0; k < ran.size(); ++k) {
+    const Measure& x = res[k];
+    bool same = x.ok;
+    for (const Measure& y : res) same = same && y.ok && y.triangles == x.triangles;
+    t.add({familyName(f), std::to_string(x.points), methodName(ran[k]),
+           x.ok ? ch::fmt("%.3f", x.seconds) : "failed",
+           x.ok ? spread(runsOf[k].cpu(), "%.3f") : "-",
+           x.ok && ratios ? ch::fmt("%.2f", x.seconds / base->seconds) : "-",
+           x.ok ? ch::fmt("%.3f", x.wall) : "-",
+           x.ok ? spread(runsOf[k].wall(), "%.3f") : "-",
+           x.ok && ratios ? ch::fmt("%.2f", x.wall / base->wall) : "-",
+           ch::fmt("%.0f", double(x.peakKB) / 1024),
+           ratios && base->peakKB > 0 ? ch::fmt("%.2f", double(x.peakKB) / double(base->peakKB))
+                                      : "-",
+           isFast(ran[k]) && x.ok ? std::to_string(x.threadsUsed) : "-",
+           std::to_string(x.triangles), same ? "yes" : "NO"});
+    const bool lastSize = n == verdictN || familySize(f, verdictN) < verdictN;
+    if (haveCgal && lastSize && x.ok && ratios && ran[k] != Method::Cgal) {
+      const double tr = x.seconds / base->seconds;
+      if (ran[k] == Method::Fast) {
+        std::string& list = tr < 1.0 ? tally.winsOn : tally.losesOn;
+        list += std::string(list.empty() ? "" : ", ") + familyName(f);
+        if (f == Family::Uniform) tally.uniformSpeedup = base->seconds / x.seconds;
+        tally.worstFast = std::max(tally.worstFast, tr);
+        ++tally.familiesCompared;
+        if (base->peakKB > 0 && double(x.peakKB) / double(base->peakKB) > tally.worstPeak) {
+          tally.worstPeak = double(x.peakKB) / double(base->peakKB);
+          tally.worstPeakFamily = familyName(f);
+          tally.worstPeakN = long(x.points);
         }
-      std::vector<Measure> res;
-      for (const Runs& r : runsOf) res.push_back(r.ok() ? r.summary() : r.all.back());
-      // The reference: CGAL if present, else the listings; none at 10^8 (neither runs there).
-      const Measure* base = nullptr;
-      for (std::size_t k = 0; k < ran.size(); ++k)
-        if (ran[k] == (haveCgal ? Method::Cgal : Method::Listings)) base = &res[k];
-      const bool ratios = base && base->ok;
-      for (std::size_t k = 0; k < ran.size(); ++k) {
-        const Measure& x = res[k];
-        bool same = x.ok;
-        for (const Measure& y : res) same = same && y.ok && y.triangles == x.triangles;
-        t.add({familyName(f), std::to_string(x.points), methodName(ran[k]),
-               x.ok ? ch::fmt("%.3f", x.seconds) : "failed",
-               x.ok ? spread(runsOf[k].cpu(), "%.3f") : "-",
-               x.ok && ratios ? ch::fmt("%.2f", x.seconds / base->seconds) : "-",
-               x.ok ? ch::fmt("%.3f", x.wall) : "-",
-               x.ok ? spread(runsOf[k].wall(), "%.3f") : "-",
-               x.ok && ratios ? ch::fmt("%.2f", x.wall / base->wall) : "-",
-               ch::fmt("%.0f", double(x.peakKB) / 1024),
-               ratios && base->peakKB > 0 ? ch::fmt("%.2f", double(x.peakKB) / double(base->peakKB))
-                                          : "-",
-               isFast(ran[k]) && x.ok ? std::to_string(x.threadsUsed) : "-",
-               std::to_string(x.triangles), same ? "yes" : "NO"});
-        const bool lastSize = n == verdictN || familySize(f, verdictN) < verdictN;
-        if (haveCgal && lastSize && x.ok && ratios && ran[k] != Method::Cgal) {
-          const double tr = x.seconds / base->seconds;
-          if (ran[k] == Method::Fast) {
-            std::string& list = tr < 1.0 ? winsOn : losesOn;
-            list += std::string(list.empty() ? "" : ", ") + familyName(f);
-            if (f == Family::Uniform) uniformSpeedup = base->seconds / x.seconds;
-            worstFast = std::max(worstFast, tr);
-            ++familiesCompared;
-            if (base->peakKB > 0 && double(x.peakKB) / double(base->peakKB) > worstPeak) {
-              worstPeak = double(x.peakKB) / double(base->peakKB);
-              worstPeakFamily = familyName(f);
-              worstPeakN = long(x.points);
-            }
-          } else if (ran[k] == Method::Listings && tr > worstListings) {
-            worstListings = tr;
-            worstListingsFamily = familyName(f);
-          }
-        }
-        std::cout << familyName(f) << " n=" << x.points << " " << methodName(ran[k]) << ": "
-                  << ch::fmt("%.3f s CPU, %.3f s wall, %.0f MB", x.seconds, x.wall,
-                             double(x.peakKB) / 1024)
-                  << "\n";
-      }
-      // The threads against one thread, run by run: as the model chose, and forced.
-      const Runs *one = nullptr, *model = nullptr, *forced = nullptr;
-      for (std::size_t k = 0; k < ran.size(); ++k) {
-        if (!runsOf[k].ok()) continue;
-        if (ran[k] == Method::Fast) one = &runsOf[k];
-        if (ran[k] == Method::FastParallel) model = &runsOf[k];
-        if (ran[k] == Method::FastForced) forced = &runsOf[k];
-      }
-      if (one && model) {
-        const std::vector<double> mr = pairedRatios(*model, *one);
-        const std::vector<double> fr = forced ? pairedRatios(*forced, *one) : std::vector<double>{};
-        for (double r : mr) pairsBeat += r < 1.0;
-        pairs += mr.size();
-        const double med = median(mr);
-        if (med > worstTwo) {
-          worstTwo = med;
-          worstTwoFamily = familyName(f);
-          worstTwoN = familySize(f, n);
-        }
-        if (med > noise)
-          lostOn += std::string(lostOn.empty() ? "" : ", ") + familyName(f) + " at " +
-                    std::to_string(familySize(f, n));
-        const Measure& d = model->all.front();  // the decision is the same in every run
-        if (f == Family::Uniform && n == verdictN)
-          decisionShare = median([&] {
-            std::vector<double> v;
-            for (const Measure& x : model->all) v.push_back(x.decisionSeconds / x.wall);
-            return v;
-          }());
-        mt.add({familyName(f), std::to_string(familySize(f, n)),
-                d.cutShare > 0 ? ch::fmt("%.3f", d.cutShare) : "-",
-                d.cutShare > 0 ? ch::fmt("%.2f", d.cutRatio) : "-",
-                std::to_string(d.threadsUsed), dt::parallelReasonName(d.reason),
-                fr.empty() ? "-" : ch::fmt("%.2f", median(fr)), spread(fr, "%.2f"),
-                ch::fmt("%.2f", med), spread(mr, "%.2f"), med > noise ? "yes" : "no"});
+      } else if (ran[k] == Method::Listings && tr > tally.worstListings) {
+        tally.worstListings = tr;
+        tally.worstListingsFamily = familyName(f);
       }
     }
+    std::cout << familyName(f) << " n=" << x.points << " " << methodName(ran[k]) << ": "
+              << ch::fmt("%.3f s CPU, %.3f s wall, %.0f MB", x.seconds, x.wall,
+                         double(x.peakKB) / 1024)
+              << "\n";
   }
+}
+
+// The set's row of table_thread_model: the threads against one thread, run by run, as the model
+// chose and forced.
+void addThreadModelRow(const Bench& b, Family f, std::size_t n, const std::vector<Method>& ran,
+                       const std::vector<Runs>& runsOf, ch::Table& mt, Tally& tally) {
+  const std::size_t verdictN = b.verdictN;
+  const double noise = kNoise;
+  const Runs *one = nullptr, *model = nullptr, *forced = nullptr;
+  for (std::size_t k = 0; k < ran.size(); ++k) {
+    if (!runsOf[k].ok()) continue;
+    if (ran[k] == Method::Fast) one = &runsOf[k];
+    if (ran[k] == Method::FastParallel) model = &runsOf[k];
+    if (ran[k] == Method::FastForced) forced = &runsOf[k];
+  }
+  if (one && model) {
+    const std::vector<double> mr = pairedRatios(*model, *one);
+    const std::vector<double> fr = forced ? pairedRatios(*forced, *one) : std::vector<double>{};
+    for (double r : mr) tally.pairsBeat += r < 1.0;
+    tally.pairs += mr.size();
+    const double med = median(mr);
+    if (med > tally.worstTwo) {
+      tally.worstTwo = med;
+      tally.worstTwoFamily = familyName(f);
+      tally.worstTwoN = familySize(f, n);
+    }
+    if (med > noise)
+      tally.lostOn += std::string(tally.lostOn.empty() ? "" : ", ") + familyName(f) + " at " +
+                std::to_string(familySize(f, n));
+    const Measure& d = model->all.front();  // the decision is the same in every run
+    if (f == Family::Uniform && n == verdictN)
+      tally.decisionShare = median([&] {
+        std::vector<double> v;
+        for (const Measure& x : model->all) v.push_back(x.decisionSeconds / x.wall);
+        return v;
+      }());
+    mt.add({familyName(f), std::to_string(familySize(f, n)),
+            d.cutShare > 0 ? ch::fmt("%.3f", d.cutShare) : "-",
+            d.cutShare > 0 ? ch::fmt("%.2f", d.cutRatio) : "-",
+            std::to_string(d.threadsUsed), dt::parallelReasonName(d.reason),
+            fr.empty() ? "-" : ch::fmt("%.2f", median(fr)), spread(fr, "%.2f"),
+            ch::fmt("%.2f", med), spread(mr, "%.2f"), med > noise ? "yes" : "no"});
+  }
+}
+
   // The two rows of the threads: how often they beat one thread, and their worst median ratio.
+void addThreadRows(ch::Table& t, const Tally& tally) {
   const std::string threadsName = methodName(Method::FastParallel);
   t.add({"all sets", "all sizes", threadsName + ": runs faster than 1 thread (wall)", "-", "-",
          "-", "-", "-",
-         pairs ? ch::fmt("%zu", pairsBeat) + " of " + std::to_string(pairs) : "-", "-", "-", "-",
+         tally.pairs ? ch::fmt("%zu", tally.pairsBeat) + " of " + std::to_string(tally.pairs) : "-", "-", "-", "-",
          "-", "-"});
   t.add({"all sets", "all sizes", threadsName + ": worst median wall ratio to 1 thread", "-", "-",
          "-", "-", "-",
-         pairs ? ch::fmt("%.2f", worstTwo) + " (" + worstTwoFamily + ", " +
-                     std::to_string(worstTwoN) + ")"
+         tally.pairs ? ch::fmt("%.2f", tally.worstTwo) + " (" + tally.worstTwoFamily + ", " +
+                     std::to_string(tally.worstTwoN) + ")"
                : "-",
          "-", "-", "-", "-", "-"});
-  t.emit(o, "table_bench");
-  mt.emit(o, "table_thread_model");
+}
+
+void writeKernelValues(const Bench& b, const Tally& tally) {
+  const ch::Options& o = b.o;
+  const int reps = b.reps, cores = b.cores;
+  const std::size_t verdictN = b.verdictN;
+  const bool haveCgal = b.haveCgal;
+  const double noise = kNoise, speedBound = kSpeedBound, memoryBound = kMemoryBound,
+               familyBound = kFamilyBound, listingsBound = kListingsBound;
   ch::Values v(o, "bench_kernels");
   v.set("kernel.n", std::to_string(verdictN));
   v.num("kernel.speed_bound", speedBound, "%g");
@@ -531,32 +576,32 @@ int main(int argc, char** argv) {
         dt::forecastSplit(makePoints(Family::Uniform, 4096), std::max(2, cores)).uniformCutShare,
         "%.3f");
   v.num("threads.noise_percent", 100 * (noise - 1), "%.0f");
-  v.set("threads.beat", std::to_string(pairsBeat));
-  v.set("threads.pairs", std::to_string(pairs));
-  v.num("threads.worst_ratio", worstTwo, "%.2f");
-  v.set("threads.worst_family", worstTwoFamily.empty() ? "none" : worstTwoFamily);
-  v.set("threads.worst_n", std::to_string(worstTwoN));
-  v.num("threads.decision_percent", 100 * decisionShare, "%.2f");
+  v.set("threads.beat", std::to_string(tally.pairsBeat));
+  v.set("threads.pairs", std::to_string(tally.pairs));
+  v.num("threads.worst_ratio", tally.worstTwo, "%.2f");
+  v.set("threads.worst_family", tally.worstTwoFamily.empty() ? "none" : tally.worstTwoFamily);
+  v.set("threads.worst_n", std::to_string(tally.worstTwoN));
+  v.num("threads.decision_percent", 100 * tally.decisionShare, "%.2f");
   v.set("threads.decision_n", std::to_string(verdictN));
-  v.verdict("threads.lost_verdict", lostOn.empty(),
+  v.verdict("threads.lost_verdict", tally.lostOn.empty(),
             "never slower than one thread beyond the noise margin",
             "slower than one thread beyond the noise margin");
-  v.set("threads.lost_on", lostOn.empty() ? "none" : lostOn);
-  if (haveCgal && uniformSpeedup > 0) {
-    v.num("kernel.uniform_speedup", uniformSpeedup, "%.2f");
-    v.verdict("kernel.speed_target", uniformSpeedup >= speedBound, "met", "missed");
-    v.num("kernel.worst_peak", worstPeak, "%.2f");
-    v.set("kernel.worst_peak_family", worstPeakFamily);
-    v.set("kernel.worst_peak_n", std::to_string(worstPeakN));
-    v.set("kernel.families", std::to_string(familiesCompared));
-    v.verdict("kernel.memory_target", worstPeak <= memoryBound, "met", "missed");
-    v.num("kernel.worst_time", worstFast, "%.2f");
-    v.verdict("kernel.family_target", worstFast <= familyBound, "met", "missed");
-    v.num("kernel.worst_listings", worstListings, "%.2f");
-    v.set("kernel.worst_listings_family", worstListingsFamily);
-    v.verdict("kernel.listings_target", worstListings <= listingsBound, "met", "missed");
-    v.set("kernel.wins_on", winsOn.empty() ? "none" : winsOn);
-    v.set("kernel.loses_on", losesOn.empty() ? "none" : losesOn);
+  v.set("threads.lost_on", tally.lostOn.empty() ? "none" : tally.lostOn);
+  if (haveCgal && tally.uniformSpeedup > 0) {
+    v.num("kernel.uniform_speedup", tally.uniformSpeedup, "%.2f");
+    v.verdict("kernel.speed_target", tally.uniformSpeedup >= speedBound, "met", "missed");
+    v.num("kernel.worst_peak", tally.worstPeak, "%.2f");
+    v.set("kernel.worst_peak_family", tally.worstPeakFamily);
+    v.set("kernel.worst_peak_n", std::to_string(tally.worstPeakN));
+    v.set("kernel.families", std::to_string(tally.familiesCompared));
+    v.verdict("kernel.memory_target", tally.worstPeak <= memoryBound, "met", "missed");
+    v.num("kernel.worst_time", tally.worstFast, "%.2f");
+    v.verdict("kernel.family_target", tally.worstFast <= familyBound, "met", "missed");
+    v.num("kernel.worst_listings", tally.worstListings, "%.2f");
+    v.set("kernel.worst_listings_family", tally.worstListingsFamily);
+    v.verdict("kernel.listings_target", tally.worstListings <= listingsBound, "met", "missed");
+    v.set("kernel.wins_on", tally.winsOn.empty() ? "none" : tally.winsOn);
+    v.set("kernel.loses_on", tally.losesOn.empty() ? "none" : tally.losesOn);
   } else {
     for (const char* k : {"kernel.uniform_speedup", "kernel.worst_peak", "kernel.worst_time",
                           "kernel.worst_listings", "kernel.worst_listings_family",
@@ -568,5 +613,40 @@ int main(int argc, char** argv) {
       v.set(k, "not measured");
   }
   v.write();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const ch::Program p{"bench_kernels",
+                      "The kernels against CGAL on nine point families (no figure); --max-n 10000000 adds 10^7, 100000000 adds 10^8.",
+                      1000, 100000000, {},
+                      {{"--reps", "N", "runs per kernel, the median kept (default 5, 3 with --quick)", 1, 1000}}};
+  const ch::Options o = ch::parseOptions(argc, argv, p);
+  const Bench b = benchOf(o);
+  ch::Table t = benchTable(b), mt = threadModelTable(b);
+  Tally tally;
+  const std::size_t nFamilies = std::size(kFamilies);
+  std::uint64_t runs = 0;
+  for (std::size_t n : b.sizes) runs += n >= 100000000 ? 2 : nFamilies * b.methods.size();
+  ch::Progress progress("bench_kernels", runs);
+  std::uint64_t done = 0;
+  for (std::size_t n : b.sizes) {
+    for (Family f : kFamilies) {
+      if (familySize(f, n) < n && n != b.sizes.front()) continue;  // its one size: measured once
+      // 10^8: the fast kernels on uniform points only (CGAL and the listings would take long).
+      if (n >= 100000000 && f != Family::Uniform) continue;
+      std::vector<Method> ran;
+      for (Method m : b.methods)
+        if (n < 100000000 || m == Method::Fast || m == Method::FastParallel) ran.push_back(m);
+      const std::vector<Runs> runsOf = runSet(b, f, n, ran, progress, done);
+      addBenchRows(b, f, n, ran, runsOf, t, tally);
+      addThreadModelRow(b, f, n, ran, runsOf, mt, tally);
+    }
+  }
+  addThreadRows(t, tally);
+  t.emit(o, "table_bench");
+  mt.emit(o, "table_thread_model");
+  writeKernelValues(b, tally);
   return 0;
 }
