@@ -251,100 +251,183 @@ void figure22(const ch::Options& o) {
 
 // ---- Figures 2.1, 2.3, 2.4: one point set, one new point ----------------------------------
 
-void figures21to24(const ch::Options& o) {
-  // 15 points: a 4 x 4 grid without one corner, jittered, so that DT_n has triangles of
-  // reasonable shapes. p_{n+1}: among 3000 random candidates inside the hull, one whose proof
-  // chain (the cavity triangles met by the segment from a cavity vertex p3 to p_{n+1}) has the
-  // shape of the notes' Figure 2.3, p2p3p4 -> p2p4p5 -> p2p5p1 -> p1p5p6, with the circles C_I of
-  // p2p3p4 and C_J of p2p4p5 well apart (so that (b) shows two distinct circles), and a cavity
-  // of about 6 triangles. The jitter seeds 2101..2120 are tried; the best candidate wins.
-  const std::size_t n = 15;
-  std::unique_ptr<dt::Triangulation> Tp;
+// The example the three figures share: DT_n of 15 points, the new point p_{n+1} (not yet
+// inserted), its cavity C and the cavity's boundary sigma (counter-clockwise).
+struct KernelExample {
+  std::unique_ptr<dt::Triangulation> T;
   std::vector<dt::Vertex*> S;
-  double bestX = 0, bestY = 0, bestScore = -1e9;
+  dt::Vertex* p = nullptr;
+  std::vector<dt::Face*> C;
+  std::vector<const dt::Vertex*> sigma;
+  std::vector<ch::Seg> dtnSegs;  // DT_n's edges, each once
+};
+
+// Panel k (0 or 1) of Figure 2.1: the points of S with a margin of 4 percent.
+ch::Panel figure21Panel(const std::vector<dt::Vertex*>& S, int k) {
+  double bx0 = 1e300, bx1 = -1e300, by0 = 1e300, by1 = -1e300;
+  for (const dt::Vertex* v : S)
+    bx0 = std::min(bx0, v->x), bx1 = std::max(bx1, v->x), by0 = std::min(by0, v->y), by1 = std::max(by1, v->y);
+  const double m = 0.04 * (bx1 - bx0);
+  return ch::cellPanel(ch::figureSize("fig2_1"), 1, 2, k, bx0 - m, bx1 + m, by0 - m, by1 + m);
+}
+
+// DT_n of the jittered grid of seed `seed`: 15 points, a 4 x 4 grid without one corner,
+// jittered, so that DT_n has triangles of reasonable shapes.
+void jitteredGrid(unsigned seed, KernelExample& ex) {
+  XY pts;
+  std::mt19937_64 jr(seed);
+  std::uniform_real_distribution<double> j(-0.11, 0.11);
+  for (int a = 0; a < 4; ++a)
+    for (int b = 0; b < 4; ++b)
+      if (a + b < 6) pts.push_back(0.12 + 0.25 * a + j(jr)), pts.push_back(0.12 + 0.25 * b + j(jr));
+  ex.T = std::make_unique<dt::Triangulation>();
+  ex.S.clear();
+  for (std::size_t i = 0; i < pts.size() / 2; ++i) ex.S.push_back(ex.T->addVertex(pts[2 * i], pts[2 * i + 1], long(i + 1)));
+  dt::delaunayTrglHull(*ex.T, ex.S, dt::StartRule::LastCavity);
+  const dt::PlainMesh m = dt::extractMesh(*ex.T, false);
+  ex.dtnSegs = ch::triangleSegs(m.xy, m.tri);
+}
+
+// The smallest angle of a triangle, degrees.
+double minAngleDeg(const dt::Face* f) {
+  double m = 180;
+  for (int k = 0; k < 3; ++k) {
+    const dt::Vertex *a = f->V[k], *b = f->V[(k + 1) % 3], *c = f->V[(k + 2) % 3];
+    const double u = std::atan2(std::fabs((b->x - a->x) * (c->y - a->y) - (b->y - a->y) * (c->x - a->x)),
+                                (b->x - a->x) * (c->x - a->x) + (b->y - a->y) * (c->y - a->y));
+    m = std::min(m, u * 180 / M_PI);
+  }
+  return m;
+}
+
+// The example, chosen by score (deterministic): the jitter seeds 2201..2300, and for each 3000
+// random candidates for p_{n+1} inside the hull and four in each triangle. What it must show, as numbers:
+// - Figure 2.3: a proof chain (the cavity triangles met by the segment from a cavity vertex p3
+//   to p_{n+1}) of the notes' shape p2p3p4 -> p2p4p5 -> p2p5p1 -> p1p5p6 (100), with the circles
+//   C_I of p2p3p4 and C_J of p2p4p5 well apart: centres a quarter radius apart or more (40),
+//   and 16 x their spread (at most 8);
+// - Figure 2.1's focus rule: p_{n+1} at least 3.5 marker radii (px, as drawn) from every edge
+//   of DT_n (50), more room counted up to 6 radii;
+// - no cavity triangle with an angle under 15 degrees (30): a triangle drawn to be seen is
+//   no sliver; every circle of Figure 2.1 (b) inside its view (20);
+// - a cavity of about 6 triangles (minus the difference).
+KernelExample kernelExample() {
+  KernelExample ex;
+  const double rp = ch::pointRadius(ch::figureSize("fig2_1"), 1.6);  // p_{n+1}'s marker, px
+  double bestX = 0, bestY = 0, bestScore = -1e9, bestMargin = 0;
   unsigned bestSeed = 0;
-  for (unsigned pass = 0; pass < 2; ++pass)
-  for (unsigned seed = pass ? bestSeed : 2101; seed < (pass ? bestSeed + 1 : 2121); ++seed) {
-    XY pts;
-    std::mt19937_64 jr(seed);
-    std::uniform_real_distribution<double> j(-0.11, 0.11);
-    for (int a = 0; a < 4; ++a)
-      for (int b = 0; b < 4; ++b)
-        if (a + b < 6) pts.push_back(0.12 + 0.25 * a + j(jr)), pts.push_back(0.12 + 0.25 * b + j(jr));
-    Tp = std::make_unique<dt::Triangulation>();
-    S.clear();
-    for (std::size_t i = 0; i < n; ++i) S.push_back(Tp->addVertex(pts[2 * i], pts[2 * i + 1], long(i + 1)));
-    dt::delaunayTrglHull(*Tp, S, dt::StartRule::LastCavity);
+  for (unsigned seed = 2201; seed < 2301; ++seed) {
+    jitteredGrid(seed, ex);
+    const ch::Panel pa = figure21Panel(ex.S, 0);
+    // The candidates: 3000 random points, then each triangle's incentre and three points a
+    // quarter of the way from it to the corners (where a point has the most room).
+    std::vector<std::pair<double, double>> cand;
     std::mt19937_64 rng(2102);
     std::uniform_real_distribution<double> u(0.15, 0.85);
-    for (int c = 0; c < 3000 && !pass; ++c) {  // the second pass only rebuilds DT_n
-      dt::Vertex p(u(rng), u(rng));
-      std::vector<dt::Face*> C = dt::conflictFaces(*Tp, &p);
+    for (int c = 0; c < 3000; ++c) cand.push_back({u(rng), u(rng)});
+    for (const dt::Face& f : ex.T->faces()) {
+      if (f.isGhost()) continue;
+      double w[3], sw = 0, ix = 0, iy = 0;
+      for (int k = 0; k < 3; ++k) {
+        const dt::Vertex *b = f.V[(k + 1) % 3], *c = f.V[(k + 2) % 3];
+        sw += w[k] = std::hypot(b->x - c->x, b->y - c->y);
+      }
+      for (int k = 0; k < 3; ++k) ix += w[k] * f.V[k]->x / sw, iy += w[k] * f.V[k]->y / sw;
+      cand.push_back({ix, iy});
+      for (int k = 0; k < 3; ++k) cand.push_back({ix + 0.25 * (f.V[k]->x - ix), iy + 0.25 * (f.V[k]->y - iy)});
+    }
+    for (const auto& [cx, cy] : cand) {
+      dt::Vertex p(cx, cy);
+      std::vector<dt::Face*> C = dt::conflictFaces(*ex.T, &p);
       bool ghost = C.empty();
       for (const dt::Face* f : C) ghost = ghost || f->isGhost();
       if (ghost || C.size() > 8) continue;
+      double margin = 1e300;  // px
+      for (const ch::Seg& s : ex.dtnSegs) margin = std::min(margin, ch::segDistance(s, p.x, p.y) * pa.scale());
+      double angle = 180;  // the cavity's smallest angle, degrees
+      bool inView = true;  // every circle of Figure 2.1 (b) inside the view
+      for (const dt::Face* f : C) {
+        angle = std::min(angle, minAngleDeg(f));
+        const Circle c = circumcircle(f->V[0], f->V[1], f->V[2]);
+        inView = inView && c.x - c.r > pa.x0 && c.x + c.r < pa.x1 && c.y - c.r > pa.y0 && c.y + c.r < pa.y1;
+      }
+      const double room = (margin >= 3.2 * rp ? 50.0 : 0.0) + std::min(margin / rp, 6.0) + (angle >= 15 ? 30.0 : 0.0) +
+                          (inView ? 20.0 : 0.0);
+      if (room + 152 < bestScore) continue;  // the chain's terms add at most 152: no need to walk
       for (dt::Face* f : C)
         for (const dt::Vertex* a : f->V) {
           const std::vector<dt::Face*> ch = chainTo(f, a, &p, C);
           const double spread = ch.size() >= 2 ? std::min(widestStep({ch[0], ch[1]}).second, 0.5) : 0;
-          const double score = (notesNames(ch).empty() ? 0.0 : 100.0) + double(ch.size()) -
-                               std::fabs(double(C.size()) - 6) + 16 * spread;
-          if (!pass && score > bestScore) bestScore = score, bestX = p.x, bestY = p.y, bestSeed = seed;
+          const double score = (notesNames(ch).empty() ? 0.0 : 100.0) + room + (spread >= 0.25 ? 40.0 : 0.0) +
+                               double(ch.size()) - std::fabs(double(C.size()) - 6) + 16 * spread;
+          if (score > bestScore) bestScore = score, bestX = p.x, bestY = p.y, bestSeed = seed, bestMargin = margin;
         }
     }
   }
-  std::cout << "Figures 2.1-2.4: jitter seed " << bestSeed << "\n";
-  dt::Triangulation& T = *Tp;
-  dt::Vertex* p = T.addVertex(bestX, bestY, long(n + 1));
-  std::vector<dt::Face*> C = dt::conflictFaces(T, p);
-  const dt::CavityReport rep = dt::checkCavity({C.begin(), C.end()}, p);
-  std::cout << "Figures 2.1, 2.3, 2.4: n = " << n << ", p_{n+1} = (" << bestX << ", " << bestY
+  jitteredGrid(bestSeed, ex);
+  std::cout << "Figures 2.1-2.4: jitter seed " << bestSeed << ", score " << bestScore << "; p_{n+1} is "
+            << ch::fmt("%.1f", bestMargin / rp) << " marker radii from every edge of DT_n (the focus rule: 3)\n";
+  if (bestMargin < 3 * rp) std::cout << "Figures 2.1-2.4: no candidate keeps p_{n+1} 3 marker radii from the edges\n";
+  ex.p = ex.T->addVertex(bestX, bestY, long(ex.S.size() + 1));
+  ex.C = dt::conflictFaces(*ex.T, ex.p);
+  const dt::CavityReport rep = dt::checkCavity({ex.C.begin(), ex.C.end()}, ex.p);
+  std::cout << "Figures 2.1, 2.3, 2.4: n = " << ex.S.size() << ", p_{n+1} = (" << bestX << ", " << bestY
             << "), |C| = " << rep.faces << ", |bnd| = " << rep.boundaryEdges
             << ", Proposition 2.1.1 and Property 2.1.1 hold: " << (rep.ok ? "yes" : rep.error) << "\n";
-  const dt::PlainMesh before = dt::extractMesh(T, false);
-  const std::vector<const dt::Vertex*> sigma = boundaryCycle(C);
+  ex.sigma = boundaryCycle(ex.C);
+  return ex;
+}
 
-  // Figure 2.1.
+// Figure 2.1: DT_n and p_{n+1}; the cavity with its circumcircles.
+void figure21(const ch::Options& o, const KernelExample& ex) {
+  const std::vector<dt::Vertex*>& S = ex.S;
+  const dt::Vertex* p = ex.p;
+  const std::vector<const dt::Vertex*>& sigma = ex.sigma;
   std::string ptsText, circles, cavity;
   for (const dt::Vertex* v : S) ptsText += num(v->x) + " " + num(v->y) + "\n";
-  for (const dt::Face* f : C) circles += circleLine(circumcircle(f->V[0], f->V[1], f->V[2]));
+  // One block per circle (gnuplot "index"), so that each gets its own dash pattern.
+  for (const dt::Face* f : ex.C) circles += (circles.empty() ? "" : "\n\n") + circleLine(circumcircle(f->V[0], f->V[1], f->V[2]));
   for (std::size_t i = 0; i <= sigma.size(); ++i)
     cavity += num(sigma[i % sigma.size()]->x) + " " + num(sigma[i % sigma.size()]->y) + "\n";
-  const std::vector<ch::Seg> dtnSegs = ch::triangleSegs(before.xy, before.tri);
   {
     // Both panels show one view, laid out here in pixels (fig2_1_view.gp), so the label of
     // p_{n+1} is placed once, clear of everything either panel draws: the edges, the cavity's
-    // boundary and circles, the points.
-    double bx0 = 1e300, bx1 = -1e300, by0 = 1e300, by1 = -1e300;
-    for (const dt::Vertex* v : S) bx0 = std::min(bx0, v->x), bx1 = std::max(bx1, v->x), by0 = std::min(by0, v->y), by1 = std::max(by1, v->y);
-    const double m = 0.04 * (bx1 - bx0);
+    // boundary and circles, the points; attached to p_{n+1} (no edge between them).
     const ch::FigureSize fs = ch::figureSize("fig2_1");
-    const ch::Panel pa = ch::cellPanel(fs, 1, 2, 0, bx0 - m, bx1 + m, by0 - m, by1 + m);
-    const ch::Panel pb = ch::cellPanel(fs, 1, 2, 1, bx0 - m, bx1 + m, by0 - m, by1 + m);
+    const ch::Panel pa = figure21Panel(S, 0), pb = figure21Panel(S, 1);
     const double lw = std::max(1.5, fs.em / 18);
     ch::LabelPlacer placer(pa, fs.em);
-    placer.segments(dtnSegs, 1.5 * lw);
+    placer.segments(ex.dtnSegs, 1.5 * lw);
     for (std::size_t i = 0; i < sigma.size(); ++i) {
       const dt::Vertex *a = sigma[i], *b = sigma[(i + 1) % sigma.size()];
       placer.segment(a->x, a->y, b->x, b->y, 3 * lw);
     }
-    for (const dt::Face* f : C) {
+    for (const dt::Face* f : ex.C) {
       const Circle c = circumcircle(f->V[0], f->V[1], f->V[2]);
       placer.circle(c.x, c.y, c.r, 1.5 * lw);
     }
     for (const dt::Vertex* v : S) placer.marker(v->x, v->y, ch::pointRadius(fs, 1.0));
     placer.marker(p->x, p->y, ch::pointRadius(fs, 1.6));
     const std::string name = ch::mathText("p_{n+1}");
-    const auto [lx, ly] = placer.place(p->x, p->y, name);
+    const auto [lx, ly] = placer.placeAttached(p->x, p->y, name, ex.dtnSegs, NAN, 4);
     ch::writeOut(o, "fig2_1_p.dat", num(p->x) + " " + num(p->y) + " " + num(lx) + " " + num(ly) + " " + ch::quoted(name) + "\n");
-    ch::writeOut(o, "fig2_1_view.gp", "P1 = \"" + pa.gnuplot() + "\"\nP2 = \"" + pb.gnuplot() + "\"\n");
+    ch::writeOut(o, "fig2_1_view.gp", "P1 = \"" + pa.gnuplot() + "\"\nP2 = \"" + pb.gnuplot() + "\"\n" +
+                                          ch::fmt("NC = %zu\n", ex.C.size()));
   }
-  ch::writeOut(o, "fig2_1_dtn.dat", ch::gnuplotSegs(dtnSegs));
+  ch::writeOut(o, "fig2_1_dtn.dat", ch::gnuplotSegs(ex.dtnSegs));
   ch::writeOut(o, "fig2_1_points.dat", ptsText);
   ch::writeOut(o, "fig2_1_cavity.dat", cavity);
   ch::writeOut(o, "fig2_1_circles.dat", circles);
   ch::runGnuplot(o, "fig2_1.gp");
+}
 
+// Figure 2.3: the proof of Proposition 2.1.1 in the notes' names.
+void figure23(const ch::Options& o, const KernelExample& ex) {
+  const std::vector<dt::Vertex*>& S = ex.S;
+  const dt::Vertex* p = ex.p;
+  const std::vector<dt::Face*>& C = ex.C;
+  const std::vector<const dt::Vertex*>& sigma = ex.sigma;
+  const std::vector<ch::Seg>& dtnSegs = ex.dtnSegs;
   // Figure 2.3, in the notes' names: the chain p2p3p4 -> p2p4p5 -> p2p5p1 -> p1p5p6 met by the
   // segment p3 p_{n+1}, and its first step: C_I (circle of p2p3p4) beyond p2p4 lies in C_J
   // (circle of p2p4p5).
@@ -469,7 +552,16 @@ void figures21to24(const ch::Options& o) {
   ch::writeOut(o, "fig2_3_steplabels.dat", stepLabels);
   ch::writeOut(o, "fig2_3_view.gp", "PA = \"" + pa.gnuplot() + "\"\nPB = \"" + pb.gnuplot() + "\"\n");
   ch::runGnuplot(o, "fig2_3.gp");
+}
 
+// Figure 2.4: the Delaunay ball, an outside triangle and a new one with their circles. Inserts
+// p_{n+1} into the example's triangulation (so it comes last).
+void figure24(const ch::Options& o, KernelExample& ex) {
+  dt::Triangulation& T = *ex.T;
+  const std::vector<dt::Vertex*>& S = ex.S;
+  dt::Vertex* p = ex.p;
+  const std::vector<dt::Face*>& C = ex.C;
+  const std::vector<const dt::Vertex*>& sigma = ex.sigma;
   // Figure 2.4: insert p, then pick the boundary edge sigma_i sigma_{i+1} whose outside triangle
   // and new triangle have the smallest circles (so both fit in the picture).
   std::map<std::pair<const dt::Vertex*, const dt::Vertex*>, const dt::Face*> outsideOf;
@@ -626,7 +718,12 @@ int main(int argc, char** argv) {
                       10000000, {"fig2_1", "fig2_2", "fig2_3", "fig2_4"}, {}};
   return ch::runMain(argc, argv, p, [](const ch::Options& o) {
     if (o.wants("fig2_2")) figure22(o);
-    if (o.wants("fig2_1") || o.wants("fig2_3") || o.wants("fig2_4")) figures21to24(o);
+    if (o.wants("fig2_1") || o.wants("fig2_3") || o.wants("fig2_4")) {
+      KernelExample ex = kernelExample();
+      if (o.wants("fig2_1")) figure21(o, ex);
+      if (o.wants("fig2_3")) figure23(o, ex);
+      if (o.wants("fig2_4")) figure24(o, ex);
+    }
     if (o.everything()) kernelChecks(o);
   });
 }
