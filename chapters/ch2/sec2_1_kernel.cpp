@@ -620,7 +620,7 @@ void figure24(const ch::Options& o, KernelExample& ex) {
   std::string labels4, special;
   auto label = [&](const dt::Vertex* v, const std::string& tex) {
     const std::string name = ch::mathText(tex);
-    const auto [lx, ly] = placer.place(v->x, v->y, name);
+    const auto [lx, ly] = placer.placeAttached(v->x, v->y, name, afterSegs, NAN, 4);
     labels4 += num(lx) + " " + num(ly) + " " + ch::quoted(name) + "\n";
   };
   label(p, "p_{n+1}");
