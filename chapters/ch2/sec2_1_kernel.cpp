@@ -182,9 +182,19 @@ void figure22(const ch::Options& o) {
     placer.segment(x.x, x.y, a.x, a.y, 1.2 * lw);
     placer.marker(a.x, a.y, ch::pointRadius(fs, 0.9));
     sight += num(x.x) + " " + num(x.y) + "\n" + num(P[j].x) + " " + num(P[j].y) + "\n\n";
-    // The line of each edge, the border of its half-plane, clipped to the view.
-    ch::Seg l;
-    if (ch::clipLine(a.x, a.y, b.x - a.x, b.y - a.y, X0, X1, Y0, Y1, l)) {
+    // The line of each edge, the border of its half-plane: from the edge to the kernel (the
+    // part of the line where it bounds the intersection), a little beyond both, clipped to
+    // the view; not across the whole view, where the lines cluttered the corners' labels.
+    const double ex = b.x - a.x, ey = b.y - a.y, e2 = ex * ex + ey * ey, pad = 0.12 / std::sqrt(e2);
+    double t0 = 0, t1 = 1;
+    for (const auto& q : K) {
+      const double t = ((q.x - a.x) * ex + (q.y - a.y) * ey) / e2;
+      t0 = std::min(t0, t), t1 = std::max(t1, t);
+    }
+    t0 -= pad, t1 += pad;
+    ch::Seg l{a.x + t0 * ex, a.y + t0 * ey, a.x + t1 * ex, a.y + t1 * ey};
+    if (ch::clipLine(l.x0, l.y0, l.x1 - l.x0, l.y1 - l.y0, std::max(X0, std::min(l.x0, l.x1)), std::min(X1, std::max(l.x0, l.x1)),
+                     std::max(Y0, std::min(l.y0, l.y1)), std::min(Y1, std::max(l.y0, l.y1)), l)) {
       lines += num(l.x0) + " " + num(l.y0) + "\n" + num(l.x1) + " " + num(l.y1) + "\n\n";
       placer.segment(l.x0, l.y0, l.x1, l.y1, 1.2 * lw);
     }
@@ -215,11 +225,18 @@ void figure22(const ch::Options& o) {
   const double tailx = tx + (kerW + 0.3 * fs.em) / pv.scale(), taily = ty + 0.3 * fs.em / pv.scale();
   placer.segment(tailx, taily, ax, ay, 1.5 * lw);
   // Corner labels, then x's, then ker(Σ)'s (its place is fixed: it only has to be clear).
+  // Each label attached to its point: no edge or sight line between them.
+  std::vector<ch::Seg> drawn;
+  for (std::size_t j = 0; j < P.size(); ++j) {
+    const dt::Point2 a = P[j], b = P[(j + 1) % P.size()];
+    drawn.push_back({a.x, a.y, b.x, b.y});
+    drawn.push_back({x.x, x.y, a.x, a.y});
+  }
   for (std::size_t j = 0; j < P.size(); ++j) {
     const std::string name = ch::mathText("\\sigma_{" + std::to_string(j + 1) + "}");
     // Prefer the direction away from x: outside the polygon, where the corner is alone.
     const double away = std::atan2(P[j].y - x.y, P[j].x - x.x) * 180 / M_PI;
-    const auto [lx, ly] = placer.place(P[j].x, P[j].y, name, away);
+    const auto [lx, ly] = placer.placeAttached(P[j].x, P[j].y, name, drawn, away, 4);
     labels += num(lx) + " " + num(ly) + " " + ch::quoted(name) + "\n";
   }
   {
@@ -233,7 +250,10 @@ void figure22(const ch::Options& o) {
       if (a1 - a0 > gapWidth) gapWidth = a1 - a0, gapMid = 0.5 * (a0 + a1);
     }
     const std::string name = ch::mathText("x");
-    const auto [lx, ly] = placer.place(x.x, x.y, name, gapMid * 180 / M_PI);
+    // (its sight lines fan out from it: the label may sit across one, clear of it)
+    std::vector<ch::Seg> sides;
+    for (std::size_t j = 0; j < P.size(); ++j) sides.push_back({P[j].x, P[j].y, P[(j + 1) % P.size()].x, P[(j + 1) % P.size()].y});
+    const auto [lx, ly] = placer.placeAttached(x.x, x.y, name, sides, gapMid * 180 / M_PI, 3, 2.5);
     ch::writeOut(o, "fig2_2_xlabel.dat", num(lx) + " " + num(ly) + " " + ch::quoted(name) + "\n");
   }
   ch::writeOut(o, "fig2_2_view.gp", ch::fmt("X0 = %.10g; X1 = %.10g; Y0 = %.10g; Y1 = %.10g\n", X0, X1, Y0, Y1) +
