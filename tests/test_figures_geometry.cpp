@@ -612,21 +612,23 @@ GPoint rowPoint(const fs::path& p, int row, const std::string& name) {
 
 }  // namespace
 
-TEST_CASE("figures geometry Figure 2.1's new point has room and its label is attached") {
+TEST_CASE("figures geometry Figure 2.1's new point has room and its label in (a) is attached") {
   const fs::path dir = programRun("sec2_1_kernel", "fig2_1");
   const ch::FigureSize fs = ch::figureSize("fig2_1");
-  for (const std::string panel : {"P1", "P2"}) {
+  for (const std::string panel : {"P1", "P2"}) {  // (b) draws p_{n+1} unlabelled
     GFigure f;
     f.name = "fig2_1 " + panel;
     readView(viewLine(dir / "fig2_1_view.gp", panel), fs.W, f);
     f.em = fs.em, f.marker = ch::pointRadius(fs, 1.6);
+    // p_{n+1}'s label is 2 em wide: its centre beside the marker is 1.5-2 em away.
+    f.maxEm = 2.0;
     std::istringstream pts(slurp(dir / "fig2_1_points.dat"));
     for (double x, y; pts >> x >> y;) f.points.push_back({x, y, "a point of S"});
     const GPoint p = rowPoint(dir / "fig2_1_p.dat", 0, "p");
     double lx = 0, ly = 0, px = 0, py = 0;
     std::istringstream(slurp(dir / "fig2_1_p.dat")) >> px >> py >> lx >> ly;
     f.points.push_back(p);
-    f.labels.push_back({lx, ly, "p"});
+    if (panel == "P1") f.labels.push_back({lx, ly, "p"});
     f.focus = {p};
     f.edges = readPolylines(dir / "fig2_1_dtn.dat");
     CHECK(joined(focusErrors(f)) == "");

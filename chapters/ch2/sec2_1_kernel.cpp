@@ -167,7 +167,10 @@ void figure22(const ch::Options& o) {
   // The view: the polygon with room for the labels, laid out in pixels (fig2_2_view.gp) so that
   // the labels are placed clear of everything drawn; the edge lines are clipped to it here.
   const ch::FigureSize fs = ch::figureSize("fig2_2");
-  const ch::Panel pv = ch::fitPanel(fs.W, fs.H, 0, 0, fs.W, fs.H, -1.22, 1.22, -1.22, 1.22, 0.2 * fs.em);
+  double vx0 = 1e300, vx1 = -1e300, vy0 = 1e300, vy1 = -1e300;  // the polygon, with room for labels
+  for (const auto& q : P) vx0 = std::min(vx0, q.x), vx1 = std::max(vx1, q.x), vy0 = std::min(vy0, q.y), vy1 = std::max(vy1, q.y);
+  const double vm = 0.14 * std::max(vx1 - vx0, vy1 - vy0);
+  const ch::Panel pv = ch::fitPanel(fs.W, fs.H, 0, 0, fs.W, fs.H, vx0 - vm, vx1 + vm, vy0 - vm, vy1 + vm, 0.2 * fs.em);
   const double X0 = pv.x0, X1 = pv.x1, Y0 = pv.y0, Y1 = pv.y1, lw = std::max(1.5, fs.em / 18);
   ch::LabelPlacer placer(pv, fs.em);
   for (std::size_t i = 0; i <= P.size(); ++i)
@@ -282,12 +285,12 @@ struct KernelExample {
   std::vector<ch::Seg> dtnSegs;  // DT_n's edges, each once
 };
 
-// Panel k (0 or 1) of Figure 2.1: the points of S with a margin of 4 percent.
+// Panel k (0 or 1) of Figure 2.1: the points of S with a margin of 2 percent.
 ch::Panel figure21Panel(const std::vector<dt::Vertex*>& S, int k) {
   double bx0 = 1e300, bx1 = -1e300, by0 = 1e300, by1 = -1e300;
   for (const dt::Vertex* v : S)
     bx0 = std::min(bx0, v->x), bx1 = std::max(bx1, v->x), by0 = std::min(by0, v->y), by1 = std::max(by1, v->y);
-  const double m = 0.04 * (bx1 - bx0);
+  const double m = 0.02 * (bx1 - bx0);
   return ch::cellPanel(ch::figureSize("fig2_1"), 1, 2, k, bx0 - m, bx1 + m, by0 - m, by1 + m);
 }
 
@@ -405,8 +408,7 @@ void figure21(const ch::Options& o, const KernelExample& ex) {
   const std::vector<const dt::Vertex*>& sigma = ex.sigma;
   std::string ptsText, circles, cavity;
   for (const dt::Vertex* v : S) ptsText += num(v->x) + " " + num(v->y) + "\n";
-  // One block per circle (gnuplot "index"), so that each gets its own dash pattern.
-  for (const dt::Face* f : ex.C) circles += (circles.empty() ? "" : "\n\n") + circleLine(circumcircle(f->V[0], f->V[1], f->V[2]));
+  for (const dt::Face* f : ex.C) circles += circleLine(circumcircle(f->V[0], f->V[1], f->V[2]));
   for (std::size_t i = 0; i <= sigma.size(); ++i)
     cavity += num(sigma[i % sigma.size()]->x) + " " + num(sigma[i % sigma.size()]->y) + "\n";
   {
@@ -416,23 +418,16 @@ void figure21(const ch::Options& o, const KernelExample& ex) {
     const ch::FigureSize fs = ch::figureSize("fig2_1");
     const ch::Panel pa = figure21Panel(S, 0), pb = figure21Panel(S, 1);
     const double lw = std::max(1.5, fs.em / 18);
+    // The label of (a), attached to p_{n+1} (no edge between them); (b), where the cavity's
+    // circles crowd p_{n+1}, names it in its title and draws it in the same red, unlabelled.
+    const std::string name = ch::mathText("p_{n+1}");
     ch::LabelPlacer placer(pa, fs.em);
     placer.segments(ex.dtnSegs, 1.5 * lw);
-    for (std::size_t i = 0; i < sigma.size(); ++i) {
-      const dt::Vertex *a = sigma[i], *b = sigma[(i + 1) % sigma.size()];
-      placer.segment(a->x, a->y, b->x, b->y, 3 * lw);
-    }
-    for (const dt::Face* f : ex.C) {
-      const Circle c = circumcircle(f->V[0], f->V[1], f->V[2]);
-      placer.circle(c.x, c.y, c.r, 1.5 * lw);
-    }
     for (const dt::Vertex* v : S) placer.marker(v->x, v->y, ch::pointRadius(fs, 1.0));
     placer.marker(p->x, p->y, ch::pointRadius(fs, 1.6));
-    const std::string name = ch::mathText("p_{n+1}");
-    const auto [lx, ly] = placer.placeAttached(p->x, p->y, name, ex.dtnSegs, NAN, 4);
+    const auto [lx, ly] = placer.placeAttached(p->x, p->y, name, ex.dtnSegs, NAN, 3, 1.5);
     ch::writeOut(o, "fig2_1_p.dat", num(p->x) + " " + num(p->y) + " " + num(lx) + " " + num(ly) + " " + ch::quoted(name) + "\n");
-    ch::writeOut(o, "fig2_1_view.gp", "P1 = \"" + pa.gnuplot() + "\"\nP2 = \"" + pb.gnuplot() + "\"\n" +
-                                          ch::fmt("NC = %zu\n", ex.C.size()));
+    ch::writeOut(o, "fig2_1_view.gp", "P1 = \"" + pa.gnuplot() + "\"\nP2 = \"" + pb.gnuplot() + "\"\n");
   }
   ch::writeOut(o, "fig2_1_dtn.dat", ch::gnuplotSegs(ex.dtnSegs));
   ch::writeOut(o, "fig2_1_points.dat", ptsText);
@@ -640,7 +635,7 @@ void figure24(const ch::Options& o, KernelExample& ex) {
   std::string labels4, special;
   auto label = [&](const dt::Vertex* v, const std::string& tex) {
     const std::string name = ch::mathText(tex);
-    const auto [lx, ly] = placer.placeAttached(v->x, v->y, name, afterSegs, NAN, 4);
+    const auto [lx, ly] = placer.placeAttached(v->x, v->y, name, afterSegs, NAN, 2);
     labels4 += num(lx) + " " + num(ly) + " " + ch::quoted(name) + "\n";
   };
   label(p, "p_{n+1}");
