@@ -17,6 +17,7 @@
 #include <random>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "check.h"
@@ -239,7 +240,11 @@ void figure22(const ch::Options& o) {
     const std::string name = ch::mathText("\\sigma_{" + std::to_string(j + 1) + "}");
     // Prefer the direction away from x: outside the polygon, where the corner is alone.
     const double away = std::atan2(P[j].y - x.y, P[j].x - x.x) * 180 / M_PI;
-    const auto [lx, ly] = placer.placeAttached(P[j].x, P[j].y, name, drawn, away, 4);
+    // Attached where a clear spot is; else the nearest clear spot (a label never on a line).
+    ch::LabelPlacer trial = placer;
+    auto [lx, ly] = trial.placeAttached(P[j].x, P[j].y, name, drawn, away, 4);
+    if (trial.lastClearance() >= 1) placer = trial;
+    else std::tie(lx, ly) = placer.place(P[j].x, P[j].y, name, away);
     labels += num(lx) + " " + num(ly) + " " + ch::quoted(name) + "\n";
   }
   {
@@ -256,7 +261,10 @@ void figure22(const ch::Options& o) {
     // (its sight lines fan out from it: the label may sit across one, clear of it)
     std::vector<ch::Seg> sides;
     for (std::size_t j = 0; j < P.size(); ++j) sides.push_back({P[j].x, P[j].y, P[(j + 1) % P.size()].x, P[(j + 1) % P.size()].y});
-    const auto [lx, ly] = placer.placeAttached(x.x, x.y, name, sides, gapMid * 180 / M_PI, 3, 2.5);
+    ch::LabelPlacer trial = placer;
+    auto [lx, ly] = trial.placeAttached(x.x, x.y, name, sides, gapMid * 180 / M_PI, 3, 2.5);
+    if (trial.lastClearance() >= 1) placer = trial;
+    else std::tie(lx, ly) = placer.place(x.x, x.y, name, gapMid * 180 / M_PI);
     ch::writeOut(o, "fig2_2_xlabel.dat", num(lx) + " " + num(ly) + " " + ch::quoted(name) + "\n");
   }
   ch::writeOut(o, "fig2_2_view.gp", ch::fmt("X0 = %.10g; X1 = %.10g; Y0 = %.10g; Y1 = %.10g\n", X0, X1, Y0, Y1) +
@@ -619,7 +627,7 @@ void figure24(const ch::Options& o, KernelExample& ex) {
   // edge, circle, point and other label.
   const ch::FigureSize fs4 = ch::figureSize("fig2_4");
   const double lw4 = std::max(1.5, fs4.em / 18);
-  const ch::Panel pv = ch::fitPanel(fs4.W, fs4.H, 0, 0, fs4.W, fs4.H, vx0, vx1, vy0, vy1, 1.2 * fs4.em);
+  const ch::Panel pv = ch::fitPanel(fs4.W, fs4.H, 0, 0, fs4.W, fs4.H, vx0, vx1, vy0, vy1, 0.4 * fs4.em);
   ch::LabelPlacer placer(pv, fs4.em);
   placer.segments(afterSegs, 1.5 * lw4);
   for (std::size_t i = 0; i < sigma.size(); ++i)
