@@ -399,7 +399,7 @@ inline void runGnuplot(const Options& o, const std::string& script) {
 /// includes the .html fragment with \htmlinclude).
 /// The mathematics of a table's caption, header and cells, typed in ASCII for the CSV and the
 /// terminal ("N_search/sqrt(n)", "2^-53", "0 <= i < 256", "O(a,b,c)", "1e+06", "a -> b"), set for a
-/// page: sub- and superscripts, √, ≤, ≪, →, ±, ⌈log₄ n⌉, the notes' 𝒪? and 𝒞?, and '<', '>', '&'
+/// page: sub- and superscripts, √, ≤, ≪, →, ±, ⌈log₄ n⌉, the notes' 𝒪 and 𝒞 (as the figures print them, figures/ch2/notation.txt), and '<', '>', '&'
 /// escaped.
 inline std::string htmlMath(std::string s) {
   auto sub = [&s](const char* re, const char* to) { s = std::regex_replace(s, std::regex(re), to); };
@@ -420,10 +420,10 @@ inline std::string htmlMath(std::string s) {
   sub("\\b1e(-?[1-9][0-9]*)\\b", "10^$1");
   sub("\\b1e\\+0*([1-9][0-9]*)\\b", "10^$1");
   sub("\\b1e±0*([1-9][0-9]*)\\b", "10^±$1");
-  sub("\\|O\\|", "|𝒪<sub>?</sub>|");
-  sub("\\bO\\(", "𝒪<sub>?</sub>(");
-  sub("\\|InC\\|", "|𝒞<sub>?</sub>|");
-  sub("\\bInC\\(", "𝒞<sub>?</sub>(");
+  sub("\\|O\\|", "|𝒪|");
+  sub("\\bO\\(", "𝒪(");
+  sub("\\|InC\\|", "|𝒞|");
+  sub("\\bInC\\(", "𝒞(");
   sub("\\|C\\|", "|𝒞|");
   sub("\\bS0\\b", "S<sub>0</sub>");
   sub("\\b(DT|[A-Za-z])_([A-Za-z0-9]+)\\b", "$1<sub>$2</sub>");

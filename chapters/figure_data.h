@@ -512,6 +512,10 @@ class LabelPlacer {
     return {p_.x0 + (bx - p_.left) / p_.scale(), p_.y1 - (by - p_.top) / p_.scale()};
   }
 
+  /// The clearance of the last label placed from everything else (px; negative if it
+  /// touches something): whether place() or placeAttached() found a clear spot.
+  double lastClearance() const { return boxes_.empty() ? 1e300 : clearance(boxes_.back(), true); }
+
   /// The least distance in px from the box to any obstacle or the panel's edge (negative
   /// inside one).
   double clearance(const PxBox& b, bool skipLast = false) const {

@@ -1075,7 +1075,6 @@ std::vector<Series> knownSeries(const fs::path& dir) {
       {"fig2_1", 2, 3, "fig2_1_dtn.dat", Draws::Segments},
       {"fig2_1", 2, 5, "fig2_1_points.dat", Draws::Markers},
       {"fig2_1", 2, 6, "fig2_1_p.dat", Draws::Markers},
-      {"fig2_1", 2, 7, "fig2_1_p.dat", Draws::Texts},
       {"fig2_6", 1, 3, "fig2_6_all.dat", Draws::Segments},
       {"fig2_6", 1, 4, "fig2_6_crossing.dat", Draws::Segments},
       {"fig2_6", 1, 5, "fig2_6_circle.dat", Draws::Paths},

@@ -179,6 +179,19 @@ std::vector<std::string> focusErrors(const GFigure& f) {
   return out;
 }
 
+/// Points whose markers nearly touch: two points closer than two marker radii (px), which a
+/// reader cannot tell apart (issue 42's review: recovery (c)'s p2 and p4 10 px apart).
+std::vector<std::string> markerErrors(const GFigure& f) {
+  std::vector<std::string> out;
+  for (std::size_t i = 0; i < f.points.size(); ++i)
+    for (std::size_t j = i + 1; j < f.points.size(); ++j) {
+      const GPoint &a = f.points[i], &b = f.points[j];
+      const double d = dist(a.x, a.y, b.x, b.y) * f.scale;
+      if (d < 2 * f.marker) out.push_back(f.name + fmt(": the markers of %s and %s are %.1f px apart (at least %.1f)", a.name.c_str(), b.name.c_str(), d, 2 * f.marker));
+    }
+  return out;
+}
+
 /// What a frame must keep besides: every circle and label inside the view, no label on an
 /// edge or a circle (1 px of clearance).
 std::vector<std::string> frameErrors(const GFigure& f) {
@@ -412,6 +425,13 @@ TEST_CASE("figures geometry the focus check names a point near an edge or a labe
   CHECK(joined(focusErrors(f)).find("angle of") != std::string::npos);
 }
 
+TEST_CASE("figures geometry the marker check names two points a reader cannot tell apart") {
+  GFigure f = plantedBase();
+  CHECK(joined(markerErrors(f)) == "");
+  f.points.push_back({1.06, 0, "e"});  // 6 px from b: under two marker radii (8 px)
+  CHECK(joined(markerErrors(f)).find("the markers of b and e are 6.0 px apart") != std::string::npos);
+}
+
 TEST_CASE("figures geometry the frame check names a cut circle and a label on a circle") {
   GFigure f = plantedBase();
   CHECK(frameErrors(f).empty());
@@ -576,4 +596,66 @@ TEST_CASE("figures geometry the outside-hull figure labels p beside it and clear
       if (beyondRule(f) > 0) MESSAGE(f.name << ": " << beyondRule(f) << " label(s) beyond 1.5 em (crowded)");
       CHECK(joined(frameErrors(f)) == "");
     }
+}
+
+namespace {
+
+/// A point of the kernel figures read from a data file's row `row` (x y first).
+GPoint rowPoint(const fs::path& p, int row, const std::string& name) {
+  std::istringstream in(slurp(p));
+  std::string line;
+  for (int i = 0; i <= row; ++i) std::getline(in, line);
+  double x = 0, y = 0;
+  REQUIRE(std::sscanf(line.c_str(), "%lf %lf", &x, &y) == 2);
+  return {x, y, name};
+}
+
+}  // namespace
+
+TEST_CASE("figures geometry Figure 2.1's new point has room and its label in (a) is attached") {
+  const fs::path dir = programRun("sec2_1_kernel", "fig2_1");
+  const ch::FigureSize fs = ch::figureSize("fig2_1");
+  for (const std::string panel : {"P1", "P2"}) {  // (b) draws p_{n+1} unlabelled
+    GFigure f;
+    f.name = "fig2_1 " + panel;
+    readView(viewLine(dir / "fig2_1_view.gp", panel), fs.W, f);
+    f.em = fs.em, f.marker = ch::pointRadius(fs, 1.6);
+    // p_{n+1}'s label is 2 em wide: its centre beside the marker is 1.5-2 em away.
+    f.maxEm = 2.0;
+    std::istringstream pts(slurp(dir / "fig2_1_points.dat"));
+    for (double x, y; pts >> x >> y;) f.points.push_back({x, y, "a point of S"});
+    const GPoint p = rowPoint(dir / "fig2_1_p.dat", 0, "p");
+    double lx = 0, ly = 0, px = 0, py = 0;
+    std::istringstream(slurp(dir / "fig2_1_p.dat")) >> px >> py >> lx >> ly;
+    f.points.push_back(p);
+    if (panel == "P1") f.labels.push_back({lx, ly, "p"});
+    f.focus = {p};
+    f.edges = readPolylines(dir / "fig2_1_dtn.dat");
+    CHECK(joined(focusErrors(f)) == "");
+    CHECK(joined(attachmentErrors(f)) == "");
+    CHECK(joined(markerErrors(f)) == "");
+  }
+}
+
+TEST_CASE("figures geometry Figure 2.4 labels p_{n+1} sigma_i sigma_{i+1} and p_j beside their points") {
+  const fs::path dir = programRun("sec2_1_kernel", "fig2_4");
+  const ch::FigureSize fs = ch::figureSize("fig2_4");
+  GFigure f;
+  f.name = "fig2_4";
+  readView(viewLine(dir / "fig2_4_view.gp", "VIEW"), fs.W, f);
+  f.em = fs.em, f.marker = ch::pointRadius(fs, 1.0);
+  // At most 3 em: the placer's reach (twice the rule's 1.5 em) for a vertex whose sides are
+  // all taken by edges and circles; how many are beyond 1.5 em is printed.
+  f.maxEm = 3.0;
+  f.points = {rowPoint(dir / "fig2_4_newtri.dat", 2, "p"), rowPoint(dir / "fig2_4_outside.dat", 0, "sigma_i"),
+              rowPoint(dir / "fig2_4_outside.dat", 1, "sigma_i+1"), rowPoint(dir / "fig2_4_outside.dat", 2, "p_j")};
+  const char* names[4] = {"p", "sigma_i", "sigma_i+1", "p_j"};
+  for (int i = 0; i < 4; ++i) {
+    const GPoint l = rowPoint(dir / "fig2_4_labels.dat", i, names[i]);
+    f.labels.push_back(l);
+  }
+  f.edges = readPolylines(dir / "fig2_4_dt.dat");
+  CHECK(joined(attachmentErrors(f)) == "");
+  CHECK(joined(markerErrors(f)) == "");
+  if (beyondRule(f) > 0) MESSAGE(f.name << ": " << beyondRule(f) << " label(s) beyond 1.5 em (crowded)");
 }

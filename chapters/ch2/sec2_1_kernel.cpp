@@ -17,6 +17,7 @@
 #include <random>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "check.h"
@@ -167,7 +168,10 @@ void figure22(const ch::Options& o) {
   // The view: the polygon with room for the labels, laid out in pixels (fig2_2_view.gp) so that
   // the labels are placed clear of everything drawn; the edge lines are clipped to it here.
   const ch::FigureSize fs = ch::figureSize("fig2_2");
-  const ch::Panel pv = ch::fitPanel(fs.W, fs.H, 0, 0, fs.W, fs.H, -1.22, 1.22, -1.22, 1.22, 0.2 * fs.em);
+  double vx0 = 1e300, vx1 = -1e300, vy0 = 1e300, vy1 = -1e300;  // the polygon, with room for labels
+  for (const auto& q : P) vx0 = std::min(vx0, q.x), vx1 = std::max(vx1, q.x), vy0 = std::min(vy0, q.y), vy1 = std::max(vy1, q.y);
+  const double vm = 0.14 * std::max(vx1 - vx0, vy1 - vy0);
+  const ch::Panel pv = ch::fitPanel(fs.W, fs.H, 0, 0, fs.W, fs.H, vx0 - vm, vx1 + vm, vy0 - vm, vy1 + vm, 0.2 * fs.em);
   const double X0 = pv.x0, X1 = pv.x1, Y0 = pv.y0, Y1 = pv.y1, lw = std::max(1.5, fs.em / 18);
   ch::LabelPlacer placer(pv, fs.em);
   for (std::size_t i = 0; i <= P.size(); ++i)
@@ -182,9 +186,19 @@ void figure22(const ch::Options& o) {
     placer.segment(x.x, x.y, a.x, a.y, 1.2 * lw);
     placer.marker(a.x, a.y, ch::pointRadius(fs, 0.9));
     sight += num(x.x) + " " + num(x.y) + "\n" + num(P[j].x) + " " + num(P[j].y) + "\n\n";
-    // The line of each edge, the border of its half-plane, clipped to the view.
-    ch::Seg l;
-    if (ch::clipLine(a.x, a.y, b.x - a.x, b.y - a.y, X0, X1, Y0, Y1, l)) {
+    // The line of each edge, the border of its half-plane: from the edge to the kernel (the
+    // part of the line where it bounds the intersection), a little beyond both, clipped to
+    // the view; not across the whole view, where the lines cluttered the corners' labels.
+    const double ex = b.x - a.x, ey = b.y - a.y, e2 = ex * ex + ey * ey, pad = 0.12 / std::sqrt(e2);
+    double t0 = 0, t1 = 1;
+    for (const auto& q : K) {
+      const double t = ((q.x - a.x) * ex + (q.y - a.y) * ey) / e2;
+      t0 = std::min(t0, t), t1 = std::max(t1, t);
+    }
+    t0 -= pad, t1 += pad;
+    ch::Seg l{a.x + t0 * ex, a.y + t0 * ey, a.x + t1 * ex, a.y + t1 * ey};
+    if (ch::clipLine(l.x0, l.y0, l.x1 - l.x0, l.y1 - l.y0, std::max(X0, std::min(l.x0, l.x1)), std::min(X1, std::max(l.x0, l.x1)),
+                     std::max(Y0, std::min(l.y0, l.y1)), std::min(Y1, std::max(l.y0, l.y1)), l)) {
       lines += num(l.x0) + " " + num(l.y0) + "\n" + num(l.x1) + " " + num(l.y1) + "\n\n";
       placer.segment(l.x0, l.y0, l.x1, l.y1, 1.2 * lw);
     }
@@ -215,11 +229,22 @@ void figure22(const ch::Options& o) {
   const double tailx = tx + (kerW + 0.3 * fs.em) / pv.scale(), taily = ty + 0.3 * fs.em / pv.scale();
   placer.segment(tailx, taily, ax, ay, 1.5 * lw);
   // Corner labels, then x's, then ker(Σ)'s (its place is fixed: it only has to be clear).
+  // Each label attached to its point: no edge or sight line between them.
+  std::vector<ch::Seg> drawn;
+  for (std::size_t j = 0; j < P.size(); ++j) {
+    const dt::Point2 a = P[j], b = P[(j + 1) % P.size()];
+    drawn.push_back({a.x, a.y, b.x, b.y});
+    drawn.push_back({x.x, x.y, a.x, a.y});
+  }
   for (std::size_t j = 0; j < P.size(); ++j) {
     const std::string name = ch::mathText("\\sigma_{" + std::to_string(j + 1) + "}");
     // Prefer the direction away from x: outside the polygon, where the corner is alone.
     const double away = std::atan2(P[j].y - x.y, P[j].x - x.x) * 180 / M_PI;
-    const auto [lx, ly] = placer.place(P[j].x, P[j].y, name, away);
+    // Attached where a clear spot is; else the nearest clear spot (a label never on a line).
+    ch::LabelPlacer trial = placer;
+    auto [lx, ly] = trial.placeAttached(P[j].x, P[j].y, name, drawn, away, 4);
+    if (trial.lastClearance() >= 1) placer = trial;
+    else std::tie(lx, ly) = placer.place(P[j].x, P[j].y, name, away);
     labels += num(lx) + " " + num(ly) + " " + ch::quoted(name) + "\n";
   }
   {
@@ -233,7 +258,13 @@ void figure22(const ch::Options& o) {
       if (a1 - a0 > gapWidth) gapWidth = a1 - a0, gapMid = 0.5 * (a0 + a1);
     }
     const std::string name = ch::mathText("x");
-    const auto [lx, ly] = placer.place(x.x, x.y, name, gapMid * 180 / M_PI);
+    // (its sight lines fan out from it: the label may sit across one, clear of it)
+    std::vector<ch::Seg> sides;
+    for (std::size_t j = 0; j < P.size(); ++j) sides.push_back({P[j].x, P[j].y, P[(j + 1) % P.size()].x, P[(j + 1) % P.size()].y});
+    ch::LabelPlacer trial = placer;
+    auto [lx, ly] = trial.placeAttached(x.x, x.y, name, sides, gapMid * 180 / M_PI, 3, 2.5);
+    if (trial.lastClearance() >= 1) placer = trial;
+    else std::tie(lx, ly) = placer.place(x.x, x.y, name, gapMid * 180 / M_PI);
     ch::writeOut(o, "fig2_2_xlabel.dat", num(lx) + " " + num(ly) + " " + ch::quoted(name) + "\n");
   }
   ch::writeOut(o, "fig2_2_view.gp", ch::fmt("X0 = %.10g; X1 = %.10g; Y0 = %.10g; Y1 = %.10g\n", X0, X1, Y0, Y1) +
@@ -251,100 +282,175 @@ void figure22(const ch::Options& o) {
 
 // ---- Figures 2.1, 2.3, 2.4: one point set, one new point ----------------------------------
 
-void figures21to24(const ch::Options& o) {
-  // 15 points: a 4 x 4 grid without one corner, jittered, so that DT_n has triangles of
-  // reasonable shapes. p_{n+1}: among 3000 random candidates inside the hull, one whose proof
-  // chain (the cavity triangles met by the segment from a cavity vertex p3 to p_{n+1}) has the
-  // shape of the notes' Figure 2.3, p2p3p4 -> p2p4p5 -> p2p5p1 -> p1p5p6, with the circles C_I of
-  // p2p3p4 and C_J of p2p4p5 well apart (so that (b) shows two distinct circles), and a cavity
-  // of about 6 triangles. The jitter seeds 2101..2120 are tried; the best candidate wins.
-  const std::size_t n = 15;
-  std::unique_ptr<dt::Triangulation> Tp;
+// The example the three figures share: DT_n of 15 points, the new point p_{n+1} (not yet
+// inserted), its cavity C and the cavity's boundary sigma (counter-clockwise).
+struct KernelExample {
+  std::unique_ptr<dt::Triangulation> T;
   std::vector<dt::Vertex*> S;
-  double bestX = 0, bestY = 0, bestScore = -1e9;
+  dt::Vertex* p = nullptr;
+  std::vector<dt::Face*> C;
+  std::vector<const dt::Vertex*> sigma;
+  std::vector<ch::Seg> dtnSegs;  // DT_n's edges, each once
+};
+
+// Panel k (0 or 1) of Figure 2.1: the points of S with a margin of 2 percent.
+ch::Panel figure21Panel(const std::vector<dt::Vertex*>& S, int k) {
+  double bx0 = 1e300, bx1 = -1e300, by0 = 1e300, by1 = -1e300;
+  for (const dt::Vertex* v : S)
+    bx0 = std::min(bx0, v->x), bx1 = std::max(bx1, v->x), by0 = std::min(by0, v->y), by1 = std::max(by1, v->y);
+  const double m = 0.02 * (bx1 - bx0);
+  return ch::cellPanel(ch::figureSize("fig2_1"), 1, 2, k, bx0 - m, bx1 + m, by0 - m, by1 + m);
+}
+
+// DT_n of the jittered grid of seed `seed`: 15 points, a 4 x 4 grid without one corner,
+// jittered, so that DT_n has triangles of reasonable shapes.
+void jitteredGrid(unsigned seed, KernelExample& ex) {
+  XY pts;
+  std::mt19937_64 jr(seed);
+  std::uniform_real_distribution<double> j(-0.11, 0.11);
+  for (int a = 0; a < 4; ++a)
+    for (int b = 0; b < 4; ++b)
+      if (a + b < 6) pts.push_back(0.12 + 0.25 * a + j(jr)), pts.push_back(0.12 + 0.25 * b + j(jr));
+  ex.T = std::make_unique<dt::Triangulation>();
+  ex.S.clear();
+  for (std::size_t i = 0; i < pts.size() / 2; ++i) ex.S.push_back(ex.T->addVertex(pts[2 * i], pts[2 * i + 1], long(i + 1)));
+  dt::delaunayTrglHull(*ex.T, ex.S, dt::StartRule::LastCavity);
+  const dt::PlainMesh m = dt::extractMesh(*ex.T, false);
+  ex.dtnSegs = ch::triangleSegs(m.xy, m.tri);
+}
+
+// The smallest angle of a triangle, degrees.
+double minAngleDeg(const dt::Face* f) {
+  double m = 180;
+  for (int k = 0; k < 3; ++k) {
+    const dt::Vertex *a = f->V[k], *b = f->V[(k + 1) % 3], *c = f->V[(k + 2) % 3];
+    const double u = std::atan2(std::fabs((b->x - a->x) * (c->y - a->y) - (b->y - a->y) * (c->x - a->x)),
+                                (b->x - a->x) * (c->x - a->x) + (b->y - a->y) * (c->y - a->y));
+    m = std::min(m, u * 180 / M_PI);
+  }
+  return m;
+}
+
+// The example, chosen by score (deterministic): the jitter seeds 2201..2300, and for each 3000
+// random candidates for p_{n+1} inside the hull and four in each triangle. What it must show, as numbers:
+// - Figure 2.3: a proof chain (the cavity triangles met by the segment from a cavity vertex p3
+//   to p_{n+1}) of the notes' shape p2p3p4 -> p2p4p5 -> p2p5p1 -> p1p5p6 (100), with the circles
+//   C_I of p2p3p4 and C_J of p2p4p5 well apart: centres a quarter radius apart or more (40),
+//   and 16 x their spread (at most 8);
+// - Figure 2.1's focus rule: p_{n+1} at least 3.5 marker radii (px, as drawn) from every edge
+//   of DT_n (50), more room counted up to 6 radii;
+// - no cavity triangle with an angle under 15 degrees (30): a triangle drawn to be seen is
+//   no sliver; every circle of Figure 2.1 (b) inside its view (20);
+// - a cavity of about 6 triangles (minus the difference).
+KernelExample kernelExample() {
+  KernelExample ex;
+  const double rp = ch::pointRadius(ch::figureSize("fig2_1"), 1.6);  // p_{n+1}'s marker, px
+  double bestX = 0, bestY = 0, bestScore = -1e9, bestMargin = 0;
   unsigned bestSeed = 0;
-  for (unsigned pass = 0; pass < 2; ++pass)
-  for (unsigned seed = pass ? bestSeed : 2101; seed < (pass ? bestSeed + 1 : 2121); ++seed) {
-    XY pts;
-    std::mt19937_64 jr(seed);
-    std::uniform_real_distribution<double> j(-0.11, 0.11);
-    for (int a = 0; a < 4; ++a)
-      for (int b = 0; b < 4; ++b)
-        if (a + b < 6) pts.push_back(0.12 + 0.25 * a + j(jr)), pts.push_back(0.12 + 0.25 * b + j(jr));
-    Tp = std::make_unique<dt::Triangulation>();
-    S.clear();
-    for (std::size_t i = 0; i < n; ++i) S.push_back(Tp->addVertex(pts[2 * i], pts[2 * i + 1], long(i + 1)));
-    dt::delaunayTrglHull(*Tp, S, dt::StartRule::LastCavity);
+  for (unsigned seed = 2201; seed < 2301; ++seed) {
+    jitteredGrid(seed, ex);
+    const ch::Panel pa = figure21Panel(ex.S, 0);
+    // The candidates: 3000 random points, then each triangle's incentre and three points a
+    // quarter of the way from it to the corners (where a point has the most room).
+    std::vector<std::pair<double, double>> cand;
     std::mt19937_64 rng(2102);
     std::uniform_real_distribution<double> u(0.15, 0.85);
-    for (int c = 0; c < 3000 && !pass; ++c) {  // the second pass only rebuilds DT_n
-      dt::Vertex p(u(rng), u(rng));
-      std::vector<dt::Face*> C = dt::conflictFaces(*Tp, &p);
+    for (int c = 0; c < 3000; ++c) cand.push_back({u(rng), u(rng)});
+    for (const dt::Face& f : ex.T->faces()) {
+      if (f.isGhost()) continue;
+      double w[3], sw = 0, ix = 0, iy = 0;
+      for (int k = 0; k < 3; ++k) {
+        const dt::Vertex *b = f.V[(k + 1) % 3], *c = f.V[(k + 2) % 3];
+        sw += w[k] = std::hypot(b->x - c->x, b->y - c->y);
+      }
+      for (int k = 0; k < 3; ++k) ix += w[k] * f.V[k]->x / sw, iy += w[k] * f.V[k]->y / sw;
+      cand.push_back({ix, iy});
+      for (int k = 0; k < 3; ++k) cand.push_back({ix + 0.25 * (f.V[k]->x - ix), iy + 0.25 * (f.V[k]->y - iy)});
+    }
+    for (const auto& [cx, cy] : cand) {
+      dt::Vertex p(cx, cy);
+      std::vector<dt::Face*> C = dt::conflictFaces(*ex.T, &p);
       bool ghost = C.empty();
       for (const dt::Face* f : C) ghost = ghost || f->isGhost();
       if (ghost || C.size() > 8) continue;
+      double margin = 1e300;  // px
+      for (const ch::Seg& s : ex.dtnSegs) margin = std::min(margin, ch::segDistance(s, p.x, p.y) * pa.scale());
+      double angle = 180;  // the cavity's smallest angle, degrees
+      bool inView = true;  // every circle of Figure 2.1 (b) inside the view
+      for (const dt::Face* f : C) {
+        angle = std::min(angle, minAngleDeg(f));
+        const Circle c = circumcircle(f->V[0], f->V[1], f->V[2]);
+        inView = inView && c.x - c.r > pa.x0 && c.x + c.r < pa.x1 && c.y - c.r > pa.y0 && c.y + c.r < pa.y1;
+      }
+      const double room = (margin >= 3.2 * rp ? 50.0 : 0.0) + std::min(margin / rp, 6.0) + (angle >= 15 ? 30.0 : 0.0) +
+                          (inView ? 20.0 : 0.0);
+      if (room + 152 < bestScore) continue;  // the chain's terms add at most 152: no need to walk
       for (dt::Face* f : C)
         for (const dt::Vertex* a : f->V) {
           const std::vector<dt::Face*> ch = chainTo(f, a, &p, C);
           const double spread = ch.size() >= 2 ? std::min(widestStep({ch[0], ch[1]}).second, 0.5) : 0;
-          const double score = (notesNames(ch).empty() ? 0.0 : 100.0) + double(ch.size()) -
-                               std::fabs(double(C.size()) - 6) + 16 * spread;
-          if (!pass && score > bestScore) bestScore = score, bestX = p.x, bestY = p.y, bestSeed = seed;
+          const double score = (notesNames(ch).empty() ? 0.0 : 100.0) + room + (spread >= 0.25 ? 40.0 : 0.0) +
+                               double(ch.size()) - std::fabs(double(C.size()) - 6) + 16 * spread;
+          if (score > bestScore) bestScore = score, bestX = p.x, bestY = p.y, bestSeed = seed, bestMargin = margin;
         }
     }
   }
-  std::cout << "Figures 2.1-2.4: jitter seed " << bestSeed << "\n";
-  dt::Triangulation& T = *Tp;
-  dt::Vertex* p = T.addVertex(bestX, bestY, long(n + 1));
-  std::vector<dt::Face*> C = dt::conflictFaces(T, p);
-  const dt::CavityReport rep = dt::checkCavity({C.begin(), C.end()}, p);
-  std::cout << "Figures 2.1, 2.3, 2.4: n = " << n << ", p_{n+1} = (" << bestX << ", " << bestY
+  jitteredGrid(bestSeed, ex);
+  std::cout << "Figures 2.1-2.4: jitter seed " << bestSeed << ", score " << bestScore << "; p_{n+1} is "
+            << ch::fmt("%.1f", bestMargin / rp) << " marker radii from every edge of DT_n (the focus rule: 3)\n";
+  if (bestMargin < 3 * rp) std::cout << "Figures 2.1-2.4: no candidate keeps p_{n+1} 3 marker radii from the edges\n";
+  ex.p = ex.T->addVertex(bestX, bestY, long(ex.S.size() + 1));
+  ex.C = dt::conflictFaces(*ex.T, ex.p);
+  const dt::CavityReport rep = dt::checkCavity({ex.C.begin(), ex.C.end()}, ex.p);
+  std::cout << "Figures 2.1, 2.3, 2.4: n = " << ex.S.size() << ", p_{n+1} = (" << bestX << ", " << bestY
             << "), |C| = " << rep.faces << ", |bnd| = " << rep.boundaryEdges
             << ", Proposition 2.1.1 and Property 2.1.1 hold: " << (rep.ok ? "yes" : rep.error) << "\n";
-  const dt::PlainMesh before = dt::extractMesh(T, false);
-  const std::vector<const dt::Vertex*> sigma = boundaryCycle(C);
+  ex.sigma = boundaryCycle(ex.C);
+  return ex;
+}
 
-  // Figure 2.1.
+// Figure 2.1: DT_n and p_{n+1}; the cavity with its circumcircles.
+void figure21(const ch::Options& o, const KernelExample& ex) {
+  const std::vector<dt::Vertex*>& S = ex.S;
+  const dt::Vertex* p = ex.p;
+  const std::vector<const dt::Vertex*>& sigma = ex.sigma;
   std::string ptsText, circles, cavity;
   for (const dt::Vertex* v : S) ptsText += num(v->x) + " " + num(v->y) + "\n";
-  for (const dt::Face* f : C) circles += circleLine(circumcircle(f->V[0], f->V[1], f->V[2]));
+  for (const dt::Face* f : ex.C) circles += circleLine(circumcircle(f->V[0], f->V[1], f->V[2]));
   for (std::size_t i = 0; i <= sigma.size(); ++i)
     cavity += num(sigma[i % sigma.size()]->x) + " " + num(sigma[i % sigma.size()]->y) + "\n";
-  const std::vector<ch::Seg> dtnSegs = ch::triangleSegs(before.xy, before.tri);
   {
     // Both panels show one view, laid out here in pixels (fig2_1_view.gp), so the label of
     // p_{n+1} is placed once, clear of everything either panel draws: the edges, the cavity's
-    // boundary and circles, the points.
-    double bx0 = 1e300, bx1 = -1e300, by0 = 1e300, by1 = -1e300;
-    for (const dt::Vertex* v : S) bx0 = std::min(bx0, v->x), bx1 = std::max(bx1, v->x), by0 = std::min(by0, v->y), by1 = std::max(by1, v->y);
-    const double m = 0.04 * (bx1 - bx0);
+    // boundary and circles, the points; attached to p_{n+1} (no edge between them).
     const ch::FigureSize fs = ch::figureSize("fig2_1");
-    const ch::Panel pa = ch::cellPanel(fs, 1, 2, 0, bx0 - m, bx1 + m, by0 - m, by1 + m);
-    const ch::Panel pb = ch::cellPanel(fs, 1, 2, 1, bx0 - m, bx1 + m, by0 - m, by1 + m);
+    const ch::Panel pa = figure21Panel(S, 0), pb = figure21Panel(S, 1);
     const double lw = std::max(1.5, fs.em / 18);
+    // The label of (a), attached to p_{n+1} (no edge between them); (b), where the cavity's
+    // circles crowd p_{n+1}, names it in its title and draws it in the same red, unlabelled.
+    const std::string name = ch::mathText("p_{n+1}");
     ch::LabelPlacer placer(pa, fs.em);
-    placer.segments(dtnSegs, 1.5 * lw);
-    for (std::size_t i = 0; i < sigma.size(); ++i) {
-      const dt::Vertex *a = sigma[i], *b = sigma[(i + 1) % sigma.size()];
-      placer.segment(a->x, a->y, b->x, b->y, 3 * lw);
-    }
-    for (const dt::Face* f : C) {
-      const Circle c = circumcircle(f->V[0], f->V[1], f->V[2]);
-      placer.circle(c.x, c.y, c.r, 1.5 * lw);
-    }
+    placer.segments(ex.dtnSegs, 1.5 * lw);
     for (const dt::Vertex* v : S) placer.marker(v->x, v->y, ch::pointRadius(fs, 1.0));
     placer.marker(p->x, p->y, ch::pointRadius(fs, 1.6));
-    const std::string name = ch::mathText("p_{n+1}");
-    const auto [lx, ly] = placer.place(p->x, p->y, name);
+    const auto [lx, ly] = placer.placeAttached(p->x, p->y, name, ex.dtnSegs, NAN, 3, 1.5);
     ch::writeOut(o, "fig2_1_p.dat", num(p->x) + " " + num(p->y) + " " + num(lx) + " " + num(ly) + " " + ch::quoted(name) + "\n");
     ch::writeOut(o, "fig2_1_view.gp", "P1 = \"" + pa.gnuplot() + "\"\nP2 = \"" + pb.gnuplot() + "\"\n");
   }
-  ch::writeOut(o, "fig2_1_dtn.dat", ch::gnuplotSegs(dtnSegs));
+  ch::writeOut(o, "fig2_1_dtn.dat", ch::gnuplotSegs(ex.dtnSegs));
   ch::writeOut(o, "fig2_1_points.dat", ptsText);
   ch::writeOut(o, "fig2_1_cavity.dat", cavity);
   ch::writeOut(o, "fig2_1_circles.dat", circles);
   ch::runGnuplot(o, "fig2_1.gp");
+}
 
+// Figure 2.3: the proof of Proposition 2.1.1 in the notes' names.
+void figure23(const ch::Options& o, const KernelExample& ex) {
+  const std::vector<dt::Vertex*>& S = ex.S;
+  const dt::Vertex* p = ex.p;
+  const std::vector<dt::Face*>& C = ex.C;
+  const std::vector<const dt::Vertex*>& sigma = ex.sigma;
+  const std::vector<ch::Seg>& dtnSegs = ex.dtnSegs;
   // Figure 2.3, in the notes' names: the chain p2p3p4 -> p2p4p5 -> p2p5p1 -> p1p5p6 met by the
   // segment p3 p_{n+1}, and its first step: C_I (circle of p2p3p4) beyond p2p4 lies in C_J
   // (circle of p2p4p5).
@@ -469,7 +575,16 @@ void figures21to24(const ch::Options& o) {
   ch::writeOut(o, "fig2_3_steplabels.dat", stepLabels);
   ch::writeOut(o, "fig2_3_view.gp", "PA = \"" + pa.gnuplot() + "\"\nPB = \"" + pb.gnuplot() + "\"\n");
   ch::runGnuplot(o, "fig2_3.gp");
+}
 
+// Figure 2.4: the Delaunay ball, an outside triangle and a new one with their circles. Inserts
+// p_{n+1} into the example's triangulation (so it comes last).
+void figure24(const ch::Options& o, KernelExample& ex) {
+  dt::Triangulation& T = *ex.T;
+  const std::vector<dt::Vertex*>& S = ex.S;
+  dt::Vertex* p = ex.p;
+  const std::vector<dt::Face*>& C = ex.C;
+  const std::vector<const dt::Vertex*>& sigma = ex.sigma;
   // Figure 2.4: insert p, then pick the boundary edge sigma_i sigma_{i+1} whose outside triangle
   // and new triangle have the smallest circles (so both fit in the picture).
   std::map<std::pair<const dt::Vertex*, const dt::Vertex*>, const dt::Face*> outsideOf;
@@ -512,7 +627,7 @@ void figures21to24(const ch::Options& o) {
   // edge, circle, point and other label.
   const ch::FigureSize fs4 = ch::figureSize("fig2_4");
   const double lw4 = std::max(1.5, fs4.em / 18);
-  const ch::Panel pv = ch::fitPanel(fs4.W, fs4.H, 0, 0, fs4.W, fs4.H, vx0, vx1, vy0, vy1, 1.2 * fs4.em);
+  const ch::Panel pv = ch::fitPanel(fs4.W, fs4.H, 0, 0, fs4.W, fs4.H, vx0, vx1, vy0, vy1, 0.4 * fs4.em);
   ch::LabelPlacer placer(pv, fs4.em);
   placer.segments(afterSegs, 1.5 * lw4);
   for (std::size_t i = 0; i < sigma.size(); ++i)
@@ -528,7 +643,7 @@ void figures21to24(const ch::Options& o) {
   std::string labels4, special;
   auto label = [&](const dt::Vertex* v, const std::string& tex) {
     const std::string name = ch::mathText(tex);
-    const auto [lx, ly] = placer.place(v->x, v->y, name);
+    const auto [lx, ly] = placer.placeAttached(v->x, v->y, name, afterSegs, NAN, 2);
     labels4 += num(lx) + " " + num(ly) + " " + ch::quoted(name) + "\n";
   };
   label(p, "p_{n+1}");
@@ -626,7 +741,12 @@ int main(int argc, char** argv) {
                       10000000, {"fig2_1", "fig2_2", "fig2_3", "fig2_4"}, {}};
   return ch::runMain(argc, argv, p, [](const ch::Options& o) {
     if (o.wants("fig2_2")) figure22(o);
-    if (o.wants("fig2_1") || o.wants("fig2_3") || o.wants("fig2_4")) figures21to24(o);
+    if (o.wants("fig2_1") || o.wants("fig2_3") || o.wants("fig2_4")) {
+      KernelExample ex = kernelExample();
+      if (o.wants("fig2_1")) figure21(o, ex);
+      if (o.wants("fig2_3")) figure23(o, ex);
+      if (o.wants("fig2_4")) figure24(o, ex);
+    }
     if (o.everything()) kernelChecks(o);
   });
 }

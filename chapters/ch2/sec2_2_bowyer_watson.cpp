@@ -78,10 +78,39 @@ const XY kFig25 = {0.22, 0.31, 0.74, 0.27, 0.51, 0.62, 0.29, 0.83, 0.88, 0.71,
                    0.07, 0.52, 0.61, 0.09, 0.43, 0.38, 0.69, 0.94};
 const double kFig25Factor = 1.5;  // super-square 1.5 times the box: small enough to see
 
-void figure25(const ch::Options& o) {
+// What Figure 2.5's panels and the animation's frames share: the insertions
+// (figure25Steps) and the layout (figure25Panels).
+struct Fig25 {
+  dt::BowyerWatsonResult all;
+  XY xy;
+  std::vector<std::vector<ch::Seg>> shown;          // the edges of each panel
+  std::vector<std::vector<ch::Seg>> allFrames;      // the edges of each frame
+  std::vector<std::vector<CircleXY>> frameCircles;  // the circles of each frame
+  std::vector<int> frameNew;                        // the point each frame inserts (-1: none)
+  int frame = 0;                                    // the number of frames
+  double x0 = 0, x1 = 0, y0 = 0, y1 = 0, m = 0;     // the points' box and the panels' margin
+  ch::FigureSize fs, fa;                            // Figure 2.5's and the animation's sizes
+  ch::Panel pa;                                     // the animation's view
+  double animFont = 0, animPs = 0;
+  std::vector<std::vector<double>> staticAngle;     // each label's direction in each panel, by k
+  std::map<int, std::vector<std::pair<double, double>>> staticAt;  // each panel's labels, by k
+  std::string name(std::size_t i) const { return ch::mathText(pname(all.ids[i])); }
+  // A label row: x y name lx ly super.
+  std::string row(std::size_t i, double lx, double ly) const {
+    return num(xy[2 * i]) + " " + num(xy[2 * i + 1]) + " " + ch::quoted(name(i)) + " " + num(lx) + " " + num(ly) + " " +
+           (all.ids[i] < 0 ? "1" : "0");
+  }
+};
+
+// Figure 2.5's insertions: DT_0..DT_9 (fig2_5_K.dat for the panels), the animation's frames
+// (fig2_5_anim_NN_*.dat: edges, cavity or ball, circles, the new point), its titles, and
+// table_fig2_5.
+void figure25Steps(const ch::Options& o, Fig25& F) {
   // DT_0 and the points, numbered as Algorithm 1 does (super-vertices first).
-  const dt::BowyerWatsonResult all = dt::bowyerWatson(kFig25, kFig25Factor);
-  XY xy = all.xy;
+  F.all = dt::bowyerWatson(kFig25, kFig25Factor);
+  const dt::BowyerWatsonResult& all = F.all;
+  XY& xy = F.xy;
+  xy = all.xy;
   std::vector<dt::Tri> tri = {{0, 1, 2}, {1, 0, 3}};
   ch::Table tab;
   tab.caption = "Figure 2.5: triangles of DT_k after k insertions into the two super-triangles "
@@ -89,13 +118,14 @@ void figure25(const ch::Options& o) {
   tab.header = {"k", "cavity size", "ball size", "triangles"};
   tab.add({"0", "", "", std::to_string(tri.size())});
   ch::writeOut(o, "fig2_5_0.dat", ch::gnuplotEdges(xy, tri));
-  std::vector<std::vector<ch::Seg>> shown = {ch::triangleSegs(xy, tri)};  // the edges of each panel
+  std::vector<std::vector<ch::Seg>>& shown = F.shown;
+  shown = {ch::triangleSegs(xy, tri)};
   // Animation frames: 00 is DT_0; then for each point, the cavity (odd) and the ball (even).
-  int frame = 0;
+  int& frame = F.frame;
   std::string titles;  // one line per frame: the PNG's title, a tab, the GIF's
-  std::vector<std::vector<ch::Seg>> allFrames;  // the edges of each frame
-  std::vector<std::vector<CircleXY>> frameCircles;  // the circles of each frame
-  std::vector<int> frameNew;                        // the point each frame inserts (-1: none)
+  std::vector<std::vector<ch::Seg>>& allFrames = F.allFrames;
+  std::vector<std::vector<CircleXY>>& frameCircles = F.frameCircles;
+  std::vector<int>& frameNew = F.frameNew;
   auto writeFrame = [&](const std::vector<dt::Tri>& mesh, const std::vector<dt::Tri>& fill, int ip,
                         const std::string& title) {
     const std::string stem = ch::fmt("fig2_5_anim_%02d", frame);
@@ -142,119 +172,148 @@ void figure25(const ch::Options& o) {
       shown.push_back(ch::triangleSegs(xy, tri));
     }
   }
-  // Points and labels. fig2_5_points.dat and fig2_5_super.dat: x y name giflabel (the markers).
-  // Each panel K of Figure 2.5 has its own labels (fig2_5_labels_K.dat: x y name lx ly super),
-  // placed with that panel's edges by placeAttached: beside its own point, on the point's side
-  // of every edge, within 1.5 em of the figure (1.5 / 0.85 of the labels' own em; one place for
-  // six panels was next to other points).
-  // A label keeps its direction from panel to panel where it can. Each animation frame has its
-  // labels too (fig2_5_anim_NN_labels.dat: x y name lx ly super giflabel), in the direction of
-  // the static panel that shows the same triangulation (at its very places on a frame without
-  // circles), clear of the frame's circles.
-  {
-    double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
-    for (std::size_t i = 0; i < xy.size(); i += 2)
-      x0 = std::min(x0, xy[i]), x1 = std::max(x1, xy[i]), y0 = std::min(y0, xy[i + 1]), y1 = std::max(y1, xy[i + 1]);
-    const double m = 0.11 * (x1 - x0);  // room for the super-vertices' labels outside the square
-    // The animation's one view holds every circle of every frame (none cut by the canvas).
-    double ax0 = x0 - m, ax1 = x1 + m, ay0 = y0 - m, ay1 = y1 + m;
-    for (const auto& cs : frameCircles)
-      for (const CircleXY& c : cs)
-        ax0 = std::min(ax0, c.x - c.r), ax1 = std::max(ax1, c.x + c.r), ay0 = std::min(ay0, c.y - c.r), ay1 = std::max(ay1, c.y + c.r);
-    const double am = 0.01 * (ax1 - ax0);
-    const ch::FigureSize fs = ch::figureSize("fig2_5"), fa = ch::figureSize("fig2_5_anim");
-    const ch::Panel pa = ch::cellPanel(fa, 1, 1, 0, ax0 - am, ax1 + am, ay0 - am, ay1 + am, 2.5);
-    const int panelOf[6] = {0, 1, 2, 3, 4, 9};
-    const std::size_t np = all.ids.size();
-    auto name = [&](std::size_t i) { return ch::mathText(pname(all.ids[i])); };
-    auto row = [&](std::size_t i, double lx, double ly) {
-      return num(xy[2 * i]) + " " + num(xy[2 * i + 1]) + " " + ch::quoted(name(i)) + " " + num(lx) + " " + num(ly) + " " +
-             (all.ids[i] < 0 ? "1" : "0");
-    };
-    // The labels of Figure 2.5 are set at 0.85 em (7.2 pt at 15 cm printed, 2 x 3 panels).
-    std::vector<double> angle(np, NAN);
-    std::vector<std::vector<double>> staticAngle(10, std::vector<double>(np, NAN));
-    std::map<int, std::vector<std::pair<double, double>>> staticAt;  // each panel's labels, by its k
-    std::string view;
-    for (int k = 0; k < 6; ++k) {
-      const ch::Panel pk = ch::cellPanel(fs, 2, 3, k, x0 - m, x1 + m, y0 - m, y1 + m);
-      view += ch::fmt("P%d = \"", k + 1) + pk.gnuplot() + "\"\n";
-      ch::LabelPlacer place(pk, 0.85 * fs.em);
-      place.segments(shown[k], 1.5 * std::max(1.5, fs.em / 18));
-      for (std::size_t i = 0; i < np; ++i) place.marker(xy[2 * i], xy[2 * i + 1], ch::pointRadius(fs, 1.3));
-      // The most crowded points first (most edges at them): their few clear wedges go to them.
-      std::vector<std::size_t> order(np);
-      std::vector<int> degree(np, 0);
-      for (std::size_t i = 0; i < np; ++i) {
-        order[i] = i;
-        for (const ch::Seg& e : shown[k])
-          degree[i] += (e.x0 == xy[2 * i] && e.y0 == xy[2 * i + 1]) || (e.x1 == xy[2 * i] && e.y1 == xy[2 * i + 1]);
-      }
-      std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return degree[a] > degree[b]; });
-      std::vector<std::pair<double, double>> at(np);
-      for (const std::size_t i : order) {
-        at[i] = place.placeAttached(xy[2 * i], xy[2 * i + 1], name(i), shown[k], angle[i], 5, 1.5 / 0.85, &angle[i]);
-        staticAngle[panelOf[k]][i] = angle[i];
-      }
-      staticAt[panelOf[k]] = at;
-      std::string labels;
-      for (std::size_t i = 0; i < np; ++i) labels += row(i, at[i].first, at[i].second) + "\n";
-      ch::writeOut(o, ch::fmt("fig2_5_labels_%d.dat", panelOf[k]), labels);
-    }
-    std::string pts, sup;
-    for (std::size_t i = 0; i < np; ++i)
-      (all.ids[i] < 0 ? sup : pts) += num(xy[2 * i]) + " " + num(xy[2 * i + 1]) + " " + ch::quoted(name(i)) + " " +
-                                      ch::quoted(ch::mathTextGif(pname(all.ids[i]))) + "\n";
-    ch::writeOut(o, "fig2_5_points.dat", pts);
-    ch::writeOut(o, "fig2_5_super.dat", sup);
-    // The animation's labels and markers are Figure 2.5's scaled to its view, so that a label
-    // copied from a panel keeps the same room around it (fig2_5_anim.gp: ANIM_FONT of FS, ANIM_PS
-    // of PS; the labels set smaller than Figure 2.5's where the view is smaller).
-    const double ratio = pa.scale() / ch::cellPanel(fs, 2, 3, 0, x0 - m, x1 + m, y0 - m, y1 + m).scale();
-    const double animFont = 0.85 * fs.em * ratio / fa.em, animPs = 1.3 * fs.em * ratio / fa.em;
-    ch::writeOut(o, "fig2_5_view.gp", view + "VIEWA = \"" + pa.gnuplot() + "\"\n" +
-                                          ch::fmt("ANIM_FONT = %.4f; ANIM_PS = %.4f\n", animFont, animPs));
-    std::vector<double> fangle(np, NAN);
-    for (int f = 0; f < frame; ++f) {
-      // The triangulation a frame shows: DT_k on the ball frame 2k, DT_{k-1} on the cavity
-      // frame 2k-1; the points inserted so far (and the one being inserted) are labelled.
-      const int k = f == 0 ? 0 : f % 2 == 0 ? f / 2 : (f - 1) / 2;
-      const std::size_t labelled = 4 + std::size_t((f + 1) / 2);
-      ch::LabelPlacer place(pa, animFont * fa.em);
-      place.segments(allFrames[f], 1.5 * std::max(1.5, fa.em / 18));
-      for (const CircleXY& c : frameCircles[f]) place.circle(c.x, c.y, c.r, 1.5 * std::max(1.5, fa.em / 18));
-      for (std::size_t i = 0; i < np; ++i) place.marker(xy[2 * i], xy[2 * i + 1], ch::pointRadius(fa, animPs));
-      if (frameNew[f] >= 0) place.marker(xy[2 * frameNew[f]], xy[2 * frameNew[f] + 1], ch::pointRadius(fa, 1.4 * animPs));
-      std::string labels;
-      // A frame without circles that shows a panel's triangulation takes that panel's labels
-      // (the two views have about the same label size per data unit); the others are placed,
-      // in the panel's directions where they are clear.
-      const bool same = staticAt.count(k) && frameCircles[f].empty();
-      std::vector<std::size_t> order(labelled);  // the most crowded first: edges and circles near
-      std::vector<int> degree(labelled, 0);
-      for (std::size_t i = 0; i < labelled; ++i) {
-        order[i] = i;
-        for (const CircleXY& c : frameCircles[f])
-          degree[i] += 2 * (std::fabs(std::hypot(xy[2 * i] - c.x, xy[2 * i + 1] - c.y) - c.r) * pa.scale() < 2 * fa.em);
-        for (const ch::Seg& e : allFrames[f])
-          degree[i] += (e.x0 == xy[2 * i] && e.y0 == xy[2 * i + 1]) || (e.x1 == xy[2 * i] && e.y1 == xy[2 * i + 1]);
-      }
-      std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return degree[a] > degree[b]; });
-      std::vector<std::pair<double, double>> at(labelled);
-      for (const std::size_t i : order) {
-        const double prefer = staticAt.count(k) ? staticAngle[k][i] : fangle[i];
-        at[i] = same ? staticAt[k][i] : place.placeAttached(xy[2 * i], xy[2 * i + 1], name(i), allFrames[f], prefer, 1.5, 1.5 / 0.85, &fangle[i]);
-        if (same) fangle[i] = staticAngle[k][i];
-      }
-      for (std::size_t i = 0; i < labelled; ++i)
-        labels += row(i, at[i].first, at[i].second) + " " + ch::quoted(ch::mathTextGif(pname(all.ids[i]))) + "\n";
-      dt::writeFileAtomic(o.out + ch::fmt("/fig2_5_anim_%02d_labels.dat", f), labels);
-    }
-  }
   std::cout << "wrote " << frame << " animation data sets " << o.out << "/fig2_5_anim_NN_*.dat\n";
   ch::writeOut(o, "fig2_5_anim_titles.dat", titles);
   ch::writeOut(o, "fig2_5_anim_count.dat", std::to_string(frame) + "\n");
   tab.emit(o, "table_fig2_5");
+}
+
+// Points and labels. fig2_5_points.dat and fig2_5_super.dat: x y name giflabel (the markers).
+// Each panel K of Figure 2.5 has its own labels (fig2_5_labels_K.dat: x y name lx ly super),
+// placed with that panel's edges by placeAttached: beside its own point, on the point's side
+// of every edge, within 1.5 em of the figure (1.5 / 0.85 of the labels' own em; one place for
+// six panels was next to other points).
+// A label keeps its direction from panel to panel where it can. Each animation frame has its
+// labels too (fig2_5_anim_NN_labels.dat: x y name lx ly super giflabel), in the direction of
+// the static panel that shows the same triangulation (at its very places on a frame without
+// circles), clear of the frame's circles.
+void figure25Panels(const ch::Options& o, Fig25& F) {
+  const XY& xy = F.xy;
+  const std::vector<std::vector<CircleXY>>& frameCircles = F.frameCircles;
+  double &x0 = F.x0, &x1 = F.x1, &y0 = F.y0, &y1 = F.y1;
+  x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
+  for (std::size_t i = 0; i < xy.size(); i += 2)
+    x0 = std::min(x0, xy[i]), x1 = std::max(x1, xy[i]), y0 = std::min(y0, xy[i + 1]), y1 = std::max(y1, xy[i + 1]);
+  const double m = F.m = 0.11 * (x1 - x0);  // room for the super-vertices' labels outside the square
+  // The animation's one view holds every circle of every frame (none cut by the canvas).
+  double ax0 = x0 - m, ax1 = x1 + m, ay0 = y0 - m, ay1 = y1 + m;
+  for (const auto& cs : frameCircles)
+    for (const CircleXY& c : cs)
+      ax0 = std::min(ax0, c.x - c.r), ax1 = std::max(ax1, c.x + c.r), ay0 = std::min(ay0, c.y - c.r), ay1 = std::max(ay1, c.y + c.r);
+  const double am = 0.01 * (ax1 - ax0);
+  const ch::FigureSize fs = F.fs = ch::figureSize("fig2_5"), fa = F.fa = ch::figureSize("fig2_5_anim");
+  const ch::Panel pa = F.pa = ch::cellPanel(fa, 1, 1, 0, ax0 - am, ax1 + am, ay0 - am, ay1 + am, 2.5);
+  const int panelOf[6] = {0, 1, 2, 3, 4, 9};
+  const dt::BowyerWatsonResult& all = F.all;
+  const std::size_t np = all.ids.size();
+  auto name = [&](std::size_t i) { return F.name(i); };
+  auto row = [&](std::size_t i, double lx, double ly) { return F.row(i, lx, ly); };
+  const std::vector<std::vector<ch::Seg>>& shown = F.shown;
+  // The labels of Figure 2.5 are set at 0.85 em (7.2 pt at 15 cm printed, 2 x 3 panels).
+  std::vector<double> angle(np, NAN);
+  std::vector<std::vector<double>>& staticAngle = F.staticAngle;
+  staticAngle.assign(10, std::vector<double>(np, NAN));
+  std::map<int, std::vector<std::pair<double, double>>>& staticAt = F.staticAt;
+  std::string view;
+  for (int k = 0; k < 6; ++k) {
+    const ch::Panel pk = ch::cellPanel(fs, 2, 3, k, x0 - m, x1 + m, y0 - m, y1 + m);
+    view += ch::fmt("P%d = \"", k + 1) + pk.gnuplot() + "\"\n";
+    ch::LabelPlacer place(pk, 0.85 * fs.em);
+    place.segments(shown[k], 1.5 * std::max(1.5, fs.em / 18));
+    for (std::size_t i = 0; i < np; ++i) place.marker(xy[2 * i], xy[2 * i + 1], ch::pointRadius(fs, 1.3));
+    // The most crowded points first (most edges at them): their few clear wedges go to them.
+    std::vector<std::size_t> order(np);
+    std::vector<int> degree(np, 0);
+    for (std::size_t i = 0; i < np; ++i) {
+      order[i] = i;
+      for (const ch::Seg& e : shown[k])
+        degree[i] += (e.x0 == xy[2 * i] && e.y0 == xy[2 * i + 1]) || (e.x1 == xy[2 * i] && e.y1 == xy[2 * i + 1]);
+    }
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return degree[a] > degree[b]; });
+    std::vector<std::pair<double, double>> at(np);
+    for (const std::size_t i : order) {
+      at[i] = place.placeAttached(xy[2 * i], xy[2 * i + 1], name(i), shown[k], angle[i], 5, 1.5 / 0.85, &angle[i]);
+      staticAngle[panelOf[k]][i] = angle[i];
+    }
+    staticAt[panelOf[k]] = at;
+    std::string labels;
+    for (std::size_t i = 0; i < np; ++i) labels += row(i, at[i].first, at[i].second) + "\n";
+    ch::writeOut(o, ch::fmt("fig2_5_labels_%d.dat", panelOf[k]), labels);
+  }
+  std::string pts, sup;
+  for (std::size_t i = 0; i < np; ++i)
+    (all.ids[i] < 0 ? sup : pts) += num(xy[2 * i]) + " " + num(xy[2 * i + 1]) + " " + ch::quoted(name(i)) + " " +
+                                    ch::quoted(ch::mathTextGif(pname(all.ids[i]))) + "\n";
+  ch::writeOut(o, "fig2_5_points.dat", pts);
+  ch::writeOut(o, "fig2_5_super.dat", sup);
+  // The animation's labels and markers are Figure 2.5's scaled to its view, so that a label
+  // copied from a panel keeps the same room around it (fig2_5_anim.gp: ANIM_FONT of FS, ANIM_PS
+  // of PS; the labels set smaller than Figure 2.5's where the view is smaller).
+  const double ratio = pa.scale() / ch::cellPanel(fs, 2, 3, 0, x0 - m, x1 + m, y0 - m, y1 + m).scale();
+  const double animFont = F.animFont = 0.85 * fs.em * ratio / fa.em, animPs = F.animPs = 1.3 * fs.em * ratio / fa.em;
+  ch::writeOut(o, "fig2_5_view.gp", view + "VIEWA = \"" + pa.gnuplot() + "\"\n" +
+                                        ch::fmt("ANIM_FONT = %.4f; ANIM_PS = %.4f\n", animFont, animPs));
+}
+
+// The animation's labels, frame by frame (see figure25Panels).
+void figure25Frames(const ch::Options& o, const Fig25& F) {
+  const XY& xy = F.xy;
+  const dt::BowyerWatsonResult& all = F.all;
+  const std::size_t np = all.ids.size();
+  const ch::FigureSize& fa = F.fa;
+  const ch::Panel& pa = F.pa;
+  const int frame = F.frame;
+  const double animFont = F.animFont, animPs = F.animPs;
+  const auto& allFrames = F.allFrames;
+  const auto& frameCircles = F.frameCircles;
+  const auto& frameNew = F.frameNew;
+  const auto& staticAngle = F.staticAngle;
+  const auto& staticAt = F.staticAt;
+  auto name = [&](std::size_t i) { return F.name(i); };
+  auto row = [&](std::size_t i, double lx, double ly) { return F.row(i, lx, ly); };
+  std::vector<double> fangle(np, NAN);
+  for (int f = 0; f < frame; ++f) {
+    // The triangulation a frame shows: DT_k on the ball frame 2k, DT_{k-1} on the cavity
+    // frame 2k-1; the points inserted so far (and the one being inserted) are labelled.
+    const int k = f == 0 ? 0 : f % 2 == 0 ? f / 2 : (f - 1) / 2;
+    const std::size_t labelled = 4 + std::size_t((f + 1) / 2);
+    ch::LabelPlacer place(pa, animFont * fa.em);
+    place.segments(allFrames[f], 1.5 * std::max(1.5, fa.em / 18));
+    for (const CircleXY& c : frameCircles[f]) place.circle(c.x, c.y, c.r, 1.5 * std::max(1.5, fa.em / 18));
+    for (std::size_t i = 0; i < np; ++i) place.marker(xy[2 * i], xy[2 * i + 1], ch::pointRadius(fa, animPs));
+    if (frameNew[f] >= 0) place.marker(xy[2 * frameNew[f]], xy[2 * frameNew[f] + 1], ch::pointRadius(fa, 1.4 * animPs));
+    std::string labels;
+    // A frame without circles that shows a panel's triangulation takes that panel's labels
+    // (the two views have about the same label size per data unit); the others are placed,
+    // in the panel's directions where they are clear.
+    const bool same = staticAt.count(k) && frameCircles[f].empty();
+    std::vector<std::size_t> order(labelled);  // the most crowded first: edges and circles near
+    std::vector<int> degree(labelled, 0);
+    for (std::size_t i = 0; i < labelled; ++i) {
+      order[i] = i;
+      for (const CircleXY& c : frameCircles[f])
+        degree[i] += 2 * (std::fabs(std::hypot(xy[2 * i] - c.x, xy[2 * i + 1] - c.y) - c.r) * pa.scale() < 2 * fa.em);
+      for (const ch::Seg& e : allFrames[f])
+        degree[i] += (e.x0 == xy[2 * i] && e.y0 == xy[2 * i + 1]) || (e.x1 == xy[2 * i] && e.y1 == xy[2 * i + 1]);
+    }
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return degree[a] > degree[b]; });
+    std::vector<std::pair<double, double>> at(labelled);
+    for (const std::size_t i : order) {
+      const double prefer = staticAt.count(k) ? staticAngle[k][i] : fangle[i];
+      at[i] = same ? staticAt.at(k)[i] : place.placeAttached(xy[2 * i], xy[2 * i + 1], name(i), allFrames[f], prefer, 1.5, 1.5 / 0.85, &fangle[i]);
+      if (same) fangle[i] = staticAngle[k][i];
+    }
+    for (std::size_t i = 0; i < labelled; ++i)
+      labels += row(i, at[i].first, at[i].second) + " " + ch::quoted(ch::mathTextGif(pname(all.ids[i]))) + "\n";
+    dt::writeFileAtomic(o.out + ch::fmt("/fig2_5_anim_%02d_labels.dat", f), labels);
+  }
+}
+
+void figure25(const ch::Options& o) {
+  Fig25 F;
+  figure25Steps(o, F);
+  figure25Panels(o, F);
+  figure25Frames(o, F);
   ch::runGnuplot(o, "fig2_5.gp");
   ch::runGnuplot(o, "fig2_5_anim.gp");
 }

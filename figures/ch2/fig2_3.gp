@@ -31,7 +31,7 @@ do for [term in "png svg"] {
        datadir."/fig2_3_names.dat" using 1:2:3 with labels tc rgb C_TRI
   eval panel(2, "one step: ".M."𝐶_𝐼} beyond ".M."𝑝_2𝑝_4} lies in ".M."𝐶_𝐽}")
   eval PB
-  plot datadir."/fig2_3_cap.dat" with filledcurves closed fc rgb C_CAVITY fs solid 1.0, \
+  plot datadir."/fig2_3_cap.dat" with filledcurves closed fc rgb C_CAP fs solid 1.0, \
        datadir."/fig2_3_steptri.dat" with lines lw 2 lc rgb C_TRI, \
        datadir."/fig2_3_edge.dat" index 1 with lines lw 1.5 dt 3 lc rgb C_CONSTRUCT, \
        datadir."/fig2_3_edge.dat" index 0 with lines lw 4 lc rgb C_CAVITY_EDGE, \

@@ -103,6 +103,7 @@ C_CONFLICT = "#c51b7d"       # conflicts: wrong signs, crossing edges, removed e
 C_UNCOVERED = "#f4a582"      # the part of the convex hull that no triangle covers
 C_HULL = "#dde6f0"           # a convex hull or polygon, shaded as background
 C_CIRCLE = "#1a3f8f"         # circumcircles (dashed)
+C_CAP = "#b9cdeb"            # the part of a circumcircle beyond an edge (Figure 2.3 (b)), shaded
 C_SUPER = "#7b3294"          # super-vertices p_{-1}, p_{-2}, ...
 C_CONSTRUCT = "#8c8c8c"      # construction lines (dotted)
 C_KERNEL = "#fde49c"         # fill of a kernel ker(Σ) (Figure 2.2)
