@@ -11,6 +11,7 @@
 // markers and their labels go through the same checks. The checkers are tested on bad input too.
 #include <doctest/doctest.h>
 
+#include "figure_run.h"
 #include "svg_attr.h"
 
 #include <algorithm>
@@ -665,88 +666,11 @@ std::vector<std::string> overlaps(const Svg& svg) {
 
 // ---- one run of the chapter programs -----------------------------------------------------
 
-/// One cache as Linux describes it under /sys/devices/system/cpu/cpu0/cache/<index>/.
-struct PlantedCache {
-  std::string index, level, type, size;
-};
-
-/// Writes a fresh copy of that description into `dir`: for each cache a directory `index`
-/// holding the files level, type and size.
-void plantCaches(const fs::path& dir, const std::vector<PlantedCache>& caches) {
-  fs::remove_all(dir);
-  for (const PlantedCache& c : caches) {
-    fs::create_directories(dir / c.index);
-    std::ofstream(dir / c.index / "level") << c.level << "\n";
-    std::ofstream(dir / c.index / "type") << c.type << "\n";
-    std::ofstream(dir / c.index / "size") << c.size << "\n";
-  }
-}
-
-/// The caches bench_parallel marks in the figure run (--cache-dir): an instruction cache, which
-/// it leaves out, and three data or unified ones small enough that the n at which the kernel's
-/// data fills each is within the run's sizes. That n is the size over the bytes per point of the
-/// largest n, and a small run's peak memory is mostly the process's own (about 3 MB in a
-/// Release build, 60 MB with the sanitizers): with --max-n 100000 the three fall between about
-/// 800 and 20000 points in both builds, inside the chart's sizes (from about 316 to 10^5).
-const std::vector<PlantedCache> kFigureRunCaches = {{"index0", "1", "Instruction", "32K"},
-                                                    {"index1", "1", "Data", "512K"},
-                                                    {"index2", "2", "Unified", "1024K"},
-                                                    {"index3", "3", "Unified", "2M"}};
-
-/// The directory the chapter programs wrote into (run once per test process), the planted
-/// cache description bench_parallel read (empty with DT_FIGURES_DIR), and the programs that
-/// failed, with their log.
-struct Run {
-  fs::path dir;
-  fs::path caches;
-  std::vector<std::string> failures;
-};
-
-const Run& figureRun() {
-  static const Run run = [] {
-    Run r;
-    // DT_FIGURES_DIR: check the figures already in that directory (e.g. build/output/ch2 after
-    // scripts/main.sh) instead of running the programs.
-    if (const char* dir = std::getenv("DT_FIGURES_DIR")) {
-      r.dir = dir;
-      return r;
-    }
-    r.dir = fs::path(DT_TEST_TMP) / "figures";
-    fs::remove_all(r.dir);
-    fs::create_directories(r.dir);
-    r.caches = fs::path(DT_TEST_TMP) / "figures_caches";
-    plantCaches(r.caches, kFigureRunCaches);
-    const fs::path bin = fs::path(DT_CLI).parent_path();
-    // The programs that draw the book's figures (bench_kernels and sec2_3_3 draw none).
-    const char* programs[] = {"sec2_1_kernel", "sec2_2_bowyer_watson", "sec2_2_2_outside_hull",
-                              "sec2_3_1_predicates", "sec2_3_2_adjacencies", "sec2_3_4_algorithms",
-                              "sec2_3_5_hilbert", "sec2_3_6_flips", "opt_ladder",
-                              "bench_parallel"};
-    // All at once (they are independent and each writes its own files): on two cores the run
-    // takes about half its CPU time. Each program's exit status goes to <prog>.rc. The paths
-    // reach bash through the environment, never as code.
-    // bench_parallel measures up to 10^5 points (its --quick size, about a second), so that
-    // the planted caches fall within its chart (kFigureRunCaches); at 2000 it measures one size.
-    std::string script;
-    for (const std::string prog : programs) {
-      const std::string extra = prog == "sec2_3_4_algorithms" ? " --max-n 2000 --no-profile"
-                                : prog == "bench_parallel"    ? " --max-n 100000 --cache-dir \"$DT_CACHES\""
-                                                              : " --max-n 2000";
-      script += "( \"$DT_BIN/" + prog + "\" --quick" + extra + " --out \"$DT_DIR\" > \"$DT_DIR/" +
-                prog + ".log\" 2>&1; echo $? > \"$DT_DIR/" + prog + ".rc\" ) & ";
-    }
-    script += "wait";
-    ch::ProcessIo io;
-    io.env = {{"DT_BIN", bin.string()}, {"DT_DIR", r.dir.string()}, {"DT_CACHES", r.caches.string()}};
-    ch::runProgram({"bash", "-c", script}, io);
-    for (const std::string prog : programs) {
-      const fs::path stem = r.dir / prog;
-      if (readAll(stem.string() + ".rc") != "0\n") r.failures.push_back(prog + " (log: " + stem.string() + ".log)");
-    }
-    return r;
-  }();
-  return run;
-}
+// The chapter programs' run that the figure tests share (tests/figure_run.h).
+using dttest::PlantedCache;
+using dttest::plantCaches;
+using Run = dttest::FigureRun;
+const Run& figureRun() { return dttest::figureRun(); }
 
 std::vector<fs::path> outputs(const fs::path& dir, const std::string& ext) {
   std::vector<fs::path> out;

@@ -10,6 +10,7 @@
 // notation.txt and promises.txt.
 #include <doctest/doctest.h>
 
+#include "figure_run.h"
 #include "svg_attr.h"
 
 #include <algorithm>
@@ -763,44 +764,12 @@ std::string timingCaptionMissing(const std::string& caption, const std::string& 
 
 // ---- one run of the chapter programs ---------------------------------------------------------
 
+// The chapter programs' run that the figure tests share (tests/figure_run.h); a program that
+// failed fails the test that reads the run.
 fs::path figureDir() {
-  static const fs::path dir = [] {
-    if (const char* d = std::getenv("DT_FIGURES_DIR")) return fs::path(d);
-    const fs::path out = fs::path(DT_TEST_TMP) / "figures_rules";
-    fs::remove_all(out);
-    fs::create_directories(out);
-    // bench_parallel reads a planted cache description, so that its chart draws its cache
-    // lines (the caption promises them) whatever this machine's caches are.
-    const fs::path caches = fs::path(DT_TEST_TMP) / "figures_rules_caches";
-    fs::remove_all(caches);
-    const char* planted[][3] = {{"index0", "1", "Data"}, {"index1", "2", "Unified"}, {"index2", "3", "Unified"}};
-    const char* sizes[] = {"512K", "1024K", "2M"};
-    for (int k = 0; k < 3; ++k) {
-      fs::create_directories(caches / planted[k][0]);
-      std::ofstream(caches / planted[k][0] / "level") << planted[k][1] << "\n";
-      std::ofstream(caches / planted[k][0] / "type") << planted[k][2] << "\n";
-      std::ofstream(caches / planted[k][0] / "size") << sizes[k] << "\n";
-    }
-    const char* programs[] = {"sec2_1_kernel", "sec2_2_bowyer_watson", "sec2_2_2_outside_hull", "sec2_3_1_predicates",
-                              "sec2_3_2_adjacencies", "sec2_3_4_algorithms", "sec2_3_5_hilbert", "sec2_3_6_flips",
-                              "opt_ladder", "bench_parallel"};
-    std::string script;
-    for (const std::string prog : programs) {
-      const std::string extra = prog == "sec2_3_4_algorithms" ? " --max-n 2000 --no-profile"
-                                : prog == "bench_parallel"    ? " --max-n 100000 --cache-dir \"$DT_CACHES\""
-                                                              : " --max-n 2000";
-      script += "( \"$DT_BIN/" + prog + "\" --quick" + extra + " --out \"$DT_DIR\" > \"$DT_DIR/" + prog + ".log\" 2>&1; echo $? > \"$DT_DIR/" +
-                prog + ".rc\" ) & ";
-    }
-    script += "wait";
-    ch::ProcessIo io;
-    io.env = {{"DT_BIN", fs::path(DT_CLI).parent_path().string()}, {"DT_DIR", out.string()}, {"DT_CACHES", caches.string()}};
-    ch::runProgram({"bash", "-c", script}, io);
-    for (const std::string prog : programs)
-      if (slurp(out / (prog + ".rc")) != "0\n") FAIL(prog << " failed (log: " << (out / (prog + ".log")).string() << ")");
-    return out;
-  }();
-  return dir;
+  const dttest::FigureRun& run = dttest::figureRun();
+  for (const std::string& f : run.failures) FAIL(f << " failed");
+  return run.dir;
 }
 
 const std::map<std::string, SvgDrawing>& runSvgs() {
