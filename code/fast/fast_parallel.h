@@ -116,8 +116,7 @@ int defaultThreadCount();
 /// into the smallest-numbered equal point, as fastDelaunay does; opt.insertionNumbering is
 /// honoured, and opt.progress is called by the calling thread only (during a concurrent round
 /// with estimated counts: its own piece's, times the number of threads). Same exceptions as
-/// fastDelaunay, and std::invalid_argument for a ladder switch or another order when threads >
-/// 1. A round is
+/// fastDelaunay, and std::invalid_argument for another order when threads > 1. A round is
 /// inserted concurrently when each thread gets at least minPiece points of it (the tests make it
 /// small, and the mode Always, to make threads meet on small inputs).
 FastResult fastDelaunayParallel(const std::vector<double>& xy, int threads,
