@@ -85,8 +85,8 @@ struct Variant {
 
 std::vector<Variant> allVariants() {
   std::vector<Variant> v;
-  for (dt::FastOrder ord : {dt::FastOrder::RadixBrio, dt::FastOrder::Brio, dt::FastOrder::Hilbert,
-                            dt::FastOrder::Input}) {
+  for (dt::InsertionOrder ord : {dt::InsertionOrder::Brio, dt::InsertionOrder::BrioDoubling, dt::InsertionOrder::Hilbert,
+                            dt::InsertionOrder::Input}) {
     dt::FastOptions o;
     o.order = ord;
     v.push_back({o, library});
@@ -157,7 +157,7 @@ TEST_CASE("fast kernel merges duplicates into the smallest-numbered equal point"
     p.push_back(base[10]);
     p.push_back(base[11]);
   }
-  for (dt::FastOrder ord : {dt::FastOrder::RadixBrio, dt::FastOrder::Input}) {
+  for (dt::InsertionOrder ord : {dt::InsertionOrder::Brio, dt::InsertionOrder::Input}) {
     dt::FastOptions o;
     o.order = ord;
     const dt::FastResult r = fastChecked(p, o);
@@ -250,14 +250,6 @@ TEST_CASE("fast kernel delaunay2d --kernel fast (the default) and --kernel listi
   CHECK(dttest::runCli("'" + in + "' -o x --kernel quick").status == 2);
 }
 
-TEST_CASE("fast kernel fastHilbertKeys is hilbert.h's table-driven hilbertKeysFast") {
-  // The keys themselves are tested against hilbertIndex in test_hilbert_sort.cpp.
-  const dttest::XY p = dttest::uniformPoints(5000, 4);
-  CHECK(dt::fastHilbertKeys(p) == dt::hilbertKeys(p, 0));
-  CHECK(dt::fastHilbertKeys(p, 7) == dt::hilbertKeys(p, 7));
-  CHECK_THROWS_AS(dt::fastHilbertKeys(p, 32), std::invalid_argument);
-}
-
 TEST_CASE("fast kernel handles a cavity of hundreds of triangles (the centre of a circle inserted last)") {
   // Every triangle of the points on the circle has the centre strictly inside its circle: the
   // last insertion removes them all, and its boundary has 400 edges (a deep cavity search).
@@ -265,7 +257,7 @@ TEST_CASE("fast kernel handles a cavity of hundreds of triangles (the centre of 
   p.push_back(0);
   p.push_back(0);
   dt::FastOptions o;
-  o.order = dt::FastOrder::Input;
+  o.order = dt::InsertionOrder::Input;
   const dt::FastResult r = fastChecked(p, o);
   CHECK(r.tri.size() == 400);  // the fan around the centre
   CHECK(r.stats.cavityFaces >= 398);

@@ -112,7 +112,7 @@ int main(int argc, char** argv) {
 
   std::vector<Step> steps;
   dt::FastOptions f;
-  f.order = dt::FastOrder::Hilbert;
+  f.order = dt::InsertionOrder::Hilbert;
   // Every step in the build for every x86-64 processor but the last.
   steps.push_back({"listings", "corrected listings: pointers, std::map, centroid walk; Hilbert "
                    "order, walk from the last cavity (the setting of Table 2.2)", true, f, mapCentroid});
@@ -126,10 +126,10 @@ int main(int argc, char** argv) {
                    "faces the next one, not in the last new triangle", false, f, calledNear});
   steps.push_back({"inline", "the predicate core (predicates_inline.h) inlined, without the "
                    "library's counters", false, f, inlined});
-  f.order = dt::FastOrder::Brio;
+  f.order = dt::InsertionOrder::BrioDoubling;
   steps.push_back({"BRIO", "BRIO order (dt::brioOrder): no skinny hull triangles, smaller "
                    "cavities", false, f, inlined});
-  f.order = dt::FastOrder::RadixBrio;
+  f.order = dt::InsertionOrder::Brio;
   steps.push_back({"coin BRIO", "BRIO rounds by a biased coin (dt::brioCoinOrder: 3/4 of the "
                    "points in the last round; a coarser curve, dt::brioCoinDepth)", false, f, inlined});
   // The last step changes no line of the kernel: it is the library's fastDelaunay, whose

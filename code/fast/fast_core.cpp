@@ -112,16 +112,16 @@ Ordered orderOneThread(const std::vector<double>& xy, const FastOptions& opt) {
   Ordered o;
   o.orig.reserve(n);
   adviseHugePages(o.orig.data(), n * sizeof(int));
-  if (opt.order == FastOrder::Input) {
+  if (opt.order == InsertionOrder::Input) {
     for (std::size_t i = 0; i < n; ++i) o.orig.push_back(int(i));
-  } else if (opt.order == FastOrder::RadixBrio) {  // hilbert.h: one sort for the whole library
+  } else if (opt.order == InsertionOrder::Brio) {  // hilbert.h: one sort for the whole library
     o.memA = adjacencyMemory(slotsFor(n), n);
     const std::size_t* r =
         brioCoinOrderInto(xy, opt.seed, std::max(1, std::min(opt.rounds, 32)), o.memA.get());
     o.orig.assign(r, r + n);
   } else {
     const std::vector<std::size_t> r =
-        opt.order == FastOrder::Brio ? brioOrder(xy, opt.seed) : hilbertOrder(xy);
+        opt.order == InsertionOrder::BrioDoubling ? brioOrder(xy, opt.seed) : hilbertOrder(xy);
     o.orig.assign(r.begin(), r.end());
   }
   if (!o.memA) o.memA = adjacencyMemory(slotsFor(n), n);

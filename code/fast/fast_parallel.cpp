@@ -204,7 +204,7 @@ double uniformCutShare(int threads) {
 }
 
 void requireDefaultOrder(const FastOptions& opt) {
-  if (opt.order != FastOrder::RadixBrio)
+  if (opt.order != InsertionOrder::Brio)
     throw std::invalid_argument("fastDelaunayParallel: more than one thread needs the default order");
 }
 

@@ -106,7 +106,7 @@ int defaultThreadCount();
 /// itself) below the model's size or where the slabs would not split; pstats says which and
 /// why. threads <= 1 calls fastDelaunay(xy, opt). With more than one thread the small first
 /// BRIO rounds (opt.order
-/// must be FastOrder::RadixBrio) are inserted by one thread, and each larger round is shared
+/// must be InsertionOrder::Brio) are inserted by one thread, and each larger round is shared
 /// among the threads (claim: Slabs, each thread the round's points in one slab of x, cut
 /// at the x-quantiles of a sample of the round, in Hilbert order; Locks, consecutive pieces of the round's
 /// Hilbert order), inserted concurrently; insertions that need another thread's triangles are

@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "order.h"
 #include "predicate_stages.h"
 #include "tri.h"
 
@@ -16,19 +17,11 @@ namespace dt {
 
 struct FastStats;
 
-/// Insertion order of fastDelaunay.
-enum class FastOrder {
-  RadixBrio,  ///< dt::brioCoinOrder (hilbert.h): BRIO rounds drawn by biased coins (default)
-  Brio,       ///< dt::brioOrder (hilbert.h): BRIO rounds of doubling sizes, each Hilbert-sorted
-  Hilbert,    ///< dt::hilbertOrder (hilbert.h): one Hilbert sort of all the points
-  Input       ///< the order of the input
-};
-
 /// Options of fastDelaunay: what a user of the library chooses. (The optimisation ladder's rungs
 /// are policies of the insertion core, fast_core.h, put together by opt_ladder.)
 struct FastOptions {
-  FastOrder order = FastOrder::RadixBrio;
-  int rounds = 8;                  ///< RadixBrio: number of rounds (1 = a plain Hilbert sort)
+  InsertionOrder order = InsertionOrder::Brio;
+  int rounds = 8;                  ///< Brio: number of rounds (1 = a plain Hilbert sort)
   std::uint64_t seed = 1;          ///< seed of the BRIO rounds
   /// Called after every `progressEvery` insertions with the points handled so far, their number
   /// and the counters so far (the command line's progress report and its warning about long
