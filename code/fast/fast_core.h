@@ -117,12 +117,8 @@ struct Store {
 
   /// Room for `slots` triangles, A in `memory` (adjacencyMemory(slots, ...)); unused slots read
   /// as {INF, INF, INF}. threads > 1: A is zeroed, and the threads map V's pages a piece each.
-  /// V is mapped at once in small pages (populatePages), as A, without the 2 MB pages of the
-  /// other arrays (hugeVector): the walks would gain a little from 2 MB pages, but a VM that
-  /// hands its freed 2 MB blocks back to the host (free page reporting, as on the machine that
-  /// measures this book) gives a fresh process those blocks cold, and mapping them again cost up
-  /// to 2.4 ms per MB there, over a quarter of the kernel's time at 10^6 points. Measured in
-  /// fresh processes at 10^6 points, alternated: 2 MB pages 0.25 to 0.36 s, these 0.26 to 0.28 s.
+  /// V is mapped at once in small pages (populatePages), as A, not in 2 MB pages (hugeVector):
+  /// those can come cold from a VM's host (book/fast_kernel.md, "Against CGAL").
   Store(const double* points, int n, std::size_t slots, int threads, RawMemory memory)
       : P(points), INF(n), memA(std::move(memory)), A(::new (memA.get()) int[3 * slots]) {
     V.reserve(slots);
@@ -648,16 +644,11 @@ class alignas(64) Inserter {  // aligned: two threads' inserters never share a c
 };
 
 // ---------------------------------------------------------------------------------------------
-// Two builds of the insertion loops. The library is compiled for every x86-64 processor; on one
-// with AVX2, BMI2 and the rest of x86-64-v3 the loops run in a second build of the same code,
-// compiled for that level (3 to 4 % faster at 10^6 points in fresh processes, alternated with
-// the baseline; opt_ladder's last step measures it in every run). runV3 is that build: flatten
-// inlines into it everything f calls, so the whole loop (walk, cavity, fill, predicates) is
-// compiled for x86-64-v3 there, while the out-of-line functions it cannot inline (the exact
-// stages of the predicates, the allocator) stay the baseline ones: no function of the baseline
-// build is ever replaced by one for x86-64-v3. The rounding is the same in both: fused
-// multiply-add is not used (-ffp-contract=off, CMakeLists.txt), so the filters' error bounds
-// hold in both. GCC on x86-64 only; elsewhere (clang, WebAssembly, ARM) there is one build.
+// Two builds of the insertion loops: the library's, for every x86-64 processor, and one for
+// x86-64-v3 (AVX2, BMI2), chosen at run time; opt_ladder's last step measures what it gains.
+// flatten inlines everything the loop calls into runV3; what it cannot inline (the exact
+// stages, the allocator) stays in the baseline build. Both round alike: no fused multiply-add
+// (-ffp-contract=off, CMakeLists.txt), so the filters' error bounds hold. GCC on x86-64 only.
 //! [twoBuilds]
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
 #define DT_FAST_X86_64_V3 1
