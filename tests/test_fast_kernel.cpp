@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include <sys/mman.h>
@@ -300,9 +301,10 @@ TEST_CASE("fast kernel dt::triangulate gives the same DT(S) with every kernel an
   // reported against the first of the three, not against the one before it).
   p.insert(p.end(), {p[20], p[21], p[6], p[7], p[20], p[21]});
   const Tris ref = canonical(listings(std::vector<double>(p.begin(), p.end() - 6)));
+  CHECK_THROWS_AS(dt::orderNamed("brio-coin"), std::invalid_argument);
   for (dt::KernelChoice k : {dt::KernelChoice::Fast, dt::KernelChoice::Listings})
     for (dt::BuildMethod m : {dt::BuildMethod::Hull, dt::BuildMethod::Super})
-      for (const char* order : {"brio", "hilbert", "input"}) {
+      for (const char* order : {"brio", "brio-doubling", "hilbert", "input"}) {
         CAPTURE(int(k));
         CAPTURE(int(m));
         CAPTURE(order);
@@ -310,6 +312,7 @@ TEST_CASE("fast kernel dt::triangulate gives the same DT(S) with every kernel an
         o.kernel = k;
         o.method = m;
         o.order = dt::orderNamed(order);
+        CHECK(std::string(dt::orderName(o.order)) == order);  // the words read back
         const dt::TriangulateResult r = dt::triangulate(p, o);
         CHECK(r.checked);
         Tris t = r.tri;  // in the input's numbering
