@@ -17,8 +17,8 @@ namespace dt {
 
 struct FastStats;
 
-/// Options of fastDelaunay: what a user of the library chooses. (The optimisation ladder's rungs
-/// are policies of the insertion core, fast_core.h, put together by opt_ladder.)
+/// Options of fastDelaunay: what a user of the library chooses. The predicates, the walk, the
+/// link step and the build are policies of the insertion core (fast_core.h), not options.
 struct FastOptions {
   InsertionOrder order = InsertionOrder::Brio;
   int rounds = 8;                  ///< Brio: number of rounds (1 = a plain Hilbert sort)
