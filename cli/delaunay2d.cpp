@@ -1,6 +1,6 @@
 // delaunay2d: the Delaunay triangulation DT(S) of a point file, exact for every input.
 //
-//   delaunay2d points.node -o out [--method hull|super] [--order brio|hilbert|input] [--stats]
+//   delaunay2d points.node -o out [--method hull|super] [--order O] [--stats]
 //              [--svg out.svg] [--msh out.msh] [--no-check] [--kernel fast|listings]
 //
 // Reads a Triangle .node file or a plain "x y" file, writes out.ele (Triangle format,
@@ -59,7 +59,8 @@ const char* kUsage =
     "                 give the exact DT(S); with --stats, 'super' also prints recovery_flips\n"
     "  --order O      insertion order (section 2.3.5), the same for both kernels: 'brio'\n"
     "                 (default; dt::brioCoinOrder: 8 rounds drawn by biased coins, each\n"
-    "                 Hilbert-sorted), 'hilbert' (one Hilbert sort: as\n"
+    "                 Hilbert-sorted), 'brio-doubling' (dt::brioOrder: rounds of\n"
+    "                 doubling sizes), 'hilbert' (one Hilbert sort: as\n"
     "                 fast on spread-out points, quadratic on points along a curve) or\n"
     "                 'input' (file order: walks grow like sqrt(n), like n on sorted input);\n"
     "                 when a run turns quadratic (any order, either kernel), a warning on\n"
@@ -89,11 +90,11 @@ const char* kUsage =
 struct Options {
   std::string input, out, svg, msh;
   bool stats = false, check = true;
-  bool superMethod = false;  // --method super
-  bool fastKernel = true;    // --kernel fast (default) or listings
+  dt::BuildMethod method = dt::BuildMethod::Hull;
+  dt::KernelChoice kernel = dt::KernelChoice::Fast;
   // --order (2.3.5). BRIO by default: a plain Hilbert sort makes points along a curve (a
   // parabola) cost O(n) per insertion, BRIO's random rounds do not (sec2_3_5_hilbert).
-  std::string order = "brio";
+  dt::InsertionOrder order = dt::InsertionOrder::Brio;
   int progress = -1;         // --progress 1, --no-progress 0, default -1: if stderr is a tty
   bool statsOnStderr = false;  // an output goes to standard output: it carries only data
   // -o names a stream ('-', /dev/null, a named pipe, /dev/stdout): the .ele is written into it.
@@ -129,6 +130,18 @@ std::string oneLine(const std::string& text) {
 // One error line on stderr: "delaunay2d: " and the text, escaped (oneLine).
 void errorLine(const std::string& text) { std::cerr << "delaunay2d: " << oneLine(text) << "\n"; }
 
+[[noreturn]] void usageError(const std::string& why);
+
+// The value of an option word (dt::methodNamed, orderNamed, kernelNamed), or a usage error.
+template <class Parse>
+auto named(Parse parse, const std::string& word) {
+  try {
+    return parse(word);
+  } catch (const std::invalid_argument& e) {
+    usageError(e.what());
+  }
+}
+
 [[noreturn]] void usageError(const std::string& why) {
   std::cerr << "delaunay2d: " << oneLine(why)
             << " (usage: delaunay2d INPUT -o OUT [options]; delaunay2d --help for more)\n";
@@ -154,19 +167,15 @@ const OptionSpec kOptions[] = {
      [](Options& o, const std::string&) { o.check = false; }},
     {"--method", nullptr, true, "--method",
      [](Options& o, const std::string& v) {
-       if (v != "hull" && v != "super") usageError("--method must be 'hull' or 'super'");
-       o.superMethod = v == "super";
+       o.method = named(dt::methodNamed, v);
      }},
     {"--order", nullptr, true, "--order",
      [](Options& o, const std::string& v) {
-       if (v != "hilbert" && v != "brio" && v != "input")
-         usageError("--order must be 'hilbert', 'brio' or 'input'");
-       o.order = v;
+       o.order = named(dt::orderNamed, v);
      }},
     {"--kernel", nullptr, true, "--kernel",
      [](Options& o, const std::string& v) {
-       if (v != "fast" && v != "listings") usageError("--kernel must be 'fast' or 'listings'");
-       o.fastKernel = v == "fast";
+       o.kernel = named(dt::kernelNamed, v);
      }},
     {"--progress", nullptr, false, "--progress",
      [](Options& o, const std::string&) { o.progress = 1; }},
@@ -262,8 +271,8 @@ struct UnsupportedInput : std::runtime_error {
 // warning, which says what to try instead.
 class WalkWatch {
  public:
-  WalkWatch(std::string order, bool fastKernel, Progress& progress)
-      : order_(std::move(order)), fast_(fastKernel), progress_(progress) {}
+  WalkWatch(dt::InsertionOrder order, bool fastKernel, Progress& progress)
+      : order_(order), fast_(fastKernel), progress_(progress) {}
   // `done` of `total` points inserted, with the running sums of walk steps and cavity faces.
   void update(std::size_t done, std::size_t total, std::uint64_t walk, std::uint64_t cavity,
               double seconds) {
@@ -293,19 +302,19 @@ class WalkWatch {
     progress_.setQuadratic();
     // A cost per point growing linearly: the remaining time grows like total^2 - done^2.
     const double r = double(total) / double(done);
-    std::string instead = order_ != "brio" ? "--order brio avoids it"
+    std::string instead = order_ != dt::InsertionOrder::Brio ? "--order brio avoids it"
                           : fast_          ? "--kernel listings may avoid it"
                                            : "--kernel fast may avoid it";
     std::fprintf(stderr,
                  "delaunay2d: warning: %s average %.0f triangles per point after %zu of %zu "
                  "points: --order %s on this input (sorted, along a curve, or cocircular) takes "
                  "quadratic time, about %.0f s in all at this rate; %s\n",
-                 w >= c ? "walks" : "cavities", cost, done, total, order_.c_str(),
+                 w >= c ? "walks" : "cavities", cost, done, total, dt::orderName(order_),
                  seconds * r * r, instead.c_str());
   }
 
  private:
-  std::string order_;
+  dt::InsertionOrder order_;
   bool fast_, warned_ = false;
   Progress& progress_;
   std::size_t lastDone_ = 0;
@@ -384,31 +393,6 @@ std::string closedDescriptor(const dt::OutputRequest& r, const bool closedAtStar
   return "";
 }
 
-// The mesh with its vertices in input order and without the merged duplicates (the .msh numbers
-// its nodes as the input). used empty: every point is a vertex.
-dt::PlainMesh inputOrder(const std::vector<double>& xy, const std::vector<dt::Tri>& tri,
-                         const std::vector<int>& inserted, const std::vector<char>& used) {
-  const std::size_t n = inserted.size();
-  std::vector<int> node(n, -1);  // by input index: its node number, or -1 if merged
-  for (std::size_t i = 0; i < n; ++i)
-    if (used.empty() || used[i]) node[std::size_t(inserted[i])] = 0;
-  int k = 0;
-  for (int& v : node)
-    if (v == 0) v = k++;
-  dt::PlainMesh m;
-  m.xy.resize(2 * std::size_t(k));
-  for (std::size_t i = 0; i < n; ++i)
-    if (used.empty() || used[i]) {
-      const std::size_t j = std::size_t(node[std::size_t(inserted[i])]);
-      m.xy[2 * j] = xy[2 * i];
-      m.xy[2 * j + 1] = xy[2 * i + 1];
-    }
-  m.tri = tri;
-  for (auto& t : m.tri)
-    for (int& v : t) v = node[std::size_t(inserted[std::size_t(v)])];
-  return m;
-}
-
 // A pause inside the commit after each rename ("committing N"), and one after the commit
 // ("committed", renamed = 0), announced on stderr, so that a test can send a signal or start a
 // second run right then.
@@ -480,11 +464,11 @@ int delaunay2d(int argc, char** argv, const dt::cli::TestHooks& hooks) {
     };
     // The geometry is the library's (dt::triangulate): here only the options, the progress
     // report and the notes on duplicates.
-    WalkWatch watch(opt.order, opt.fastKernel, progress);
+    WalkWatch watch(opt.order, opt.kernel == dt::KernelChoice::Fast, progress);
     dt::TriangulateOptions to;
-    to.method = opt.superMethod ? dt::BuildMethod::Super : dt::BuildMethod::Hull;
-    to.kernel = opt.fastKernel ? dt::KernelChoice::Fast : dt::KernelChoice::Listings;
-    to.order = dt::orderNamed(opt.order);
+    to.method = opt.method;
+    to.kernel = opt.kernel;
+    to.order = opt.order;
     to.threads = opt.threads;
     to.check = opt.check;
     to.phase = [&](const std::string& what, std::size_t points) {
@@ -518,10 +502,7 @@ int delaunay2d(int argc, char** argv, const dt::cli::TestHooks& hooks) {
     dt::writeEle(files.writer(0), tri, r.input, ps.firstIndex);
     std::size_t next = 1;
     if (!opt.svg.empty()) dt::writeSvg(files.writer(next++), xy, tri);
-    if (!opt.msh.empty()) {
-      const dt::PlainMesh m = inputOrder(xy, tri, r.input, r.used);
-      dt::writeMsh(files.writer(next++), m.xy, m.tri);
-    }
+    if (!opt.msh.empty()) dt::writeMsh(files.writer(next++), xy, tri, r.input, r.used);
     if (hooks.holdOutputsSeconds >= 0) {
       // The outputs are written but not in place; a signal now must remove them.
       for (std::size_t i = 0; i < plan.targets.size(); ++i) files.writer(i).flush();
@@ -552,7 +533,7 @@ int delaunay2d(int argc, char** argv, const dt::cli::TestHooks& hooks) {
       const double ins = r.insertions ? double(r.insertions) : 1.0;
       std::fprintf(so, "duplicates: %zu\nmean_walk_steps: %.4f\nmean_cavity_size: %.4f\n", nDup,
                    double(r.walkSteps) / ins, double(r.cavityFaces) / ins);
-      if (opt.superMethod)
+      if (opt.method == dt::BuildMethod::Super)
         std::fprintf(so, "recovery_flips: %llu\n", (unsigned long long)r.recoveryFlips);
       std::fprintf(so, "threads_requested: %d\nthreads_used: %d\nthreads_reason: %s\n",
                    opt.threads, r.threadsUsed, r.threadsReason.c_str());

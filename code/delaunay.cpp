@@ -46,8 +46,7 @@ double systemSince(double s0) {
 void fastKernel(std::vector<double>& xy, const TriangulateOptions& opt, TriangulateResult& r) {
   const std::size_t n = xy.size() / 2;
   FastOptions fo;
-  if (opt.order == InsertionOrder::Hilbert) fo.order = FastOrder::Hilbert;
-  if (opt.order == InsertionOrder::Input) fo.order = FastOrder::Input;
+  fo.order = opt.order;
   if (opt.progress)
     fo.progress = [&](std::size_t done, std::size_t total, const FastStats& s) {
       opt.progress(done, total, s.walkSteps, s.cavityFaces);
@@ -59,7 +58,7 @@ void fastKernel(std::vector<double>& xy, const TriangulateOptions& opt, Triangul
   const double sys0 = systemSeconds();
   ParallelStats ps;
   FastResult fr =
-      fastDelaunayParallel(xy, fo.order == FastOrder::RadixBrio ? opt.threads : 1, fo, &ps);
+      fastDelaunayParallel(xy, fo.order == InsertionOrder::Brio ? opt.threads : 1, fo, &ps);
   r.seconds = since(t0);
   r.systemSeconds = systemSince(sys0);
   std::vector<double>().swap(xy);  // fr.points holds them, in insertion order
@@ -71,7 +70,7 @@ void fastKernel(std::vector<double>& xy, const TriangulateOptions& opt, Triangul
   r.cavityFaces = fr.stats.cavityFaces;
   r.duplicates = std::move(fr.duplicates);
   r.threadsUsed = ps.threadsUsed;
-  r.threadsReason = parallelReasonName(opt.threads > 1 && fo.order != FastOrder::RadixBrio
+  r.threadsReason = parallelReasonName(opt.threads > 1 && fo.order != InsertionOrder::Brio
                                            ? ParallelReason::SequentialOnly
                                            : ps.reason);
   std::vector<char> isDup(n, 0);
@@ -140,9 +139,11 @@ void listingsKernel(const std::vector<double>& xy, const TriangulateOptions& opt
     std::vector<double> pts;
     pts.reserve(2 * S.size());
     for (const Vertex* v : S) pts.insert(pts.end(), {v->x, v->y});
-    const std::vector<std::size_t> idx = opt.order == InsertionOrder::Brio
-                                             ? brioCoinOrder(pts, FastOptions{}.seed, FastOptions{}.rounds)
-                                             : hilbertOrder(pts);
+    const FastOptions same;  // the fast kernel's seed and rounds
+    const std::vector<std::size_t> idx =
+        opt.order == InsertionOrder::Brio           ? brioCoinOrder(pts, same.seed, same.rounds)
+        : opt.order == InsertionOrder::BrioDoubling ? brioOrder(pts, same.seed)
+                                                    : hilbertOrder(pts);
     std::vector<Vertex*> sorted(S.size());
     for (std::size_t k = 0; k < idx.size(); ++k) sorted[k] = S[idx[k]];
     S.swap(sorted);
@@ -226,13 +227,6 @@ BuildMethod methodNamed(const std::string& w) {
   if (w == "hull") return BuildMethod::Hull;
   if (w == "super") return BuildMethod::Super;
   throw std::invalid_argument("--method must be 'hull' or 'super'");
-}
-
-InsertionOrder orderNamed(const std::string& w) {
-  if (w == "brio") return InsertionOrder::Brio;
-  if (w == "hilbert") return InsertionOrder::Hilbert;
-  if (w == "input") return InsertionOrder::Input;
-  throw std::invalid_argument("--order must be 'hilbert', 'brio' or 'input'");
 }
 
 KernelChoice kernelNamed(const std::string& w) {

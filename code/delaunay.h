@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "order.h"
 #include "tri.h"
 
 namespace dt {
@@ -19,14 +20,6 @@ namespace dt {
 enum class BuildMethod {
   Hull,  ///< a first triangle closed by ghost faces, points outside the hull inserted directly (2.2.2)
   Super  ///< super-triangles, then DT(S) recovered from DT(S0 u S) by flips (2.2.1, 2.3.6); listings
-};
-
-/// Insertion order (2.3.5). One meaning each, whatever the kernel:
-enum class InsertionOrder {
-  Brio,     ///< dt::brioCoinOrder (hilbert.h): 8 BRIO rounds drawn by biased coins, seed 1,
-            ///< each Hilbert-sorted (the default: no input makes its walks grow)
-  Hilbert,  ///< dt::hilbertOrder: one Hilbert sort (quadratic on points along a curve)
-  Input     ///< the order of the input (walks grow like sqrt(n); like n on sorted input)
 };
 
 /// Which data structure inserts.
@@ -99,10 +92,9 @@ TriangulateResult triangulate(std::vector<double> xy, const TriangulateOptions& 
 /// difference of two readings.
 double systemSeconds();
 
-/// The option words of the command line: "hull"/"super", "brio"/"hilbert"/"input",
-/// "fast"/"listings". Throws std::invalid_argument on any other word.
+/// The option words of the command line: "hull"/"super", "fast"/"listings" (the orders' words:
+/// order.h). Throws std::invalid_argument on any other word.
 BuildMethod methodNamed(const std::string& word);
-InsertionOrder orderNamed(const std::string& word);
 KernelChoice kernelNamed(const std::string& word);
 
 }  // namespace dt

@@ -115,7 +115,7 @@ Tris hullMethod(const dtdeg::Family& f, dt::StartRule rule) {
   return tri;
 }
 
-Tris fastMethod(const dtdeg::Family& f, dt::FastOrder order) {
+Tris fastMethod(const dtdeg::Family& f, dt::InsertionOrder order) {
   dt::FastOptions o;
   o.order = order;
   const dt::FastResult r = dt::fastDelaunay(f.points, o);
@@ -186,8 +186,8 @@ TEST_CASE("degenerate families the hull method (2.2.2) gives the exact DT(S)") {
 TEST_CASE("degenerate families the fast kernel gives the exact DT(S) in every order") {
   for (const dtdeg::Family& f : dtdeg::families()) {
     CAPTURE(f.name);
-    for (dt::FastOrder o : {dt::FastOrder::RadixBrio, dt::FastOrder::Brio,
-                            dt::FastOrder::Hilbert, dt::FastOrder::Input})
+    for (dt::InsertionOrder o : {dt::InsertionOrder::Brio, dt::InsertionOrder::BrioDoubling,
+                            dt::InsertionOrder::Hilbert, dt::InsertionOrder::Input})
       fastMethod(f, o);
   }
 }
@@ -224,7 +224,7 @@ TEST_CASE("degenerate families in general position give the same triangles with 
       continue;
     CAPTURE(f.name);
     const auto ref = canonical(hullMethod(f, dt::StartRule::LastCavity));
-    CHECK(canonical(fastMethod(f, dt::FastOrder::RadixBrio)) == ref);
+    CHECK(canonical(fastMethod(f, dt::InsertionOrder::Brio)) == ref);
     double x0, y0, x1, y1;
     bbox(f.points, x0, y0, x1, y1);
     dt::Triangulation T;
@@ -241,7 +241,7 @@ TEST_CASE("degenerate families include a huge input of few distinct points") {
   const Tris hull = hullMethod(f, dt::StartRule::LastCavity);
   // The hull is (0,0) (1,0) (2,0.25) (-1,3): n_f = 2(n-1) - n_h = 2*6 - 4.
   CHECK(hull.size() == 8);
-  fastMethod(f, dt::FastOrder::RadixBrio);
+  fastMethod(f, dt::InsertionOrder::Brio);
   cli(f, "--method hull", 1000);
   cli(f, "--method hull --kernel listings --order input", 1000);
 }
@@ -267,7 +267,7 @@ TEST_CASE("degenerate coordinates near the overflow threshold: hull methods exac
                                    -1.7976931348623157e308, 0, 0, -1.7976931348623157e308,
                                    0, 0, 5e-324, 0});
   hullMethod(f, dt::StartRule::LastCavity);
-  fastMethod(f, dt::FastOrder::RadixBrio);
+  fastMethod(f, dt::InsertionOrder::Brio);
   cli(f, "--method hull", 2000);
   cli(f, "--method hull --kernel listings", 2000);
   double x0, y0, x1, y1;

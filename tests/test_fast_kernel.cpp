@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include <sys/mman.h>
@@ -14,6 +15,7 @@
 #include "check.h"
 #include "delaunay.h"
 #include "fast_delaunay.h"
+#include "fast_ladder.h"
 #include "fast_parallel.h"
 #include "hilbert.h"
 #include "huge_pages.h"
@@ -45,9 +47,30 @@ Tris listings(const dttest::XY& p) {
   return out;
 }
 
-// Runs the fast kernel, checks the result exactly, and returns it.
-dt::FastResult fastChecked(const dttest::XY& p, const dt::FastOptions& o = {}) {
-  dt::FastResult r = dt::fastDelaunay(p, o);
+// A kernel: fastDelaunay, or a rung of the optimisation ladder (the core with the listings'
+// policies, fast_ladder.h, in the build for every x86-64 processor).
+using Kernel = dt::FastResult (*)(const std::vector<double>&, const dt::FastOptions&);
+namespace fast = dt::fast;
+dt::FastResult library(const std::vector<double>& p, const dt::FastOptions& o) {
+  return dt::fastDelaunay(p, o);
+}
+dt::FastResult called(const std::vector<double>& p, const dt::FastOptions& o) {
+  return fast::withCalledPredicates<>(p, o, {false, true});
+}
+dt::FastResult calledLastCavity(const std::vector<double>& p, const dt::FastOptions& o) {
+  return fast::withCalledPredicates<>(p, o, {false, false});
+}
+dt::FastResult centroid(const std::vector<double>& p, const dt::FastOptions& o) {
+  return fast::withCalledPredicates<fast::CentroidWalk>(p, o, {false, false});
+}
+dt::FastResult mapCentroid(const std::vector<double>& p, const dt::FastOptions& o) {
+  return fast::withCalledPredicates<fast::CentroidWalk, fast::MapLink>(p, o, {false, false});
+}
+
+// Runs the fast kernel (or a rung), checks the result exactly, and returns it.
+dt::FastResult fastChecked(const dttest::XY& p, const dt::FastOptions& o = {},
+                           Kernel kernel = library) {
+  dt::FastResult r = kernel(p, o);
   std::vector<char> must(p.size() / 2, 1);
   for (const auto& d : r.duplicates) must[std::size_t(d.first)] = 0;
   const dt::CheckReport c = dt::checkDelaunay(p, r.tri, &must);
@@ -56,25 +79,22 @@ dt::FastResult fastChecked(const dttest::XY& p, const dt::FastOptions& o = {}) {
   return r;
 }
 
-std::vector<dt::FastOptions> allVariants() {
-  std::vector<dt::FastOptions> v;
-  for (dt::FastOrder ord : {dt::FastOrder::RadixBrio, dt::FastOrder::Brio, dt::FastOrder::Hilbert,
-                            dt::FastOrder::Input}) {
+struct Variant {
+  dt::FastOptions opt;
+  Kernel kernel;
+};
+
+std::vector<Variant> allVariants() {
+  std::vector<Variant> v;
+  for (dt::InsertionOrder ord : {dt::InsertionOrder::Brio, dt::InsertionOrder::BrioDoubling, dt::InsertionOrder::Hilbert,
+                            dt::InsertionOrder::Input}) {
     dt::FastOptions o;
     o.order = ord;
-    v.push_back(o);
+    v.push_back({o, library});
   }
   dt::FastOptions o;
   o.rounds = 1;
-  v.push_back(o);
-  o.ladderCallPredicates = true;
-  v.push_back(o);
-  o.ladderLastCavityStart = true;
-  v.push_back(o);
-  o.ladderCentroidWalk = true;
-  v.push_back(o);
-  o.ladderMapAdjacency = true;
-  v.push_back(o);
+  for (Kernel k : {library, called, calledLastCavity, centroid, mapCentroid}) v.push_back({o, k});
   return v;
 }
 
@@ -84,8 +104,8 @@ TEST_CASE("fast kernel gives the same DT(S) as the corrected listings on random 
   const dttest::XY p = dttest::uniformPoints(3000, 91);
   const Tris ref = canonical(listings(p));
   REQUIRE(ref.size() > 5900);  // 2(n-1) - n_h with n_h about 20 for 3000 uniform points
-  for (const dt::FastOptions& o : allVariants()) {
-    const dt::FastResult r = fastChecked(p, o);
+  for (const Variant& w : allVariants()) {
+    const dt::FastResult r = fastChecked(p, w.opt, w.kernel);
     CHECK(canonical(r.tri) == ref);  // points in general position: DT(S) is unique
     CHECK(r.stats.insertions == 3000);
   }
@@ -112,7 +132,7 @@ TEST_CASE("fast kernel on grid and circle and collinear hull is valid with as ma
   for (dttest::XY p : inputs) {
     dttest::shuffle(p, 7);
     const std::size_t nRef = listings(p).size();
-    for (const dt::FastOptions& o : allVariants()) CHECK(fastChecked(p, o).tri.size() == nRef);
+    for (const Variant& w : allVariants()) CHECK(fastChecked(p, w.opt, w.kernel).tri.size() == nRef);
   }
 }
 
@@ -138,7 +158,7 @@ TEST_CASE("fast kernel merges duplicates into the smallest-numbered equal point"
     p.push_back(base[10]);
     p.push_back(base[11]);
   }
-  for (dt::FastOrder ord : {dt::FastOrder::RadixBrio, dt::FastOrder::Input}) {
+  for (dt::InsertionOrder ord : {dt::InsertionOrder::Brio, dt::InsertionOrder::Input}) {
     dt::FastOptions o;
     o.order = ord;
     const dt::FastResult r = fastChecked(p, o);
@@ -180,10 +200,8 @@ TEST_CASE("fast kernel filters send exactly the degenerate tests to the exact st
   }
   // The same with the library's out-of-line predicates (the ladder's first rungs): one core, so
   // the filter fails as often, and the small-multiple stage again leaves nothing to GMP.
-  dt::FastOptions called;
-  called.ladderCallPredicates = true;
   dt::predicateCounters().reset();
-  const dt::FastResult gc = fastChecked(dttest::gridPoints(50, 50, 1.0), called);
+  const dt::FastResult gc = fastChecked(dttest::gridPoints(50, 50, 1.0), {}, called);
   CHECK(dt::predicateCounters().incircle.beyondFilter() > 0);
   CHECK(dt::predicateCounters().incircle[dt::pred::kSmallInt] ==
         dt::predicateCounters().incircle.beyondFilter());
@@ -233,14 +251,6 @@ TEST_CASE("fast kernel delaunay2d --kernel fast (the default) and --kernel listi
   CHECK(dttest::runCli("'" + in + "' -o x --kernel quick").status == 2);
 }
 
-TEST_CASE("fast kernel fastHilbertKeys is hilbert.h's table-driven hilbertKeysFast") {
-  // The keys themselves are tested against hilbertIndex in test_hilbert_sort.cpp.
-  const dttest::XY p = dttest::uniformPoints(5000, 4);
-  CHECK(dt::fastHilbertKeys(p) == dt::hilbertKeys(p, 0));
-  CHECK(dt::fastHilbertKeys(p, 7) == dt::hilbertKeys(p, 7));
-  CHECK_THROWS_AS(dt::fastHilbertKeys(p, 32), std::invalid_argument);
-}
-
 TEST_CASE("fast kernel handles a cavity of hundreds of triangles (the centre of a circle inserted last)") {
   // Every triangle of the points on the circle has the centre strictly inside its circle: the
   // last insertion removes them all, and its boundary has 400 edges (a deep cavity search).
@@ -248,7 +258,7 @@ TEST_CASE("fast kernel handles a cavity of hundreds of triangles (the centre of 
   p.push_back(0);
   p.push_back(0);
   dt::FastOptions o;
-  o.order = dt::FastOrder::Input;
+  o.order = dt::InsertionOrder::Input;
   const dt::FastResult r = fastChecked(p, o);
   CHECK(r.tri.size() == 400);  // the fan around the centre
   CHECK(r.stats.cavityFaces >= 398);
@@ -257,12 +267,9 @@ TEST_CASE("fast kernel handles a cavity of hundreds of triangles (the centre of 
 TEST_CASE("fast kernel starts each walk in the new triangle around the last point that faces the next one") {
   // The start changes where the walks go, not what they find: the same DT(S), and on uniform
   // points in BRIO order the walks visit far fewer triangles than from the last cavity's last
-  // new triangle (Table 2.2's rule, kept by the ladder's switch), about half as many.
+  // new triangle (Table 2.2's rule, a rung of the ladder), about half as many.
   const dttest::XY p = dttest::uniformPoints(20000, 17);
-  dt::FastOptions facing, lastCavity;
-  facing.ladderCallPredicates = lastCavity.ladderCallPredicates = true;
-  lastCavity.ladderLastCavityStart = true;
-  const dt::FastResult a = fastChecked(p, facing), b = fastChecked(p, lastCavity);
+  const dt::FastResult a = fastChecked(p, {}, called), b = fastChecked(p, {}, calledLastCavity);
   CHECK(canonical(a.tri) == canonical(b.tri));
   REQUIRE(a.stats.insertions == b.stats.insertions);
   const double stepsFacing = double(a.stats.walkSteps) / double(a.stats.insertions);
@@ -279,9 +286,7 @@ TEST_CASE("fast kernel the ladder's out-of-line predicates record the same calls
   // the inlined run's own, stage by stage, on points that reach the exact stages.
   const dttest::XY p = dttest::gridPoints(30, 30, 0.1);
   const dt::FastResult in = fastChecked(p);
-  dt::FastOptions called;
-  called.ladderCallPredicates = true;
-  const dt::FastResult out = fastChecked(p, called);
+  const dt::FastResult out = fastChecked(p, {}, called);
   CHECK(in.stats.incircle.beyondFilter() > 0);
   for (int s = 0; s < dt::pred::kStageCount; ++s) {
     CAPTURE(dt::pred::kStageNames[s]);
@@ -296,9 +301,10 @@ TEST_CASE("fast kernel dt::triangulate gives the same DT(S) with every kernel an
   // reported against the first of the three, not against the one before it).
   p.insert(p.end(), {p[20], p[21], p[6], p[7], p[20], p[21]});
   const Tris ref = canonical(listings(std::vector<double>(p.begin(), p.end() - 6)));
+  CHECK_THROWS_AS(dt::orderNamed("brio-coin"), std::invalid_argument);
   for (dt::KernelChoice k : {dt::KernelChoice::Fast, dt::KernelChoice::Listings})
     for (dt::BuildMethod m : {dt::BuildMethod::Hull, dt::BuildMethod::Super})
-      for (const char* order : {"brio", "hilbert", "input"}) {
+      for (const char* order : {"brio", "brio-doubling", "hilbert", "input"}) {
         CAPTURE(int(k));
         CAPTURE(int(m));
         CAPTURE(order);
@@ -306,6 +312,7 @@ TEST_CASE("fast kernel dt::triangulate gives the same DT(S) with every kernel an
         o.kernel = k;
         o.method = m;
         o.order = dt::orderNamed(order);
+        CHECK(std::string(dt::orderName(o.order)) == order);  // the words read back
         const dt::TriangulateResult r = dt::triangulate(p, o);
         CHECK(r.checked);
         Tris t = r.tri;  // in the input's numbering
@@ -381,16 +388,15 @@ TEST_CASE("fast kernel the x86-64-v3 build and the baseline build make the same 
 #else
   const bool v3 = false;
 #endif
-  dt::FastOptions base;
-  base.baselineBuild = true;
-  using Run = dt::FastResult (*)(const dttest::XY&, const dt::FastOptions&);
-  const Run runs[2] = {
-      [](const dttest::XY& q, const dt::FastOptions& o) { return dt::fastDelaunay(q, o); },
-      [](const dttest::XY& q, const dt::FastOptions& o) {
-        return dt::fastDelaunaySharedCoreAlone(q, o);
-      }};
-  for (const Run run : runs) {
-    const dt::FastResult a = run(p, {}), b = run(p, base);
+  // (library build, build for every x86-64 processor) of each kernel
+  using Run = dt::FastResult (*)(const dttest::XY&);
+  const std::pair<Run, Run> runs[2] = {
+      {[](const dttest::XY& q) { return dt::fastDelaunay(q); },
+       [](const dttest::XY& q) { return fast::oneThread<fast::InlinePredicates>(q, {}, {false, true}); }},
+      {[](const dttest::XY& q) { return dt::fastDelaunaySharedCoreAlone(q); },
+       [](const dttest::XY& q) { return fast::sharedCoreAlone(q, {}, false); }}};
+  for (const auto& [library, baseline] : runs) {
+    const dt::FastResult a = library(p), b = baseline(p);
     CHECK(a.stats.x86_64_v3 == v3);
     CHECK_FALSE(b.stats.x86_64_v3);
     CHECK(dt::checkDelaunay(p, a.tri).ok);
@@ -404,9 +410,8 @@ TEST_CASE("fast kernel the x86-64-v3 build and the baseline build make the same 
       CHECK(a.stats.incircle[s] == b.stats.incircle[s]);
     }
   }
-  // Two threads (whatever the cost model would choose): the option reaches the threads' loops too.
+  // Two threads (whatever the cost model would choose): the build reaches the threads' loops too.
   const auto Slabs = dt::ParallelClaim::Slabs;
   const auto Always = dt::ParallelMode::Always;
   CHECK(dt::fastDelaunayParallel(p, 2, {}, nullptr, 64, Slabs, Always).stats.x86_64_v3 == v3);
-  CHECK_FALSE(dt::fastDelaunayParallel(p, 2, base, nullptr, 64, Slabs, Always).stats.x86_64_v3);
 }

@@ -75,6 +75,7 @@ TEST_CASE("Hilbert sort (2.3.5) table keys equal the keys of hilbertIndex one le
   const XY p = dttest::uniformPoints(50000, 4);
   CHECK(dt::hilbertKeysFast(p) == dt::hilbertKeys(p, 0));
   CHECK(dt::hilbertKeysFast({1, 2, 1, 2}) == dt::hilbertKeys({1, 2, 1, 2}, 0));
+  CHECK_THROWS_AS(dt::hilbertKeysFast(p, 32), std::invalid_argument);
 }
 
 TEST_CASE("Hilbert sort (2.3.5) by radix gives the order of std::sort on key then index") {

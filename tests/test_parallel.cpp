@@ -144,7 +144,7 @@ TEST_CASE("parallel rejects what the sequential kernel rejects") {
   CHECK_THROWS_AS(dt::fastDelaunayParallel({0, 0, 1, 0, 0, NAN}, 2), std::invalid_argument);
   CHECK_THROWS_AS(dt::fastDelaunayParallel({0, 0, 1, 0, 0}, 2), std::invalid_argument);
   dt::FastOptions o;
-  o.order = dt::FastOrder::Hilbert;
+  o.order = dt::InsertionOrder::Hilbert;
   CHECK_THROWS_AS(dt::fastDelaunayParallel(dttest::uniformPoints(100, 1), 2, o),
                   std::invalid_argument);
 }

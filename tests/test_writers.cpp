@@ -113,6 +113,31 @@ double orient(const std::vector<double>& xy, const std::array<int, 3>& t) {
 
 }  // namespace
 
+TEST_CASE("writers the .msh with an index map numbers the nodes as the input without the merged points") {
+  // The kernel's numbering (dt::triangulate: insertion order) mapped back through r.input, as
+  // writeEle does; the merged duplicates (points 3 and 7 of the input) are no nodes.
+  std::vector<double> p = dttest::uniformPoints(40, 9);
+  p.insert(p.begin() + 6, {p[0], p[1]});
+  p.insert(p.begin() + 14, {p[4], p[5]});
+  const dt::TriangulateResult r = dt::triangulate(p);
+  REQUIRE(r.duplicates.size() == 2);
+  dt::Writer w;
+  dt::writeMsh(w, r.xy, r.tri, r.input, r.used);
+  const Msh m = readMsh(w.str());
+  std::vector<double> kept;  // the input points without the merged ones, in input order
+  for (std::size_t i = 0; i < p.size() / 2; ++i)
+    if (i != std::size_t(r.duplicates[0].first) && i != std::size_t(r.duplicates[1].first))
+      kept.insert(kept.end(), {p[2 * i], p[2 * i + 1]});
+  CHECK(m.xy == kept);
+  REQUIRE(m.tri.size() == r.tri.size());
+  for (std::size_t t = 0; t < r.tri.size(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const std::size_t a = std::size_t(m.tri[t][std::size_t(k)]), b = std::size_t(r.tri[t][std::size_t(k)]);
+      CHECK(m.xy[2 * a] == r.xy[2 * b]);
+      CHECK(m.xy[2 * a + 1] == r.xy[2 * b + 1]);
+    }
+}
+
 TEST_CASE("writers the .msh read back has the input's points in order and its triangles counter-clockwise") {
   for (const Input& in : {input(300, 5, 1.0, 0, 0), input(200, 6, 1e-7, 1e6, -3e5), input(50, 7, 3e200, -1e201, 0)}) {
     const Msh m = readMsh(dt::mshText(in.xy, in.tri));

@@ -19,6 +19,7 @@
 #include "common.h"
 #include "timing.h"
 #include "fast_delaunay.h"
+#include "fast_ladder.h"
 #include "hilbert.h"
 #include "triangulate.h"
 
@@ -32,11 +33,36 @@ double cpuSeconds() {
   return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
 }
 
+// A rung of the fast kernel: the insertion core (fast_core.h) with some of the listings'
+// features put back as its policies (fast_ladder.h), in one of its two builds.
+using Kernel = dt::FastResult (*)(const std::vector<double>&, const dt::FastOptions&);
+
+namespace fast = dt::fast;
+constexpr fast::Build kBaseline{false, false};       // build for every x86-64, last-cavity start
+constexpr fast::Build kBaselineNear{false, true};    // and the start near the last point
+
+dt::FastResult mapCentroid(const std::vector<double>& xy, const dt::FastOptions& o) {
+  return fast::withCalledPredicates<fast::CentroidWalk, fast::MapLink>(xy, o, kBaseline);
+}
+dt::FastResult centroid(const std::vector<double>& xy, const dt::FastOptions& o) {
+  return fast::withCalledPredicates<fast::CentroidWalk>(xy, o, kBaseline);
+}
+dt::FastResult called(const std::vector<double>& xy, const dt::FastOptions& o) {
+  return fast::withCalledPredicates<>(xy, o, kBaseline);
+}
+dt::FastResult calledNear(const std::vector<double>& xy, const dt::FastOptions& o) {
+  return fast::withCalledPredicates<>(xy, o, kBaselineNear);
+}
+dt::FastResult inlined(const std::vector<double>& xy, const dt::FastOptions& o) {
+  return fast::oneThread<fast::InlinePredicates>(xy, o, kBaselineNear);
+}
+
 struct Step {
   const char* name;    // short label (figure)
   const char* change;  // what this step changes
   bool listings;       // the pointer-based corrected listings
   dt::FastOptions opt;
+  Kernel kernel;       // otherwise this rung of the fast kernel
 };
 
 struct Run {
@@ -61,7 +87,7 @@ Run runStep(const Step& s, const std::vector<double>& xy) {
     r.walk = st.meanSearch();
     r.cavity = st.meanCavity();
   } else {
-    const dt::FastResult f = dt::fastDelaunay(xy, s.opt);
+    const dt::FastResult f = s.kernel(xy, s.opt);
     r.seconds = cpuSeconds() - t0;
     r.triangles = f.tri.size();
     r.walk = double(f.stats.walkSteps) / double(f.stats.insertions);
@@ -86,41 +112,35 @@ int main(int argc, char** argv) {
 
   std::vector<Step> steps;
   dt::FastOptions f;
-  f.baselineBuild = true;  // every step in the build for every x86-64 processor but the last
-  f.order = dt::FastOrder::Hilbert;
-  f.ladderCallPredicates = f.ladderLastCavityStart = f.ladderCentroidWalk = f.ladderMapAdjacency =
-      true;
+  f.order = dt::InsertionOrder::Hilbert;
+  // Every step in the build for every x86-64 processor but the last.
   steps.push_back({"listings", "corrected listings: pointers, std::map, centroid walk; Hilbert "
-                   "order, walk from the last cavity (the setting of Table 2.2)", true, f});
+                   "order, walk from the last cavity (the setting of Table 2.2)", true, f, mapCentroid});
   steps.push_back({"arrays", "index-based triangles in contiguous arrays (3 vertices, 3 "
-                   "neighbour half-edges: 24 bytes per triangle)", false, f});
-  f.ladderMapAdjacency = false;
+                   "neighbour half-edges: 24 bytes per triangle)", false, f, mapCentroid});
   steps.push_back({"no map", "no std::map: each new triangle finds its neighbour among the "
-                   "few cavity boundary edges", false, f});
-  f.ladderCentroidWalk = false;
+                   "few cavity boundary edges", false, f, centroid});
   steps.push_back({"walk", "orientation-only visibility walk that skips its entry edge (no "
-                   "incircle, no centroid)", false, f});
-  f.ladderLastCavityStart = false;
+                   "incircle, no centroid)", false, f, called});
   steps.push_back({"start", "each walk starts in the new triangle around the last point that "
-                   "faces the next one, not in the last new triangle", false, f});
-  f.ladderCallPredicates = false;
+                   "faces the next one, not in the last new triangle", false, f, calledNear});
   steps.push_back({"inline", "the predicate core (predicates_inline.h) inlined, without the "
-                   "library's counters", false, f});
-  f.order = dt::FastOrder::Brio;
+                   "library's counters", false, f, inlined});
+  f.order = dt::InsertionOrder::BrioDoubling;
   steps.push_back({"BRIO", "BRIO order (dt::brioOrder): no skinny hull triangles, smaller "
-                   "cavities", false, f});
-  f.order = dt::FastOrder::RadixBrio;
+                   "cavities", false, f, inlined});
+  f.order = dt::InsertionOrder::Brio;
   steps.push_back({"coin BRIO", "BRIO rounds by a biased coin (dt::brioCoinOrder: 3/4 of the "
-                   "points in the last round; a coarser curve, dt::brioCoinDepth)", false, f});
-  // The last step changes no line of the kernel: it lets the insertions run in their second
-  // build, for x86-64-v3 processors (code/fast/fast_core.h), where this processor has it.
-  f.baselineBuild = false;
-  const bool v3 = dt::fastDelaunay({0, 0, 1, 0, 0, 1}, f).stats.x86_64_v3;
+                   "points in the last round; a coarser curve, dt::brioCoinDepth)", false, f, inlined});
+  // The last step changes no line of the kernel: it is the library's fastDelaunay, whose
+  // insertions run in their second build, for x86-64-v3 processors (code/fast/fast_core.h),
+  // where this processor has it.
+  const bool v3 = fast::hasV3();
   steps.push_back({"x86-64-v3", v3 ? "the same insertion loops compiled for x86-64-v3 processors "
                                      "(AVX2, BMI2; no fused multiply-add), chosen at run time"
                                    : "the build for x86-64-v3 processors, which this processor is "
                                      "not: the same build again",
-                   false, f});
+                   false, f, dt::fastDelaunay});
 
   std::cout << "opt_ladder: " << n << " uniform random points, median of " << reps << "\n";
   ch::Progress progress("opt_ladder", steps.size() * std::size_t(reps));
@@ -138,7 +158,7 @@ int main(int argc, char** argv) {
     std::cout << steps[k].name << ": " << ch::fmt("%.3f s", med[k].seconds) << "\n";
   }
   // The last step's triangulation, validated exactly; every step must agree on the count.
-  const dt::FastResult last = dt::fastDelaunay(xy, steps.back().opt);
+  const dt::FastResult last = steps.back().kernel(xy, steps.back().opt);
   const dt::CheckReport check = dt::checkDelaunay(xy, last.tri);
   bool same = check.ok;
   for (const Run& r : med) same = same && r.triangles == last.tri.size();

@@ -25,7 +25,7 @@ std::string pt(const std::vector<double>& xy, int i) {
 }  // namespace
 
 CheckReport checkDelaunay(const std::vector<double>& xy,
-                          const std::vector<std::array<int, 3>>& tri,
+                          const std::vector<Tri>& tri,
                           const std::vector<char>* mustUse) {
   CheckReport r;
   const int np = static_cast<int>(xy.size() / 2);

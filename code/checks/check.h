@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "tri.h"
 #include "triangulate.h"
 
 namespace dt {
@@ -28,7 +29,7 @@ struct CheckReport {
 /// tile the convex hull of their vertices and, by the Delaunay lemma, form a Delaunay
 /// triangulation. If `mustUse` is given, every point i with mustUse[i] must be a vertex.
 CheckReport checkDelaunay(const std::vector<double>& xy,
-                          const std::vector<std::array<int, 3>>& tri,
+                          const std::vector<Tri>& tri,
                           const std::vector<char>* mustUse = nullptr);
 
 /// checkDelaunay on the finite faces of a triangulation (super-triangle faces included).

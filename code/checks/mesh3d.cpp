@@ -12,7 +12,7 @@ std::vector<Tet> kuhnTetrahedra(int k) {
   for (int i = 0; i < k; ++i)
     for (int j = 0; j < k; ++j)
       for (int l = 0; l < k; ++l) {
-        std::array<int, 3> axes = {0, 1, 2};
+        Tri axes = {0, 1, 2};
         do {  // one tetrahedron per order of the three steps
           int c[3] = {i, j, l};
           Tet t;
@@ -27,12 +27,12 @@ std::vector<Tet> kuhnTetrahedra(int k) {
   return tets;
 }
 
-std::map<std::array<int, 3>, int> tetsPerFacet(const std::vector<Tet>& tets) {
-  std::map<std::array<int, 3>, int> out;
+std::map<Tri, int> tetsPerFacet(const std::vector<Tet>& tets) {
+  std::map<Tri, int> out;
   for (Tet t : tets) {
     std::sort(t.begin(), t.end());
     for (int skip = 0; skip < 4; ++skip) {
-      std::array<int, 3> f;
+      Tri f;
       for (int q = 0, m = 0; q < 4; ++q)
         if (q != skip) f[std::size_t(m++)] = t[std::size_t(q)];
       ++out[f];

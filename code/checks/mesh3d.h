@@ -9,6 +9,8 @@
 #include <utility>
 #include <vector>
 
+#include "tri.h"
+
 namespace dt {
 
 /// A tetrahedron by its four vertex numbers.
@@ -21,7 +23,7 @@ using Tet = std::array<int, 4>;
 std::vector<Tet> kuhnTetrahedra(int k);
 
 /// The tetrahedra on each facet (a sorted vertex triple): 1 on the boundary, 2 inside.
-std::map<std::array<int, 3>, int> tetsPerFacet(const std::vector<Tet>& tets);
+std::map<Tri, int> tetsPerFacet(const std::vector<Tet>& tets);
 
 /// The tetrahedra around one edge, in order: consecutive ones share a facet through the edge.
 struct EdgeRing {

@@ -8,7 +8,7 @@
 namespace dt {
 
 //! [meshCounts]
-MeshCounts meshCounts(std::size_t np, const std::vector<std::array<int, 3>>& tri) {
+MeshCounts meshCounts(std::size_t np, const std::vector<Tri>& tri) {
   MeshCounts c;
   c.vf.assign(np, 0);
   c.ve.assign(np, 0);

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "mesh.h"
+#include "tri.h"
 
 namespace dt {
 
@@ -31,7 +32,7 @@ struct MeshCounts {
 
 /// Counts of the triangles `tri` on `np` points (indices 0..np-1). Edges are found by sorting
 /// the 3 n_f directed edges, O(n_f log n_f); no geometry is used.
-MeshCounts meshCounts(std::size_t np, const std::vector<std::array<int, 3>>& tri);
+MeshCounts meshCounts(std::size_t np, const std::vector<Tri>& tri);
 
 /// Exercise 2.3.2-1: the counts {n, n_h, n_f, n_e} of the Delaunay triangulation of an
 /// nx x ny grid (nx, ny >= 2), in closed form (book/solutions.md derives it).

@@ -1,5 +1,6 @@
 #include "fast_core.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 
@@ -104,6 +105,28 @@ void finish(std::vector<Tri>& V, std::size_t count, int INF, std::vector<double>
     res.points = std::move(P);
     res.inserted = std::move(orig);
   }
+}
+
+Ordered orderOneThread(const std::vector<double>& xy, const FastOptions& opt) {
+  const std::size_t n = xy.size() / 2;
+  Ordered o;
+  o.orig.reserve(n);
+  adviseHugePages(o.orig.data(), n * sizeof(int));
+  if (opt.order == InsertionOrder::Input) {
+    for (std::size_t i = 0; i < n; ++i) o.orig.push_back(int(i));
+  } else if (opt.order == InsertionOrder::Brio) {  // hilbert.h: one sort for the whole library
+    o.memA = adjacencyMemory(slotsFor(n), n);
+    const std::size_t* r =
+        brioCoinOrderInto(xy, opt.seed, std::max(1, std::min(opt.rounds, 32)), o.memA.get());
+    o.orig.assign(r, r + n);
+  } else {
+    const std::vector<std::size_t> r =
+        opt.order == InsertionOrder::BrioDoubling ? brioOrder(xy, opt.seed) : hilbertOrder(xy);
+    o.orig.assign(r.begin(), r.end());
+  }
+  if (!o.memA) o.memA = adjacencyMemory(slotsFor(n), n);
+  o.P = pointsInOrder(xy, o.orig, 1);
+  return o;
 }
 
 }  // namespace fast

@@ -6,21 +6,25 @@
 //    walk may read a triangle another thread is rewriting without a data race);
 //  - Claim: how an insertion takes the triangles it reads and writes (a mark in a private array,
 //    which cannot fail, or a try-lock per triangle, which can: the insertion is then "Busy"),
-//    and where the two fresh slots of each insertion come from.
-// Internal header: included by the two kernels only.
+//    and where the two fresh slots of each insertion come from;
+//  - Walk and Link: how the walk finds the first triangle of the cavity, and how the new
+//    triangles are linked. The library uses VisibilityWalk and RingLink; the listings' walk and
+//    std::map (fast_ladder.h) are for the optimisation ladder (opt_ladder) and the tests.
+// Internal header: included by the two kernels, fast_ladder.h and the tests.
 #pragma once
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cstddef>
 #include <cstdint>
 #include <exception>
-#include <map>
 #include <memory>
 #include <new>
 #include <stdexcept>
 #include <string>
 #include <thread>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -55,17 +59,6 @@ struct InlinePredicates {
   }
 };
 //! [fastPredicates]
-
-// The ladder's first rungs: the library's out-of-line predicates (predicates.h), which count
-// into the global record; fastDelaunay copies the difference into FastStats.
-struct CalledPredicates {
-  int orient(const double* a, const double* b, const double* c) const {
-    return orient2d(a[0], a[1], b[0], b[1], c[0], c[1]);
-  }
-  int incircle(const double* a, const double* b, const double* c, const double* d) const {
-    return dt::incircle(a[0], a[1], b[0], b[1], c[0], c[1], d[0], d[1]);
-  }
-};
 
 // ---------------------------------------------------------------------------------------------
 // Access policies.
@@ -124,12 +117,8 @@ struct Store {
 
   /// Room for `slots` triangles, A in `memory` (adjacencyMemory(slots, ...)); unused slots read
   /// as {INF, INF, INF}. threads > 1: A is zeroed, and the threads map V's pages a piece each.
-  /// V is mapped at once in small pages (populatePages), as A, without the 2 MB pages of the
-  /// other arrays (hugeVector): the walks would gain a little from 2 MB pages, but a VM that
-  /// hands its freed 2 MB blocks back to the host (free page reporting, as on the machine that
-  /// measures this book) gives a fresh process those blocks cold, and mapping them again cost up
-  /// to 2.4 ms per MB there, over a quarter of the kernel's time at 10^6 points. Measured in
-  /// fresh processes at 10^6 points, alternated: 2 MB pages 0.25 to 0.36 s, these 0.26 to 0.28 s.
+  /// V is mapped at once in small pages (populatePages), as A, not in 2 MB pages (hugeVector):
+  /// those can come cold from a VM's host (book/fast_kernel.md, "Against CGAL").
   Store(const double* points, int n, std::size_t slots, int threads, RawMemory memory)
       : P(points), INF(n), memA(std::move(memory)), A(::new (memA.get()) int[3 * slots]) {
     V.reserve(slots);
@@ -336,11 +325,35 @@ inline bool onOpenSegment(const double* a, const double* b, const double* p) {
   return pred::onOpenSegment(a[0], a[1], b[0], b[1], p[0], p[1]);
 }
 
-/// One inserter: the walk, the cavity, the fill. kMapAdjacency and kCentroidWalk put back
-/// features of the listings for the optimisation ladder (one thread only).
-template <class Pred, class Access, class Claim, bool kMapAdjacency = false,
-          bool kCentroidWalk = false>
+/// Walk policy of the library: the visibility walk (Inserter::walk).
+struct VisibilityWalk {
+  template <class In>
+  static int walk(In& in, const double* p, int&) {
+    return in.walk(p);
+  }
+};
+
+/// Link policy of the library: each new triangle's outer edge is linked as it is written, and
+/// its two inner edges around the ring (Inserter::linkAround).
+struct RingLink {
+  template <class In>
+  static void outer(In& in, int h, int out) {
+    in.link(h, out);
+  }
+  template <class In>
+  static void ring(In& in) {
+    in.linkAround();
+  }
+};
+
+/// One inserter: the walk, the cavity, the fill. The policies Walk and Link are friends: they
+/// read the inserter's store and call its steps.
+template <class Pred, class Access, class Claim, class Walk = VisibilityWalk,
+          class Link = RingLink>
 class alignas(64) Inserter {  // aligned: two threads' inserters never share a cache line
+  friend Walk;
+  friend Link;
+
  public:
   enum Outcome { Inserted, Duplicate, Busy };
 
@@ -349,8 +362,8 @@ class alignas(64) Inserter {  // aligned: two threads' inserters never share a c
 
   int last = 0;  // where the next walk starts: a triangle of the last cavity
   /// Whether a walk starts at the new triangle around the last point inserted that faces the
-  /// next one (startNear), rather than at `last` (the ladder turns it off).
-  bool ringStart = !kCentroidWalk;
+  /// next one (startNear), rather than at `last` (Table 2.2's rule, a rung of the ladder).
+  bool ringStart = true;
 
   /// Inserts vertex ip; or sets dup to the vertex it duplicates (nothing changes); or, with a
   /// shared claim, reports Busy: a triangle it needed was another thread's (nothing changed and
@@ -360,7 +373,7 @@ class alignas(64) Inserter {  // aligned: two threads' inserters never share a c
     const double* p = pt(ip);
     if (ringStart && ring_ >= 0) last = startNear(p);
     for (int attempt = 0; attempt < (Claim::kShared ? 3 : 1); ++attempt) {
-      const int t = kCentroidWalk ? walkCentroid(p, dup) : walk(p);
+      const int t = Walk::walk(*this, p, dup);
       if (t == kDuplicate) return Duplicate;
       if (t < 0) {
         if (!Claim::kShared) throw std::logic_error("fastDelaunay: walk does not terminate");
@@ -498,45 +511,6 @@ class alignas(64) Inserter {  // aligned: two threads' inserters never share a c
   }
 //! [fastWalk]
 
-  // The ladder's walk: Listing 2.6 as corrected in search.cpp (an incircle test at every
-  // triangle, then the half-open sector of the centroid's ray). One thread only.
-  int walkCentroid(const double* p, int& dup) {
-    int t = last;
-    const std::size_t cap = std::size_t(S_.count.load(std::memory_order_relaxed)) + 1;
-    for (std::size_t steps = 1; steps <= cap; ++steps) {
-      if (conflict(t, p)) {
-        st_.walkSteps += steps;
-        return t;
-      }
-      const Tri& v = S_.V[t];
-      if (v[2] == S_.INF) {
-        t = S_.A[3 * std::size_t(t)] / 3;
-        continue;
-      }
-      const double c[2] = {(pt(v[0])[0] + pt(v[1])[0] + pt(v[2])[0]) / 3,
-                           (pt(v[0])[1] + pt(v[1])[1] + pt(v[2])[1]) / 3};
-      int next = -1;
-      for (int k = 0; k < 3 && next < 0; ++k) {
-        const double *a = pt(v[k]), *b = pt(v[(k + 1) % 3]);
-        if (pred_.orient(c, a, p) >= 0 && pred_.orient(c, b, p) < 0 && pred_.orient(a, b, p) < 0)
-          next = k;
-      }
-      for (int k = 0; k < 3 && next < 0; ++k)
-        if (pred_.orient(pt(v[k]), pt(v[(k + 1) % 3]), p) < 0) next = k;
-      if (next < 0) {
-        st_.walkSteps += steps;
-        for (int j = 0; j < 3; ++j)
-          if (pt(v[j])[0] == p[0] && pt(v[j])[1] == p[1]) {
-            dup = v[j];
-            return kDuplicate;
-          }
-        throw std::logic_error("fastDelaunay: point inside a triangle but outside its circle");
-      }
-      t = S_.A[3 * std::size_t(t) + next] / 3;
-    }
-    return -1;
-  }
-
 //! [fastCavity]
   // Delaunay cavity (Listing 2.5) from a seed in conflict, depth first, each triangle's edges
   // taken counter-clockwise from the one it was entered by. Every vertex of the cavity is on
@@ -615,12 +589,9 @@ class alignas(64) Inserter {  // aligned: two threads' inserters never share a c
       for (int j = 0; j < 3; ++j) Access::st(S_.V[std::size_t(s)][j], w[j]);
       e.e1 = 3 * s + kNext[k0];
       e.e2 = 3 * s + kNext[kNext[k0]];
-      if (!kMapAdjacency) link(3 * s + k0, e.out);
+      Link::outer(*this, 3 * s + k0, e.out);
     }
-    if (kMapAdjacency)
-      linkWithMap();
-    else
-      linkAround();
+    Link::ring(*this);
     last = bnd_.back().e1 / 3;
     ring_ = ip;
   }
@@ -661,27 +632,6 @@ class alignas(64) Inserter {  // aligned: two threads' inserters never share a c
   }
 //! [fastFill]
 
-  // The ladder's adjacency: Listing 2.4's std::map from edges to half-edges, over the new
-  // triangles and the outer side of the boundary.
-  void linkWithMap() {
-    std::map<std::pair<int, int>, int> edgeToHalf;
-    auto key = [](int u, int v) { return std::make_pair(std::min(u, v), std::max(u, v)); };
-    for (const BoundaryEdge& e : bnd_) edgeToHalf.emplace(key(e.a, e.b), e.out);
-    for (const BoundaryEdge& e : bnd_) {
-      const int s = e.e1 / 3;
-      for (int k = 0; k < 3; ++k) {
-        const auto q = key(S_.V[s][k], S_.V[s][kNext[k]]);
-        auto it = edgeToHalf.find(q);
-        if (it == edgeToHalf.end()) {
-          edgeToHalf.emplace(q, 3 * s + k);
-        } else {
-          link(3 * s + k, it->second);
-          edgeToHalf.erase(it);
-        }
-      }
-    }
-  }
-
   Store& S_;
   Claim& claim_;
   Pred pred_;
@@ -694,16 +644,11 @@ class alignas(64) Inserter {  // aligned: two threads' inserters never share a c
 };
 
 // ---------------------------------------------------------------------------------------------
-// Two builds of the insertion loops. The library is compiled for every x86-64 processor; on one
-// with AVX2, BMI2 and the rest of x86-64-v3 the loops run in a second build of the same code,
-// compiled for that level (3 to 4 % faster at 10^6 points in fresh processes, alternated with
-// the baseline; opt_ladder's last step measures it in every run). runV3 is that build: flatten
-// inlines into it everything f calls, so the whole loop (walk, cavity, fill, predicates) is
-// compiled for x86-64-v3 there, while the out-of-line functions it cannot inline (the exact
-// stages of the predicates, the allocator) stay the baseline ones: no function of the baseline
-// build is ever replaced by one for x86-64-v3. The rounding is the same in both: fused
-// multiply-add is not used (-ffp-contract=off, CMakeLists.txt), so the filters' error bounds
-// hold in both. GCC on x86-64 only; elsewhere (clang, WebAssembly, ARM) there is one build.
+// Two builds of the insertion loops: the library's, for every x86-64 processor, and one for
+// x86-64-v3 (AVX2, BMI2), chosen at run time; opt_ladder's last step measures what it gains.
+// flatten inlines everything the loop calls into runV3; what it cannot inline (the exact
+// stages, the allocator) stays in the baseline build. Both round alike: no fused multiply-add
+// (-ffp-contract=off, CMakeLists.txt), so the filters' error bounds hold. GCC on x86-64 only.
 //! [twoBuilds]
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
 #define DT_FAST_X86_64_V3 1
@@ -713,17 +658,16 @@ __attribute__((target("arch=x86-64-v3"), flatten, noinline)) void runV3(F& f) {
 }
 #endif
 
-/// Whether the insertions run in the x86-64-v3 build: the processor has it and opt allows it.
-inline bool useV3(const FastOptions& opt) {
+/// Whether the x86-64-v3 build can run here: the processor has it (the library then uses it).
+inline bool hasV3() {
 #ifdef DT_FAST_X86_64_V3
-  return !opt.baselineBuild && __builtin_cpu_supports("x86-64-v3");
+  return __builtin_cpu_supports("x86-64-v3");
 #else
-  (void)opt;
   return false;
 #endif
 }
 
-/// f() in the x86-64-v3 build if v3 (see useV3), else in the baseline build.
+/// f() in the x86-64-v3 build if v3 (see hasV3), else in the baseline build.
 template <class F>
 void inBuild(bool v3, F&& f) {
 #ifdef DT_FAST_X86_64_V3
@@ -766,6 +710,90 @@ using dt::parallelFor;  // parallel_for.h
 void finish(std::vector<Tri>& V, std::size_t count, int INF, std::vector<double>& P,
             std::vector<int>& orig, const std::vector<std::pair<int, int>>& dups,
             bool insertionNumbering, int threads, FastResult& res);
+
+/// The one-thread kernel's input in insertion order: orig[i] is the input number of the i-th
+/// point, P the points in that order (pointsInOrder), memA the adjacency array's memory, which
+/// the default order's sort borrowed (adjacencyMemory).
+struct Ordered {
+  std::vector<int> orig;
+  std::vector<double> P;
+  RawMemory memA;
+};
+Ordered orderOneThread(const std::vector<double>& xy, const FastOptions& opt);
+
+/// What a run of the core fixes beyond FastOptions (a library user does not choose it): the
+/// build of the insertion loops (v3: the x86-64-v3 one, where hasV3()) and where a walk starts
+/// (Inserter::ringStart). fastDelaunay runs {hasV3(), true}; the ladder changes both.
+struct Build {
+  bool v3 = false;
+  bool ringStart = true;
+};
+
+/// The one-thread kernel with the policies Pred, Walk and Link (Inserter): fastDelaunay is
+/// oneThread<InlinePredicates>(xy, opt, {hasV3(), true}); opt_ladder puts its rungs together
+/// from the policies of fast_ladder.h. Pred is built from the run's record if it counts there.
+/// Whether the predicate policy Pred counts in the run's record (is built from a FastStats*).
+template <class Pred>
+constexpr auto countsInRecord(int) -> decltype(Pred{std::declval<FastStats*>()}, true) {
+  return true;
+}
+template <class Pred>
+constexpr bool countsInRecord(long) {
+  return false;
+}
+
+template <class Pred, class Walk = VisibilityWalk, class Link = RingLink>
+FastResult oneThread(const std::vector<double>& xy, const FastOptions& opt, const Build& how) {
+  checkInput(xy, "fastDelaunay");
+  FastResult res;
+  const auto t0 = std::chrono::steady_clock::now();
+  Ordered o = orderOneThread(xy, opt);
+  const auto t1 = std::chrono::steady_clock::now();
+  res.stats.sortSeconds = std::chrono::duration<double>(t1 - t0).count();
+  std::vector<double>& P = o.P;
+  const int n = int(o.orig.size());
+  const FirstTriangle f = firstTriangle(P, n);
+  Store S(P.data(), n, slotsFor(std::size_t(n)), 1, std::move(o.memA));
+  if (f.ccw)
+    S.init(0, f.i1, f.i2);
+  else
+    S.init(0, f.i2, f.i1);
+  MarkClaim claim(S);
+  Pred pred = [&] {
+    if constexpr (countsInRecord<Pred>(0))
+      return Pred{&res.stats};
+    else
+      return Pred{};
+  }();
+  Inserter<Pred, PlainAccess, MarkClaim, Walk, Link> K(S, claim, pred, res.stats);
+  K.ringStart = how.ringStart;
+  res.stats.insertions = 3;
+  std::vector<std::pair<int, int>> dups;  // (point, vertex it duplicates), insertion numbers
+  const std::size_t every = std::max<std::size_t>(1, opt.progressEvery);
+  std::size_t nextReport = opt.progress ? every : std::size_t(-1);
+  const bool v3 = res.stats.x86_64_v3 = how.v3;
+  inBuild(v3, [&] {
+    for (int i = 1; i < n; ++i) {
+      if (__builtin_expect(std::size_t(i) == nextReport, 0)) {
+        opt.progress(std::size_t(i), std::size_t(n), res.stats);
+        nextReport += every;
+      }
+      if (i == f.i1 || i == f.i2) continue;
+      int d = -1;
+      if (K.insert(i, d) == decltype(K)::Duplicate) dups.emplace_back(i, d);
+    }
+  });
+  // Only the vertices of the triangles are kept: they become the output.
+  claim.freeMarks();
+  S.freeAdjacency();
+  finish(S.V, std::size_t(S.count.load()), n, P, o.orig, dups, opt.insertionNumbering, 1, res);
+  res.stats.insertSeconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
+  return res;
+}
+
+/// fastDelaunaySharedCoreAlone (fast_parallel.h) in the build v3 (the tests compare both).
+FastResult sharedCoreAlone(const std::vector<double>& xy, const FastOptions& opt, bool v3);
 
 }  // namespace fast
 }  // namespace dt

@@ -6,7 +6,6 @@
 // predicates, a Hilbert order, and a walk that starts from the last cavity.
 #pragma once
 
-#include <cstdint>
 #include <vector>
 
 #include "fast_types.h"
@@ -19,9 +18,5 @@ namespace dt {
 /// than three distinct points or all points are collinear, std::invalid_argument on non-finite
 /// coordinates or more than 2^28 points.
 FastResult fastDelaunay(const std::vector<double>& xy, const FastOptions& opt = {});
-
-/// dt::hilbertKeysFast (hilbert.h): the keys of hilbertKeys, computed four curve levels per
-/// table look-up (the descent of hilbertIndex has 8 states). depth 0 = hilbertAutoDepth(n).
-std::vector<std::uint64_t> fastHilbertKeys(const std::vector<double>& xy, int depth = 0);
 
 }  // namespace dt

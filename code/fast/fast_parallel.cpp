@@ -40,7 +40,7 @@ double secondsSince(std::chrono::steady_clock::time_point t) {
 // the positions where pick gives -1: another thread's points) with
 // one inserter; a Busy point goes to the deferred list, or is an error when the inserter must be
 // alone. tick(j), if given, is called before the j-th point when j - from is a multiple of
-// `every` (the progress report). v3: in the x86-64-v3 build (fast::useV3).
+// `every` (the progress report). v3: in the x86-64-v3 build (fast::hasV3).
 template <class Inserter, class Pick, class Tick>
 void insertRange(bool v3, Inserter& in, Worker& w, int from, int to, Pick pick, int i1, int i2,
                  bool alone, std::size_t every, Tick tick) {
@@ -204,9 +204,8 @@ double uniformCutShare(int threads) {
 }
 
 void requireDefaultOrder(const FastOptions& opt) {
-  if (opt.order != FastOrder::RadixBrio || opt.ladderCallPredicates)
-    throw std::invalid_argument(
-        "fastDelaunayParallel: more than one thread needs the default order and predicates");
+  if (opt.order != InsertionOrder::Brio)
+    throw std::invalid_argument("fastDelaunayParallel: more than one thread needs the default order");
 }
 
 }  // namespace
@@ -304,7 +303,7 @@ void insertRounds(const std::vector<double>& xy, std::vector<double>& P, std::ve
     s.insertions = std::min<std::uint64_t>(done, s.insertions * std::uint64_t(scale));
     opt.progress(std::min(done, n), n, s);
   };
-  const bool v3 = res.stats.x86_64_v3 = fast::useV3(opt);
+  const bool v3 = res.stats.x86_64_v3;  // the build runShared chose
   policy.alone(*claims[0]);
   const auto tl = std::chrono::steady_clock::now();
   insertRange(v3, *ins[0], W[0], 1, seqEnd, kIdentity, i1, i2, true, every,
@@ -371,12 +370,13 @@ namespace {
 // fastDelaunayParallel with threads >= 1 (1: fastDelaunaySharedCoreAlone); fills the run's
 // part of ps.
 FastResult runShared(const std::vector<double>& xy, int threads, const FastOptions& opt,
-                     ParallelStats& ps, int minPiece, ParallelClaim claim) {
+                     ParallelStats& ps, int minPiece, ParallelClaim claim, bool v3) {
   threads = std::min(threads, fast::kMaxThreads);
   ps.threadsUsed = threads;
   requireDefaultOrder(opt);
   fast::checkInput(xy, "fastDelaunayParallel");
   FastResult res;
+  res.stats.x86_64_v3 = v3;
   const auto t0 = std::chrono::steady_clock::now();
   const int rounds = std::max(1, std::min(opt.rounds, 32));
   const std::size_t n = xy.size() / 2;
@@ -428,7 +428,7 @@ FastResult fastDelaunayParallel(const std::vector<double>& xy, int threads, cons
   }
   ps.reason = d.reason;
   ps.forecast = d.forecast;
-  FastResult res = d.threads > 1 ? runShared(xy, d.threads, opt, ps, minPiece, claim)
+  FastResult res = d.threads > 1 ? runShared(xy, d.threads, opt, ps, minPiece, claim, fast::hasV3())
                                  : fastDelaunay(xy, opt);
   if (pstats) *pstats = ps;
   return res;
@@ -439,9 +439,18 @@ FastResult fastDelaunaySharedCoreAlone(const std::vector<double>& xy, const Fast
                                        ParallelStats* pstats, ParallelClaim claim) {
   ParallelStats ps;
   ps.reason = ParallelReason::Concurrent;  // the shared machinery's rounds, by one thread
-  FastResult res = runShared(xy, 1, opt, ps, 2048, claim);
+  FastResult res = runShared(xy, 1, opt, ps, 2048, claim, fast::hasV3());
   if (pstats) *pstats = ps;
   return res;
 }
+
+namespace fast {
+
+FastResult sharedCoreAlone(const std::vector<double>& xy, const FastOptions& opt, bool v3) {
+  ParallelStats ps;
+  return runShared(xy, 1, opt, ps, 2048, ParallelClaim::Slabs, v3);
+}
+
+}  // namespace fast
 
 }  // namespace dt

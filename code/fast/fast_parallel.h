@@ -106,7 +106,7 @@ int defaultThreadCount();
 /// itself) below the model's size or where the slabs would not split; pstats says which and
 /// why. threads <= 1 calls fastDelaunay(xy, opt). With more than one thread the small first
 /// BRIO rounds (opt.order
-/// must be FastOrder::RadixBrio) are inserted by one thread, and each larger round is shared
+/// must be InsertionOrder::Brio) are inserted by one thread, and each larger round is shared
 /// among the threads (claim: Slabs, each thread the round's points in one slab of x, cut
 /// at the x-quantiles of a sample of the round, in Hilbert order; Locks, consecutive pieces of the round's
 /// Hilbert order), inserted concurrently; insertions that need another thread's triangles are
@@ -116,8 +116,7 @@ int defaultThreadCount();
 /// into the smallest-numbered equal point, as fastDelaunay does; opt.insertionNumbering is
 /// honoured, and opt.progress is called by the calling thread only (during a concurrent round
 /// with estimated counts: its own piece's, times the number of threads). Same exceptions as
-/// fastDelaunay, and std::invalid_argument for a ladder switch or another order when threads >
-/// 1. A round is
+/// fastDelaunay, and std::invalid_argument for another order when threads > 1. A round is
 /// inserted concurrently when each thread gets at least minPiece points of it (the tests make it
 /// small, and the mode Always, to make threads meet on small inputs).
 FastResult fastDelaunayParallel(const std::vector<double>& xy, int threads,

@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "order.h"
 #include "predicate_stages.h"
 #include "tri.h"
 
@@ -16,29 +17,12 @@ namespace dt {
 
 struct FastStats;
 
-/// Insertion order of fastDelaunay.
-enum class FastOrder {
-  RadixBrio,  ///< dt::brioCoinOrder (hilbert.h): BRIO rounds drawn by biased coins (default)
-  Brio,       ///< dt::brioOrder (hilbert.h): BRIO rounds of doubling sizes, each Hilbert-sorted
-  Hilbert,    ///< dt::hilbertOrder (hilbert.h): one Hilbert sort of all the points
-  Input       ///< the order of the input
-};
-
-/// Options of fastDelaunay. The defaults are the fast kernel; the `ladder*` switches each put
-/// back one feature of the corrected listings, so that the optimisation ladder can measure what
-/// each change is worth (all of them give the same exact triangulation). They are cumulative:
-/// ladderMapAdjacency needs ladderCentroidWalk, which needs ladderLastCavityStart, which needs
-/// ladderCallPredicates.
+/// Options of fastDelaunay: what a user of the library chooses. The predicates, the walk, the
+/// link step and the build are policies of the insertion core (fast_core.h), not options.
 struct FastOptions {
-  FastOrder order = FastOrder::RadixBrio;
-  int rounds = 8;                  ///< RadixBrio: number of rounds (1 = a plain Hilbert sort)
+  InsertionOrder order = InsertionOrder::Brio;
+  int rounds = 8;                  ///< Brio: number of rounds (1 = a plain Hilbert sort)
   std::uint64_t seed = 1;          ///< seed of the BRIO rounds
-  bool ladderCallPredicates = false; ///< out-of-line, counted dt::orient2d / dt::incircle
-  /// every walk starts in a new triangle of the last cavity (Table 2.2's rule), not in the one
-  /// around the last point that faces the next point
-  bool ladderLastCavityStart = false;
-  bool ladderCentroidWalk = false; ///< walk of Listing 2.6: incircle at every step, centroid ray
-  bool ladderMapAdjacency = false; ///< link new triangles through a std::map (Listing 2.4)
   /// Called after every `progressEvery` insertions with the points handled so far, their number
   /// and the counters so far (the command line's progress report and its warning about long
   /// walks); not called if empty.
@@ -48,9 +32,6 @@ struct FastOptions {
   /// return the points in that order (FastResult::points, inserted): a check or a writer then
   /// reads memory in the kernel's spatially coherent order (the command line does).
   bool insertionNumbering = false;
-  /// Insert in the build of the kernel for every x86-64 processor, even where its x86-64-v3
-  /// build can run (FastStats::x86_64_v3): tests and benchmarks compare the two.
-  bool baselineBuild = false;
 };
 
 /// Counters and timings of one run.

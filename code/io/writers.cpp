@@ -74,7 +74,7 @@ Writer& Writer::put(double v, int precision) {
 
 namespace {
 template <class Number>
-void writeEleWith(Writer& w, const std::vector<std::array<int, 3>>& tri, long firstIndex,
+void writeEleWith(Writer& w, const std::vector<Tri>& tri, long firstIndex,
                   Number number) {
   w.put(long(tri.size())).put(" 3 0\n");
   for (std::size_t t = 0; t < tri.size(); ++t) {
@@ -85,26 +85,26 @@ void writeEleWith(Writer& w, const std::vector<std::array<int, 3>>& tri, long fi
 }
 }  // namespace
 
-void writeEle(Writer& w, const std::vector<std::array<int, 3>>& tri, const std::vector<long>* number,
+void writeEle(Writer& w, const std::vector<Tri>& tri, const std::vector<long>* number,
               long firstIndex) {
   writeEleWith(w, tri, firstIndex, [&](int v) {
     return number ? (*number)[std::size_t(v)] : long(v) + firstIndex;
   });
 }
 
-void writeEle(Writer& w, const std::vector<std::array<int, 3>>& tri, const std::vector<int>& index,
+void writeEle(Writer& w, const std::vector<Tri>& tri, const std::vector<int>& index,
               long firstIndex) {
   writeEleWith(w, tri, firstIndex, [&](int v) { return long(index[std::size_t(v)]) + firstIndex; });
 }
 
-std::string eleText(const std::vector<std::array<int, 3>>& tri, const std::vector<long>& number,
+std::string eleText(const std::vector<Tri>& tri, const std::vector<long>& number,
                     long firstIndex) {
   Writer w;
   writeEle(w, tri, &number, firstIndex);
   return w.str();
 }
 
-void writeMsh(Writer& w, const std::vector<double>& xy, const std::vector<std::array<int, 3>>& tri) {
+void writeMsh(Writer& w, const std::vector<double>& xy, const std::vector<Tri>& tri) {
   const std::size_t n = xy.size() / 2;
   w.put("$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n").put(long(n)).put('\n');
   for (std::size_t i = 0; i < n; ++i)
@@ -118,13 +118,35 @@ void writeMsh(Writer& w, const std::vector<double>& xy, const std::vector<std::a
   w.put("$EndElements\n");
 }
 
-std::string mshText(const std::vector<double>& xy, const std::vector<std::array<int, 3>>& tri) {
+void writeMsh(Writer& w, const std::vector<double>& xy, const std::vector<Tri>& tri,
+              const std::vector<int>& index, const std::vector<char>& used) {
+  const std::size_t n = index.size();
+  std::vector<int> node(n, -1);  // by input index: its node number, or -1 if left out
+  for (std::size_t i = 0; i < n; ++i)
+    if (used.empty() || used[i]) node[std::size_t(index[i])] = 0;
+  int k = 0;
+  for (int& v : node)
+    if (v == 0) v = k++;
+  std::vector<double> nodes(2 * std::size_t(k));
+  for (std::size_t i = 0; i < n; ++i)
+    if (used.empty() || used[i]) {
+      const std::size_t j = std::size_t(node[std::size_t(index[i])]);
+      nodes[2 * j] = xy[2 * i];
+      nodes[2 * j + 1] = xy[2 * i + 1];
+    }
+  std::vector<Tri> renumbered(tri);
+  for (auto& t : renumbered)
+    for (int& v : t) v = node[std::size_t(index[std::size_t(v)])];
+  writeMsh(w, nodes, renumbered);
+}
+
+std::string mshText(const std::vector<double>& xy, const std::vector<Tri>& tri) {
   Writer w;
   writeMsh(w, xy, tri);
   return w.str();
 }
 
-void writeSvg(Writer& w, const std::vector<double>& xy, const std::vector<std::array<int, 3>>& tri,
+void writeSvg(Writer& w, const std::vector<double>& xy, const std::vector<Tri>& tri,
               int size) {
   double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
   for (std::size_t i = 0; i + 1 < xy.size(); i += 2) {
@@ -159,7 +181,7 @@ void writeSvg(Writer& w, const std::vector<double>& xy, const std::vector<std::a
   w.put("</g>\n</svg>\n");
 }
 
-std::string svgText(const std::vector<double>& xy, const std::vector<std::array<int, 3>>& tri,
+std::string svgText(const std::vector<double>& xy, const std::vector<Tri>& tri,
                     int size) {
   Writer w;
   writeSvg(w, xy, tri, size);
@@ -167,7 +189,7 @@ std::string svgText(const std::vector<double>& xy, const std::vector<std::array<
 }
 
 std::string gnuplotTriangles(const std::vector<double>& xy,
-                             const std::vector<std::array<int, 3>>& tri) {
+                             const std::vector<Tri>& tri) {
   Writer w;
   for (const auto& t : tri) {
     for (int k = 0; k <= 3; ++k) {

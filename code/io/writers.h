@@ -8,6 +8,8 @@
 #include <string_view>
 #include <vector>
 
+#include "tri.h"
+
 namespace dt {
 
 /// Text output into a large buffer, flushed to a file descriptor when full (fd >= 0) or kept
@@ -44,25 +46,30 @@ class Writer {
 
 /// Triangle .ele: "<#triangles> 3 0" then "<i> <a> <b> <c>"; vertex v is written as number[v]
 /// or, without `number`, as v + firstIndex.
-void writeEle(Writer& w, const std::vector<std::array<int, 3>>& tri, const std::vector<long>* number,
+void writeEle(Writer& w, const std::vector<Tri>& tri, const std::vector<long>* number,
               long firstIndex);
 /// The same with vertex v written as index[v] + firstIndex.
-void writeEle(Writer& w, const std::vector<std::array<int, 3>>& tri, const std::vector<int>& index,
+void writeEle(Writer& w, const std::vector<Tri>& tri, const std::vector<int>& index,
               long firstIndex);
-std::string eleText(const std::vector<std::array<int, 3>>& tri, const std::vector<long>& number,
+std::string eleText(const std::vector<Tri>& tri, const std::vector<long>& number,
                     long firstIndex);
 /// Gmsh ASCII 2.2 .msh (nodes and 3-node triangles), openable in Gmsh.
-void writeMsh(Writer& w, const std::vector<double>& xy, const std::vector<std::array<int, 3>>& tri);
-std::string mshText(const std::vector<double>& xy, const std::vector<std::array<int, 3>>& tri);
+void writeMsh(Writer& w, const std::vector<double>& xy, const std::vector<Tri>& tri);
+/// The same with the nodes numbered as the input, like writeEle's index map: point v of xy is
+/// input point index[v]; the points with used[v] == 0 (merged duplicates) are left out and the
+/// others numbered in input order. used empty: every point is a node.
+void writeMsh(Writer& w, const std::vector<double>& xy, const std::vector<Tri>& tri,
+              const std::vector<int>& index, const std::vector<char>& used);
+std::string mshText(const std::vector<double>& xy, const std::vector<Tri>& tri);
 /// SVG drawing of the mesh, `size` pixels square. Coordinates are translated, then scaled by
 /// a power of two and a factor below `size`: every input of finite doubles (subnormal spans,
 /// spans near DBL_MAX) gives finite pixel coordinates.
-void writeSvg(Writer& w, const std::vector<double>& xy, const std::vector<std::array<int, 3>>& tri,
+void writeSvg(Writer& w, const std::vector<double>& xy, const std::vector<Tri>& tri,
               int size = 800);
-std::string svgText(const std::vector<double>& xy, const std::vector<std::array<int, 3>>& tri,
+std::string svgText(const std::vector<double>& xy, const std::vector<Tri>& tri,
                     int size = 800);
 /// gnuplot data: each triangle as a closed polyline, blocks separated by blank lines.
 std::string gnuplotTriangles(const std::vector<double>& xy,
-                             const std::vector<std::array<int, 3>>& tri);
+                             const std::vector<Tri>& tri);
 
 }  // namespace dt

@@ -11,6 +11,7 @@
 
 #include "errors.h"
 #include "mesh.h"
+#include "tri.h"
 
 namespace dt {
 
@@ -65,7 +66,7 @@ void delaunayTrglHull(Triangulation& T, const std::vector<Vertex*>& S, StartRule
 struct PlainMesh {
   std::vector<double> xy;               ///< x0 y0 x1 y1 ...
   std::vector<long> ids;                ///< Vertex::id of each point
-  std::vector<std::array<int, 3>> tri;  ///< finite faces
+  std::vector<Tri> tri;  ///< finite faces
 };
 
 /// The finite faces of T, optionally without the faces touching a super-vertex (id < 0).

@@ -668,8 +668,8 @@ void brioCoinSort(const std::vector<double>& xy, std::uint64_t seed, int rounds,
 std::vector<std::size_t> brioCoinOrder(const std::vector<double>& xy, std::uint64_t seed,
                                        int rounds, bool adaptive, int threads) {
   const std::size_t n = xy.size() / 2;
-  // (The order first, then the words: in the other order glibc's heap left 6 MB more resident
-  // at the command line's peak, at 10^6 points.)
+  // The order first, then the words: in the other order glibc's heap keeps more resident at
+  // the command line's peak.
   std::vector<std::size_t> order = hugeVector<std::size_t>(n);
   std::vector<std::uint64_t> w = hugeVector<std::uint64_t>(n), b = hugeVector<std::uint64_t>(n);
   brioCoinSort(xy, seed, rounds, adaptive, threads, order.data(), w.data(), b.data());

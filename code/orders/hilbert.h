@@ -129,8 +129,7 @@ std::size_t brioCoinScratchBytes(std::size_t n);
 /// aligned for 8-byte words, and the order is returned at its start (it lives there until the
 /// caller reuses the memory). The fast kernels lend the memory of the adjacency array they fill
 /// next: a fresh process then maps 24 bytes per point fewer new pages, which the operating
-/// system must clear first (mapping new memory took 6 to 20 % of the triangulation's time in
-/// fresh processes at 10^6 points).
+/// system must clear first (book/fast_kernel.md times that system time).
 const std::size_t* brioCoinOrderInto(const std::vector<double>& xy, std::uint64_t seed,
                                      int rounds, void* scratch, bool adaptive = true,
                                      int threads = 1);
