@@ -89,6 +89,7 @@ xargs        base               scripts
 wc           base               scripts
 tr           base               scripts
 cut          base               scripts
+sha256sum    base               book/axe_check.sh (the stamp of a checked directory)
 chmod        base               scripts/mutants.sh (the copy readable by others)
 seq          base               book/layout_check_selftest.sh
 diff         base               tests

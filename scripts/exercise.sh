@@ -938,6 +938,11 @@ grade_prepare() {
   # sit below a directory only root can enter (a fresh clone made with mktemp -d is mode 700).
   mkdir -p "$work/link"
   cp "$build/libdt.a" "$work/link/"
+  for t in "${GRADE_LIBS[@]}"; do  # the build's other libraries on dt_tests' link line
+    case "$t" in /*|-*) continue ;; esac
+    mkdir -p "$work/link/$(dirname "$t")"
+    cp "$build/$t" "$work/link/$t"
+  done
   for t in "${GRADE_TEST_OBJS[@]}"; do
     mkdir -p "$work/link/$(dirname "$t")"
     cp "$build/$t" "$work/link/$t"
@@ -1465,6 +1470,15 @@ cmd_selftest() {
     [ -f "$objs/$(basename "$t").o" ] || die "$build has no object for tests/$(basename "$t") (build dt_tests first)"
     test_objs+=("$objs/$(basename "$t").o")
   done
+  # What dt_tests links after its objects (the library, the book tool's, GMP, ...), as its
+  # link line names them; a relative path is the build's.
+  local test_libs=() w link
+  read -r -a link <"$build/CMakeFiles/dt_tests.dir/link.txt"
+  for w in "${link[@]}"; do
+    case "$w" in
+      *.a|*.so|-l*) if [[ $w = /* || $w = -l* ]]; then test_libs+=("$w"); else test_libs+=("$build/$w"); fi ;;
+    esac
+  done
   work="$(mktemp -d)"
   trap 'rm -rf "$work"' RETURN
   # The library's headers are found by bare name in code/ and each of its rooms.
@@ -1490,7 +1504,7 @@ cmd_selftest() {
       o_list+=("$o")
     done
     [ $ok = 1 ] || { fail=1; continue; }
-    if ! g++ -o "$work/t" "${o_list[@]}" "${test_objs[@]}" "$build/libdt.a" -lmpfr -lgmp -pthread 2>"$work/ld.log"; then
+    if ! g++ -o "$work/t" "${o_list[@]}" "${test_objs[@]}" "${test_libs[@]}" -pthread 2>"$work/ld.log"; then
       echo "FAIL $id: the stub copy does not link:"; head -n 20 "$work/ld.log"; fail=1; continue
     fi
     set +e; res="$(run_tests "$id" "$work/t")"; rc=$?; set -e
