@@ -58,10 +58,7 @@ struct UsageError : std::runtime_error {
 /// What a chapter program is doing, for the message when memory runs out: "computing" (set by
 /// runMain), "writing FILE" (writeOut) or "drawing SCRIPT" (runGnuplot); a program may set its
 /// own ("measuring 10^7 points").
-inline std::string& phase() {
-  static std::string what = "reading the options";
-  return what;
-}
+std::string& phase();
 
 /// The options of a chapter program (ch::parseOptions reads them; `--help` lists them):
 ///   --out DIR    where to write (default: DT_OUTPUT_DIR/ch2, i.e. build/output/ch2)
@@ -85,15 +82,7 @@ struct Options {
   /// The seed to use where the book uses `bookSeed`: `bookSeed` itself unless --seed N was
   /// given, else a seed made of N and `bookSeed` (so two random sets of one program stay
   /// different from each other, and each changes with N).
-  std::uint64_t seed(std::uint64_t bookSeed) const {
-    if (!seedOption) return bookSeed;
-    auto mix = [](std::uint64_t z) {  // splitmix64's finaliser
-      z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-      z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-      return z ^ (z >> 31);
-    };
-    return mix(*seedOption + 0x9e3779b97f4a7c15ULL * (bookSeed + 1)) & 0xffffffffULL;
-  }
+  std::uint64_t seed(std::uint64_t bookSeed) const;
   /// False when --only names another figure: the program skips the work of this one.
   bool wants(const std::string& figure) const { return only.empty() || only == figure; }
   /// True unless --only was given: tables and values_<program>.txt are written only then.
@@ -107,144 +96,21 @@ struct Options {
 };
 
 /// The one-line usage of a program: every option, in the same order everywhere.
-inline std::string usageLine(const Program& p) {
-  std::string u = p.name + " [--out DIR] [--quick] [--max-n N] [--no-plot] [--seed N] [--only FIG] [--size WxH]";
-  for (const ExtraOption& e : p.extras) u += " [" + e.name + (e.value.empty() ? "" : " " + e.value) + "]";
-  return u + " [--help]";
-}
+std::string usageLine(const Program& p);
 
 /// What --help prints: the usage, the purpose, one line per option.
-inline std::string helpText(const Program& p) {
-  std::ostringstream s;
-  auto line = [&](const std::string& opt, const std::string& what) {
-    s << "  " << opt << std::string(opt.size() < 14 ? 14 - opt.size() : 1, ' ') << what << "\n";
-  };
-  s << "usage: " << usageLine(p) << "\n" << p.purpose << "\n";
-  line("--out DIR", "where to write figures, tables and data (default: " + std::string(DT_OUTPUT_DIR) + "/ch2)");
-  line("--quick", "a smaller run: smaller sizes, a few seconds");
-  line("--max-n N", "the largest point count, " + std::to_string(p.minN) + " to " +
-                        std::to_string(p.maxN) + " (1e5 is read as 100000)");
-  line("--no-plot", "write data and tables, do not call gnuplot");
-  line("--seed N", "other random points than the book's fixed seeds (N from 0 to 2^64-1)");
-  std::string figs;
-  for (const std::string& f : p.figures) figs += " " + f;
-  line("--only FIG", p.figures.empty() ? std::string("draw one figure only (this program draws none)")
-                                      : "draw one figure only, tables and values left as they are; FIG:" + figs);
-  line("--size WxH", "the figures' size in pixels instead of the style's, e.g. 800x450 (each 64 to 8192)");
-  for (const ExtraOption& e : p.extras) line(e.name + (e.value.empty() ? "" : " " + e.value), e.help);
-  line("--help", "this list");
-  return s.str();
-}
+std::string helpText(const Program& p);
 
 /// Reads a whole integer: digits, or a number in scientific notation that is a whole number
 /// (1e5, 2.5e3). Returns nothing for anything else (1.5, 12abc, 0x10, an overflow).
-inline std::optional<long> parseWhole(const std::string& text) {
-  const char* b = text.data();
-  const char* e = b + text.size();
-  long v = 0;
-  auto r = std::from_chars(b, e, v);
-  if (r.ec == std::errc() && r.ptr == e) return v;
-  double d = 0;
-  auto rd = std::from_chars(b, e, d);
-  if (rd.ec != std::errc() || rd.ptr != e || !std::isfinite(d) || d != std::floor(d) ||
-      std::fabs(d) > 9.0e15)
-    return std::nullopt;
-  return long(d);
-}
+std::optional<long> parseWhole(const std::string& text);
 
 /// Reads the options of program `p` (see Options). A usage error (an unknown option, a missing
 /// or malformed value, an option given twice, an extra argument, a --max-n outside what the
 /// program can do) is one line on stderr and exit status 2, before anything is written.
 /// --help prints helpText and exits 0. Creates the output directory (exit 1 if it cannot)
 /// unless `createOut` is false.
-inline Options parseOptions(int argc, char** argv, const Program& p, bool createOut = true) {
-  Options o;
-  auto refuse = [&](const std::string& what) {
-    std::cerr << p.name << ": " << what << "; usage: " << usageLine(p) << "\n";
-    std::exit(2);
-  };
-  std::map<std::string, bool> seen;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (a == "--help" || a == "-h") {
-      std::cout << helpText(p);
-      std::exit(0);
-    }
-    const ExtraOption* extra = nullptr;
-    for (const ExtraOption& e : p.extras)
-      if (e.name == a) extra = &e;
-    const bool takesValue = a == "--out" || a == "--max-n" || a == "--seed" || a == "--only" ||
-                            a == "--size" || (extra && !extra->value.empty());
-    const bool known = takesValue || a == "--quick" || a == "--no-plot" || extra;
-    if (!known) {
-      if (a.size() > 1 && a[0] == '-') refuse("unknown option '" + a + "'");
-      refuse("unexpected argument '" + a + "'");
-    }
-    if (seen[a]) refuse("option " + a + " given twice");
-    seen[a] = true;
-    std::string v;
-    if (takesValue) {
-      if (i + 1 >= argc) refuse("option " + a + " needs a value");
-      v = argv[++i];
-    }
-    if (a == "--out") {
-      if (v.empty()) refuse("--out needs a directory name, not ''");
-      if (v.find('\n') != std::string::npos) refuse("--out: a directory name with a newline is not supported");
-      o.out = v;
-    } else if (a == "--quick") {
-      o.quick = true;
-    } else if (a == "--no-plot") {
-      o.plot = false;
-    } else if (a == "--max-n") {
-      const std::optional<long> n = parseWhole(v);
-      if (!n || *n < p.minN || *n > p.maxN)
-        refuse("--max-n needs a whole number from " + std::to_string(p.minN) + " to " +
-               std::to_string(p.maxN) + " (what this program can do), not '" + v + "'");
-      o.maxN = *n;
-    } else if (a == "--seed") {
-      std::uint64_t s = 0;
-      auto r = std::from_chars(v.data(), v.data() + v.size(), s);
-      if (r.ec != std::errc() || r.ptr != v.data() + v.size())
-        refuse("--seed needs a whole number from 0 to 2^64-1, not '" + v + "'");
-      o.seedOption = s;
-    } else if (a == "--only") {
-      bool ok = false;
-      std::string figs;
-      for (const std::string& f : p.figures) {
-        ok = ok || f == v;
-        figs += " " + f;
-      }
-      if (!ok)
-        refuse(p.figures.empty() ? "--only " + v + ": this program draws no figure"
-                                 : "--only: no figure '" + v + "' here (its figures:" + figs + ")");
-      o.only = v;
-    } else if (a == "--size") {
-      const std::size_t x = v.find('x');
-      const std::optional<long> w = x == std::string::npos ? std::nullopt : parseWhole(v.substr(0, x));
-      const std::optional<long> h = x == std::string::npos ? std::nullopt : parseWhole(v.substr(x + 1));
-      if (!w || !h || *w < 64 || *w > 8192 || *h < 64 || *h > 8192)
-        refuse("--size needs WIDTHxHEIGHT in pixels, each 64 to 8192 (e.g. 800x450), not '" + v + "'");
-      o.width = int(*w);
-      o.height = int(*h);
-    } else if (extra->value == "N") {
-      const std::optional<long> n = parseWhole(v);
-      if (!n || *n < extra->lo || *n > extra->hi)
-        refuse(a + " needs a whole number from " + std::to_string(extra->lo) + " to " +
-               std::to_string(extra->hi) + ", not '" + v + "'");
-      o.extra[a] = std::to_string(*n);
-    } else {
-      o.extra[a] = v;
-    }
-  }
-  std::error_code ec;
-  o.out = std::filesystem::absolute(o.out, ec).lexically_normal().string();
-  if (!ec && createOut) std::filesystem::create_directories(o.out, ec);
-  if (ec) {
-    std::cerr << p.name << ": cannot create the output directory '" << o.out << "': " << ec.message() << "\n";
-    std::exit(1);
-  }
-  return o;
-}
+Options parseOptions(int argc, char** argv, const Program& p, bool createOut = true);
 
 /// The main() of a chapter program: reads the options (parseOptions), runs `body(options)`,
 /// and reports an exception on stderr (prefixed with the program's name) with exit status 1,
@@ -290,64 +156,22 @@ int runMain(int argc, char** argv, const Program& p, Body&& body,
 }
 
 /// Writes a file into the output directory and says so.
-inline std::string writeOut(const Options& o, const std::string& name, const std::string& text) {
-  const std::string path = o.out + "/" + name;
-  const std::string was = phase();
-  phase() = "writing " + path;
-  dt::writeFileAtomic(path, text);
-  phase() = was;
-  std::cout << "wrote " << path << "\n";
-  return path;
-}
+std::string writeOut(const Options& o, const std::string& name, const std::string& text);
 
 /// The files a gnuplot script promises: every literal `outdir."/NAME"` (or with single quotes)
 /// in it. Names built with sprintf (animation frames) are not listed; the script's own exit
 /// status covers them.
-inline std::vector<std::string> gnuplotOutputs(const std::string& scriptPath) {
-  std::ifstream in(scriptPath);
-  std::stringstream text;
-  text << in.rdbuf();
-  const std::string s = text.str();
-  std::vector<std::string> names;
-  for (std::size_t at = s.find("outdir."); at != std::string::npos; at = s.find("outdir.", at + 7)) {
-    const std::size_t q = at + 7;
-    if (q + 2 >= s.size() || (s[q] != '"' && s[q] != '\'') || s[q + 1] != '/') continue;
-    const std::size_t close = s.find(s[q], q + 1);
-    if (close != std::string::npos) names.push_back(s.substr(q + 2, close - q - 2));
-  }
-  return names;
-}
+std::vector<std::string> gnuplotOutputs(const std::string& scriptPath);
 
 /// Why a figure file is cut short, or "" if it looks whole: a PNG must end with its IEND chunk,
 /// an SVG with its closing tag (gnuplot writing into a full disk stops anywhere). Other kinds
 /// are not judged.
-inline std::string figureTruncated(const std::string& path) {
-  auto endsWith = [](const std::string& s, const std::string& tail) {
-    return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
-  };
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  const std::string s = text.str();
-  if (endsWith(path, ".png")) {
-    static const std::string iend("\0\0\0\0IEND\xae\x42\x60\x82", 12);
-    if (s.compare(0, 8, "\x89PNG\r\n\x1a\n") != 0) return "no PNG signature";
-    if (!endsWith(s, iend)) return "no IEND chunk at its end";
-  } else if (endsWith(path, ".svg")) {
-    std::size_t end = s.find_last_not_of(" \t\r\n");
-    if (end == std::string::npos || !endsWith(s.substr(0, end + 1), "</svg>")) return "no closing </svg>";
-  }
-  return "";
-}
+std::string figureTruncated(const std::string& path);
 
 /// `text` as a gnuplot single-quoted string: gnuplot reads nothing inside one but '' (one
 /// quote), so a path with ", $(...), ;, \ or a space stays the path. (parseOptions refuses a
 /// newline in --out.)
-inline std::string gnuplotQuote(const std::string& text) {
-  std::string q = "'";
-  for (char c : text) q += c == '\'' ? std::string("''") : std::string(1, c);
-  return q + "'";
-}
+std::string gnuplotQuote(const std::string& text);
 
 /// Runs figures/ch2/<script> with gnuplot, without a shell: gnuplot runs in figures/ch2 (the
 /// scripts load style.gp from there) and gets `datadir` and `outdir` (both --out) as gnuplot
@@ -358,42 +182,7 @@ inline std::string gnuplotQuote(const std::string& text) {
 /// another figure. A figure the book embeds must not go missing quietly: if gnuplot fails, or
 /// a file the script names is not written by this run, this throws (runMain turns that into
 /// exit status 1) with the script and the file named.
-inline void runGnuplot(const Options& o, const std::string& script) {
-  if (!o.plot) return;
-  if (!o.wants(script.substr(0, script.rfind(".gp")))) return;
-  const std::string dir = std::string(DT_SOURCE_DIR) + "/figures/ch2";
-  const std::string path = dir + "/" + script;
-  const std::vector<std::string> promised = gnuplotOutputs(path);
-  for (const auto& name : promised) std::remove((o.out + "/" + name).c_str());
-  std::string vars = "datadir = " + gnuplotQuote(o.out) + "; outdir = " + gnuplotQuote(o.out);
-  if (o.width > 0)
-    vars += "; fig_size_w = " + std::to_string(o.width) + "; fig_size_h = " + std::to_string(o.height);
-  ProcessIo io;
-  io.cwd = dir;
-  io.env = {{"DT_DATADIR", o.out}};
-  const std::string was = phase();
-  phase() = "drawing " + path;
-  const int rc = runProgram({"gnuplot", "-e", vars, script}, io);
-  phase() = was;
-  if (rc == 127)
-    throw std::runtime_error("could not run gnuplot on " + path +
-                             ": its figures were not drawn (is gnuplot installed? bash scripts/deps.sh)");
-  if (rc != 0)
-    throw std::runtime_error("gnuplot failed (status " + std::to_string(rc) + ") on " + path +
-                             ": its figures were not drawn");
-  for (const auto& name : promised) {
-    struct stat st;
-    if (stat((o.out + "/" + name).c_str(), &st) != 0 || st.st_size == 0)
-      throw std::runtime_error(path + " ran but did not write " + o.out + "/" + name);
-    const std::string cut = figureTruncated(o.out + "/" + name);
-    if (!cut.empty()) {
-      std::remove((o.out + "/" + name).c_str());  // no half figure left for the book to embed
-      throw std::runtime_error(path + " ran but " + o.out + "/" + name + " is cut short (" + cut +
-                               "; a full disk?): removed");
-    }
-  }
-  std::cout << "plotted " << path << " into " << o.out << "\n";
-}
+void runGnuplot(const Options& o, const std::string& script);
 
 /// A table printed as Markdown on stdout and written as .md, .csv and .html (the book
 /// includes the .html fragment with \htmlinclude).
@@ -401,38 +190,7 @@ inline void runGnuplot(const Options& o, const std::string& script) {
 /// terminal ("N_search/sqrt(n)", "2^-53", "0 <= i < 256", "O(a,b,c)", "1e+06", "a -> b"), set for a
 /// page: sub- and superscripts, √, ≤, ≪, →, ±, ⌈log₄ n⌉, the notes' 𝒪 and 𝒞 (as the figures print them, figures/ch2/notation.txt), and '<', '>', '&'
 /// escaped.
-inline std::string htmlMath(std::string s) {
-  auto sub = [&s](const char* re, const char* to) { s = std::regex_replace(s, std::regex(re), to); };
-  sub("<=", "≤");
-  sub(">=", "≥");
-  sub(">>", "≫");
-  sub("<<", "≪");
-  sub("->", "→");
-  sub("\\+-", "±");
-  sub("\\bceil\\(log4 ([A-Za-z])\\)", "⌈log₄ $1⌉");
-  sub(" ~ ", " ∼ ");
-  sub("&(?![a-z]+;|#[0-9]+;)", "&amp;");
-  sub("<", "&lt;");
-  sub(">", "&gt;");
-  sub("\\(\\.\\.\\.\\)", "(…)");
-  sub("sqrt\\(([A-Za-z0-9_]+)\\)", "√$1");
-  sub("sqrt\\(", "√(");
-  sub("\\b1e(-?[1-9][0-9]*)\\b", "10^$1");
-  sub("\\b1e\\+0*([1-9][0-9]*)\\b", "10^$1");
-  sub("\\b1e±0*([1-9][0-9]*)\\b", "10^±$1");
-  sub("\\|O\\|", "|𝒪|");
-  sub("\\bO\\(", "𝒪(");
-  sub("\\|InC\\|", "|𝒞|");
-  sub("\\bInC\\(", "𝒞(");
-  sub("\\|C\\|", "|𝒞|");
-  sub("\\bS0\\b", "S<sub>0</sub>");
-  sub("\\b(DT|[A-Za-z])_([A-Za-z0-9]+)\\b", "$1<sub>$2</sub>");
-  // An exponent is a number (1.5 but not the range dots of "2^-60..2^60") or a name.
-  sub("([A-Za-z0-9)])\\^-([0-9]+(?:\\.[0-9]+)?|[A-Za-z][A-Za-z0-9]*)", "$1<sup>−$2</sup>");
-  sub("([A-Za-z0-9)])\\^((?:±)?[0-9]+(?:\\.[0-9]+)?|[A-Za-z][A-Za-z0-9]*)", "$1<sup>$2</sup>");
-  sub("\\(us\\)", "(µs)");
-  return s;
-}
+std::string htmlMath(std::string s);
 
 struct Table {
   std::string caption;
@@ -441,70 +199,17 @@ struct Table {
 
   void add(std::vector<std::string> row) { rows.push_back(std::move(row)); }
 
-  std::string markdown() const {
-    std::ostringstream s;
-    if (!caption.empty()) s << caption << "\n\n";
-    s << "|";
-    for (const auto& h : header) s << " " << h << " |";
-    s << "\n|";
-    for (std::size_t i = 0; i < header.size(); ++i) s << (i ? " ---: |" : " :--- |");
-    s << "\n";
-    for (const auto& r : rows) {
-      s << "|";
-      for (const auto& c : r) s << " " << c << " |";
-      s << "\n";
-    }
-    return s.str();
-  }
-  std::string csv() const {
-    std::ostringstream s;
-    for (std::size_t i = 0; i < header.size(); ++i) s << (i ? "," : "") << header[i];
-    s << "\n";
-    for (const auto& r : rows) {
-      for (std::size_t i = 0; i < r.size(); ++i) s << (i ? "," : "") << r[i];
-      s << "\n";
-    }
-    return s.str();
-  }
+  std::string markdown() const;
+  std::string csv() const;
   /// For the book, a table too wide for the text column is set as several narrower tables,
   /// each of these column groups (indices into `header`) one table, in this order; the first
   /// column (the row's key, n or the input) is repeated in each. Empty: one table.
   std::vector<std::vector<std::size_t>> htmlParts;
 
-  std::string html() const {
-    std::vector<std::vector<std::size_t>> parts = htmlParts;
-    if (parts.empty()) {
-      parts.emplace_back();
-      for (std::size_t i = 0; i < header.size(); ++i) parts.back().push_back(i);
-    }
-    std::ostringstream s;
-    for (std::size_t p = 0; p < parts.size(); ++p) {
-      std::vector<std::size_t> cols = parts[p];
-      if (p > 0 && (cols.empty() || cols.front() != 0)) cols.insert(cols.begin(), 0);
-      s << "<table class=\"doxtable\">\n";
-      if (!caption.empty())
-        s << "<caption>" << (p == 0 ? htmlMath(caption) : "(continued)") << "</caption>\n";
-      s << "<tr>";
-      for (std::size_t c : cols) s << "<th>" << htmlMath(header.at(c)) << "</th>";
-      s << "</tr>\n";
-      for (const auto& r : rows) {
-        s << "<tr>";
-        for (std::size_t c : cols) s << "<td>" << (c < r.size() ? htmlMath(r[c]) : "") << "</td>";
-        s << "</tr>\n";
-      }
-      s << "</table>\n";
-    }
-    return s.str();
-  }
+  std::string html() const;
   /// Prints the Markdown and writes <stem>.md, <stem>.csv, <stem>.html.
   /// Nothing with --only (a figure alone leaves the tables of the last full run as they are).
-  void emit(const Options& o, const std::string& stem) const {
-    if (!o.everything()) return;
-    std::cout << "\n" << markdown() << "\n";
-    writeOut(o, stem + ".md", markdown());
-    writeOut(o, stem + ".csv", csv());
-    writeOut(o, stem + ".html", html());
-  }
+  void emit(const Options& o, const std::string& stem) const;
 };
 
 /// printf-style formatting into a std::string.
@@ -517,11 +222,7 @@ std::string fmt(const char* f, A... a) {
 
 /// The spread of some measurements beside their median (ch::median, timing.h), "min-max" in `format` ("-" for fewer
 /// than two): a wide one says the machine was noisy.
-inline std::string spread(const std::vector<double>& v, const char* format) {
-  if (v.size() < 2) return "-";
-  const auto mm = std::minmax_element(v.begin(), v.end());
-  return fmt(format, *mm.first) + "-" + fmt(format, *mm.second);
-}
+std::string spread(const std::vector<double>& v, const char* format);
 
 /// The numbers and verdicts a book page quotes in its prose, written by a chapter program as
 /// "key value" lines into values_<program>.txt next to its tables. The book build replaces
@@ -532,23 +233,11 @@ class Values {
  public:
   Values(const Options& o, std::string program) : o_(o), program_(std::move(program)) {}
   /// Records `value` under `key` (one word; each key once per program).
-  void set(const std::string& key, const std::string& value) {
-    if (key.empty() || key.find_first_of(" \t\n{}") != std::string::npos)
-      throw std::invalid_argument("value key '" + key + "' must be one word without braces");
-    if (value.find('\n') != std::string::npos)
-      throw std::invalid_argument("value of '" + key + "' spans lines");
-    for (const auto& kv : kv_)
-      if (kv.first == key) throw std::invalid_argument("value key '" + key + "' set twice");
-    kv_.emplace_back(key, value);
-  }
+  void set(const std::string& key, const std::string& value);
   /// A number, printf-formatted (e.g. "%.1f").
   void num(const std::string& key, double v, const char* format) { set(key, fmt(format, v)); }
   /// How a measured `last` compares with `first`, in three ways (a cost can fall as well as rise).
-  void trend(const std::string& key, double first, double last) {
-    set(key, last > 1.25 * first   ? "rises by more than a quarter"
-             : last < 0.75 * first ? "falls by more than a quarter"
-                                   : "stays within a quarter of its first value");
-  }
+  void trend(const std::string& key, double first, double last);
   /// One of two words, as the measured condition says.
   void verdict(const std::string& key, bool condition, const char* ifTrue, const char* ifFalse) {
     set(key, condition ? ifTrue : ifFalse);
@@ -556,17 +245,8 @@ class Values {
   /// Writes values_<program>.txt into the output directory.
   /// Nothing with --only: the values of the last full run stay as they are.
   /// The value recorded under `key` (a test reads a verdict back with it).
-  const std::string& get(const std::string& key) const {
-    for (const auto& kv : kv_)
-      if (kv.first == key) return kv.second;
-    throw std::invalid_argument("no value under '" + key + "'");
-  }
-  void write() const {
-    if (!o_.everything()) return;
-    std::string text;
-    for (const auto& kv : kv_) text += kv.first + " " + kv.second + "\n";
-    writeOut(o_, "values_" + program_ + ".txt", text);
-  }
+  const std::string& get(const std::string& key) const;
+  void write() const;
 
  private:
   const Options& o_;
@@ -581,18 +261,7 @@ class Progress {
   Progress(std::string what, std::uint64_t total)
       : what_(std::move(what)), total_(total), tty_(isatty(2)),
         t0_(std::chrono::steady_clock::now()), last_(t0_) {}
-  void update(std::uint64_t done) {
-    if (!tty_) return;
-    const auto now = std::chrono::steady_clock::now();
-    if (done < total_ && std::chrono::duration<double>(now - last_).count() < 0.25) return;
-    last_ = now;
-    const double el = std::chrono::duration<double>(now - t0_).count();
-    const double rate = el > 0 ? double(done) / el : 0;
-    const double left = rate > 0 ? double(total_ - done) / rate : 0;
-    std::fprintf(stderr, "\r%s: %llu/%llu (%.0f/s, %.0f s left)   ", what_.c_str(),
-                 (unsigned long long)done, (unsigned long long)total_, rate, left);
-    if (done >= total_) std::fprintf(stderr, "\n");
-  }
+  void update(std::uint64_t done);
 
  private:
   std::string what_;
@@ -602,8 +271,6 @@ class Progress {
 };
 
 /// Seconds since `t0`.
-inline double secondsSince(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
+double secondsSince(std::chrono::steady_clock::time_point t0);
 
 }  // namespace ch

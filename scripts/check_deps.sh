@@ -28,7 +28,7 @@ cmake        cmake              scripts/main.sh scripts/test.sh scripts/fuzz.sh
 ctest        cmake              scripts/test.sh
 make         make               cmake (the generator)
 ccache       ccache             CMakeLists.txt (compiles a file once for every copy of the tree)
-gnuplot      gnuplot-nox        chapters/common.h runGnuplot (runProgram)
+gnuplot      gnuplot-nox        chapters/common.cpp runGnuplot (runProgram)
 doxygen      doxygen            book/CMakeLists.txt
 clang++      clang              scripts/fuzz.sh
 chromium     chromium           book/layout_check.sh (the book layout, measured) and tests of the book
@@ -205,7 +205,7 @@ scan_sources() {
     { grep -oE '"[a-z][a-z0-9+._-]* [^"]*' "$f" || true; } | sed -e 's/^"//' -e 's/^command -v //' |
       awk -v file="$f" '{ print file ": " $1 }'
   done < <(grep -rlE 'std::system\(|popen\(|exec[lv]p?\(' code chapters cli tests book 2>/dev/null || true)
-  # C++ sources that run commands without a shell (chapters/process.h): the call form
+  # C++ sources that run commands without a shell (chapters/process.h, .cpp): the call form
   # runProgram({"prog", ...}) names the program as the vector's first literal.
   { grep -roE 'runProgram\(\{ *"[a-z][a-z0-9+._-]*"' code chapters cli tests book 2>/dev/null || true; } |
     sed -E 's/^([^:]*):.*"([^"]*)"$/\1: \2/' 
