@@ -895,6 +895,18 @@ signal_name() {
     11) echo SIGSEGV ;; *) echo "signal $1" ;; esac
 }
 
+# teacher_cc DIR COMPILER ARGS...: a compile (-c) of the teacher's own code, never a student's,
+# run in DIR. Through ccache when it is installed, with DIR as its base: the same sources
+# compiled again by a later grade or selftest (into another temporary DIR) come from the cache.
+teacher_cc() {
+  local dir="$1"; shift
+  if command -v ccache >/dev/null 2>&1; then
+    (cd "$dir" && CCACHE_BASEDIR="$dir" ccache "$@")
+  else
+    "$@"
+  fi
+}
+
 # grade_prepare ID BUILD WORK: what every student's grading shares, made once, by the teacher's
 # code only: the headers (no solution), the forbidden check and the judge compiled, the judge
 # linked with the teacher's solution and its output for SEED (the reference), the stub's and the
@@ -949,9 +961,10 @@ grade_prepare() {
   done
   chmod -R a+rX "$work/link"
   GRADE_BUILD="$work/link"
-  "$GRADE_CXX" -std=c++17 -O1 -o "$work/forbidden" "$HERE/exercises/forbidden.cpp" ||
+  { teacher_cc "$work" "$GRADE_CXX" -std=c++17 -O1 -c "$HERE/exercises/forbidden.cpp" -o "$work/forbidden.o" &&
+    "$GRADE_CXX" -o "$work/forbidden" "$work/forbidden.o"; } ||
     die "exercises/forbidden.cpp does not compile"
-  "$GRADE_CXX" "${GRADE_ARGS[@]}" -c "$HERE/exercises/judge.cpp" -o "$work/judge/judge.o" ||
+  teacher_cc "$work" "$GRADE_CXX" "${GRADE_ARGS[@]}" -c "$HERE/exercises/judge.cpp" -o "$work/judge/judge.o" ||
     die "exercises/judge.cpp does not compile"
   chmod 644 "$work/judge/judge.o"
   (cd "$build" && "$GRADE_CXX" "${GRADE_LINK_FLAGS[@]}" "$work/judge/judge.o" libdt.a "${GRADE_LIBS[@]}" -o "$work/judge_ref") ||
@@ -963,8 +976,8 @@ grade_prepare() {
   for f in $GRADE_FILES; do
     o="$(basename "$f" .cpp).o"
     strip_file "$id" "$HERE/$f" >"$work/stub_$(basename "$f")"
-    "$GRADE_CXX" "${GRADE_ARGS[@]}" -c "$work/stub_$(basename "$f")" -o "$work/stub_$o" 2>/dev/null &&
-      "$GRADE_CXX" "${GRADE_ARGS[@]}" -c "$HERE/$f" -o "$work/teacher_$o" || die "$f does not compile"
+    teacher_cc "$work" "$GRADE_CXX" "${GRADE_ARGS[@]}" -c "$work/stub_$(basename "$f")" -o "$work/stub_$o" 2>/dev/null &&
+      teacher_cc "$work" "$GRADE_CXX" "${GRADE_ARGS[@]}" -c "$HERE/$f" -o "$work/teacher_$o" || die "$f does not compile"
   done
 }
 
@@ -1485,7 +1498,7 @@ cmd_selftest() {
   local code_inc=() d
   for d in "$HERE"/code "$HERE"/code/*/; do code_inc+=(-I"${d%/}"); done
   # The judges of grade (exercises/judge.cpp) and the library's output for each.
-  g++ -std=c++17 -O1 -ffp-contract=off "${code_inc[@]}" -c "$HERE/exercises/judge.cpp" -o "$work/judge.o" &&
+  teacher_cc "$work" g++ -std=c++17 -O1 -ffp-contract=off "${code_inc[@]}" -c "$HERE/exercises/judge.cpp" -o "$work/judge.o" &&
     g++ -o "$work/judge_ref" "$work/judge.o" "$build/libdt.a" -lmpfr -lgmp -pthread ||
     die "exercises/judge.cpp does not compile or link with $build/libdt.a"
   local judged; judged="$("$work/judge_ref" --list)"
@@ -1497,7 +1510,7 @@ cmd_selftest() {
     for f in $files; do
       o="$work/$(basename "$f" .cpp).stub.o"
       strip_file "$id" "$HERE/$f" >"$work/$(basename "$f")"
-      if ! g++ -std=c++17 -O1 -ffp-contract=off "${code_inc[@]}" -c "$work/$(basename "$f")" -o "$o" \
+      if ! teacher_cc "$work" g++ -std=c++17 -O1 -ffp-contract=off "${code_inc[@]}" -c "$work/$(basename "$f")" -o "$o" \
            2>"$work/cc.log"; then
         echo "FAIL $id: the stub copy of $f does not compile:"; head -n 20 "$work/cc.log"; ok=0
       fi
