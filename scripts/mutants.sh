@@ -223,14 +223,14 @@ cmake -S "$src" -B "$build" -DCMAKE_BUILD_TYPE=Release ${MUTANTS_CMAKE_ARGS:-} >
   { cat "$work/configure.log"; exit 2; }
 # ---- which test files can reach a file --------------------------------------------------------
 # Edges of the include graph, read once: a file leads to the repository files it includes with
-# "..." (looked up beside it, then in tests/, code/ and each room of code/), and a header to the code/ and chapters/
-# files that implement it (include it first). reached_by[F] lists the files with an edge to F.
+# "..." (looked up beside it, then in tests/, code/ and each room of code/), and a header to the code/, chapters/
+# and book/ files that implement it (include it first). reached_by[F] lists the files with an edge to F.
 declare -A reached_by=()
 starts_programs=""  # test files that run programs: they reach every file
 code_dirs=(code)
 for d in "$src"/code/*/; do code_dirs+=("code/$(basename "$d")"); done
 for f in "$src"/code/*.h "$src"/code/*.cpp "$src"/code/*/*.h "$src"/code/*/*.cpp "$src"/tests/*.h "$src"/tests/*.cpp "$src"/tests/fuzz/*.h \
-         "$src"/book/*.h "$src"/chapters/*.h "$src"/chapters/*.cpp; do
+         "$src"/book/*.h "$src"/book/*.cpp "$src"/chapters/*.h "$src"/chapters/*.cpp; do
   [ -f "$f" ] || continue
   rel=${f#"$src"/}
   dir=$(dirname "$rel")
@@ -241,7 +241,7 @@ for f in "$src"/code/*.h "$src"/code/*.cpp "$src"/code/*/*.h "$src"/code/*/*.cpp
         cand=$(realpath -m --relative-to="$src" "$src/$cand")
         reached_by[$cand]+=" $rel"
         # An implementation includes its header first: the header leads to it.
-        [ $first = 1 ] && [[ $rel == code/*.cpp || $rel == chapters/*.cpp ]] && reached_by[$rel]+=" $cand"
+        [ $first = 1 ] && [[ $rel == code/*.cpp || $rel == chapters/*.cpp || $rel == book/*.cpp ]] && reached_by[$rel]+=" $cand"
         break
       fi
     done
