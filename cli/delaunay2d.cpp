@@ -395,12 +395,19 @@ std::string closedDescriptor(const dt::OutputRequest& r, const bool closedAtStar
 
 // A pause inside the commit after each rename ("committing N"), and one after the commit
 // ("committed", renamed = 0), announced on stderr, so that a test can send a signal or start a
-// second run right then.
+// second run right then. The signals are blocked during and after the commit: once one is
+// pending the pause has served its test, and it ends.
 void commitPause(std::size_t renamed, long ms) {
   const std::string line = renamed == 0 ? std::string("delaunay2d: committed\n")
                                         : "delaunay2d: committing " + std::to_string(renamed) + "\n";
   (void)!::write(STDERR_FILENO, line.data(), line.size());
-  ::usleep(useconds_t(ms * 1000));
+  for (long waited = 0; waited < ms; waited += 10) {
+    sigset_t pending;
+    if (::sigpending(&pending) == 0 && (sigismember(&pending, SIGTERM) == 1 || sigismember(&pending, SIGHUP) == 1 ||
+                                        sigismember(&pending, SIGINT) == 1))
+      return;
+    ::usleep(useconds_t(std::min(10L, ms - waited) * 1000));
+  }
 }
 
 int delaunay2d(int argc, char** argv, const dt::cli::TestHooks& hooks) {

@@ -22,8 +22,18 @@ struct Table21Row {
 };
 
 // One row of Table 2.1: Listing 2.7 on n uniform random points in random order, super-triangles,
-// the walk starting at the first face T[0]; the result checked exactly.
+// the walk starting at the first face T[0]; the result checked exactly. A row is computed once
+// per run of the suite: two claims read the rows of 10^4 and 10^5 points (an O(n^1.5) walk).
+Table21Row computeTable21(std::size_t n, unsigned seed);
 Table21Row table21(std::size_t n, unsigned seed) {
+  static std::map<std::pair<std::size_t, unsigned>, Table21Row> rows;
+  const auto key = std::make_pair(n, seed);
+  const auto known = rows.find(key);
+  if (known != rows.end()) return known->second;
+  return rows[key] = computeTable21(n, seed);
+}
+
+Table21Row computeTable21(std::size_t n, unsigned seed) {
   const dt::XY p = dt::uniformPoints(n, seed);
   dt::Triangulation T;
   std::vector<dt::Vertex*> S;
@@ -328,7 +338,7 @@ TEST_CASE("2.3.4 from 10^4 to 10^5 points N_search grows by less than sqrt(10) h
   // The notes: "56.8 x sqrt(10) = 179.6 which is close to 161". Their own step, 161 / 56.8 =
   // 2.83, is below sqrt(10) = 3.16: the walk's constant start cost (the face it returns, the
   // faces near T[0]) weighs more at small n. The same holds for this library's walk, measured.
-  const double n4 = table21(10000, 2135u).nSearch, n5 = table21(100000, 2135u).nSearch;
+  const double n4 = table21(10000, 2134u).nSearch, n5 = table21(100000, 2134u).nSearch;
   const double ours = n5 / n4, notes = 161 / 56.8;
   MESSAGE("N_search " << n4 << " at 10^4, " << n5 << " at 10^5: ratio " << ours
                       << " (the notes: " << notes << ")");
