@@ -310,14 +310,45 @@ void figure25Steps(const ch::Options& o, Fig25& F) {
   tab.emit(o, "table_fig2_5");
 }
 
+// The clearance in data units between a box (x0 x1 y0 y1) and a circle: 0 if it crosses it.
+double boxCircleClearance(const std::array<double, 4>& b, const CircleXY& c) {
+  double lo = 1e300, hi = -1e300;
+  for (int k = 0; k <= 16; ++k) {
+    const double t = k / 16.0;
+    for (const auto& [x, y] : {std::pair{b[0] + t * (b[1] - b[0]), b[2]}, std::pair{b[0] + t * (b[1] - b[0]), b[3]},
+                               std::pair{b[0], b[2] + t * (b[3] - b[2])}, std::pair{b[1], b[2] + t * (b[3] - b[2])}}) {
+      const double d = std::hypot(x - c.x, y - c.y) - c.r;
+      lo = std::min(lo, d), hi = std::max(hi, d);
+    }
+  }
+  return lo < 0 && hi > 0 ? 0 : std::min(std::fabs(lo), std::fabs(hi));
+}
+
 // The super-vertex s's label (s = 0..3), at one place in every panel and frame: outside the
-// square, beside its corner on the side away from the square, its box clear of the marker
-// (data units; every panel and frame sets labels and markers at the same size in data units).
+// square at its corner, in the direction (of 10 in the outward quarter) whose box, just clear
+// of the marker, stays farthest from every circle of the animation (the first cavity's circle
+// passes through all four corners), the nearer on a tie (data units; every panel and frame
+// sets labels and markers at the same size in data units).
 std::pair<double, double> superLabelAt(const Fig25& F, std::size_t s, const ch::Panel& p) {
-  const double cx = F.xy[2 * s], cy = F.xy[2 * s + 1], em = kFig25Label * F.fs.em;
+  const double cx = F.xy[2 * s], cy = F.xy[2 * s + 1], em = kFig25Label * F.fs.em, u = 1 / p.scale();
   const double sx = cx < 0.5 * (F.x0 + F.x1) ? -1 : 1, sy = cy < 0.5 * (F.y0 + F.y1) ? -1 : 1;
-  const double hw = 0.5 * ch::textWidthEm(F.name(s)) * em, r = ch::pointRadius(F.fs, 1.3);
-  return {cx + sx * (r + 4 + hw) / p.scale(), cy + sy * 0.2 * em / p.scale()};
+  const double hw = 0.5 * ch::textWidthEm(F.name(s)) * em, r = ch::pointRadius(F.fs, 1.3) + 3;
+  std::pair<double, double> best;
+  double bestScore = -1e300;
+  for (int k = 0; k <= 9; ++k) {
+    const double a = M_PI / 2 * k / 9, dx = sx * std::cos(a), dy = sy * std::sin(a);
+    double t = 0;  // px: the box (anchor 0.85 em above its bottom, 0.47 em below its top) clear of the marker
+    while (std::fabs(t * dx) < r + hw && (t * dy > r + 0.85 * em || -t * dy > r + 0.47 * em) == false) t += 1;
+    if (k > 0 && t > 1.45 * F.fs.em) continue;  // attached: within 1.5 em (beside it always is)
+    const std::array<double, 4> b = {cx + (t * dx - hw) * u, cx + (t * dx + hw) * u, cy + (t * dy - 0.85 * em) * u,
+                                     cy + (t * dy + 0.47 * em) * u};
+    double c = 1e300;
+    for (const auto& cs : F.frameCircles)
+      for (const CircleXY& ci : cs) c = std::min(c, boxCircleClearance(b, ci) / u);
+    const double score = std::min(c, 8.0) - 0.05 * t;
+    if (score > bestScore) bestScore = score, best = {cx + t * dx * u, cy + t * dy * u};
+  }
+  return best;
 }
 
 // A label's box in px as the placer sees it (anchor 0.47 em below its top, 0.85 em above its
@@ -367,6 +398,7 @@ void figure25Panels(const ch::Options& o, Fig25& F) {
     const ch::Panel pk = ch::cellPanel(fs, 2, 3, k, x0 - m, x1 + m, y0 - m, y1 + m);
     view += ch::fmt("P%d = \"", k + 1) + pk.gnuplot() + "\"\n";
     ch::LabelPlacer place(pk, kFig25Label * fs.em);
+    place.textRunGap(0.7 * kFig25Label * fs.em);
     place.segments(shown[k], 1.5 * std::max(1.5, fs.em / 18));
     for (std::size_t i = 0; i < np; ++i) place.marker(xy[2 * i], xy[2 * i + 1], ch::pointRadius(fs, 1.3));
     if (k == 0)
@@ -433,6 +465,7 @@ void figure25Frames(const ch::Options& o, const Fig25& F) {
     const int k = f == 0 ? 0 : f % 2 == 0 ? f / 2 : (f - 1) / 2;
     const std::size_t labelled = 4 + std::size_t((f + 1) / 2);
     ch::LabelPlacer place(pa, animFont * fa.em);
+    place.textRunGap(0.7 * animFont * fa.em);
     place.segments(allFrames[f], 1.5 * std::max(1.5, fa.em / 18));
     for (const CircleXY& c : frameCircles[f]) place.circle(c.x, c.y, c.r, 1.5 * std::max(1.5, fa.em / 18));
     for (std::size_t i = 0; i < np; ++i) place.marker(xy[2 * i], xy[2 * i + 1], ch::pointRadius(fa, animPs));
