@@ -75,7 +75,7 @@ CircleXY circumcircle(const XY& xy, int a, int b, int c) {
 // ---- Figure 2.5 and its animation -----------------------------------------------------------
 
 const double kFig25Factor = 1.5;  // super-square 1.5 times the box: small enough to see
-const double kFig25Label = 1.0;   // Figure 2.5's labels, in its em (were 0.85: too small to read)
+const double kFig25Label = 0.92;  // Figure 2.5's labels, in its em (were 0.85: too small to read)
 
 // Figure 2.5's margin around the super-square (data units): room for the super-vertices'
 // labels, which sit outside the square at their corners.
@@ -398,7 +398,7 @@ void figure25Panels(const ch::Options& o, Fig25& F) {
     const ch::Panel pk = ch::cellPanel(fs, 2, 3, k, x0 - m, x1 + m, y0 - m, y1 + m);
     view += ch::fmt("P%d = \"", k + 1) + pk.gnuplot() + "\"\n";
     ch::LabelPlacer place(pk, kFig25Label * fs.em);
-    place.textRunGap(0.7 * kFig25Label * fs.em);
+    place.textRunGap(0.62 * kFig25Label * fs.em);
     place.segments(shown[k], 1.5 * std::max(1.5, fs.em / 18));
     for (std::size_t i = 0; i < np; ++i) place.marker(xy[2 * i], xy[2 * i + 1], ch::pointRadius(fs, 1.3));
     if (k == 0)
@@ -465,7 +465,7 @@ void figure25Frames(const ch::Options& o, const Fig25& F) {
     const int k = f == 0 ? 0 : f % 2 == 0 ? f / 2 : (f - 1) / 2;
     const std::size_t labelled = 4 + std::size_t((f + 1) / 2);
     ch::LabelPlacer place(pa, animFont * fa.em);
-    place.textRunGap(0.7 * animFont * fa.em);
+    place.textRunGap(0.62 * animFont * fa.em);
     place.segments(allFrames[f], 1.5 * std::max(1.5, fa.em / 18));
     for (const CircleXY& c : frameCircles[f]) place.circle(c.x, c.y, c.r, 1.5 * std::max(1.5, fa.em / 18));
     for (std::size_t i = 0; i < np; ++i) place.marker(xy[2 * i], xy[2 * i + 1], ch::pointRadius(fa, animPs));
