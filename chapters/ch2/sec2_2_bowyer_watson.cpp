@@ -388,7 +388,7 @@ void figure25Panels(const ch::Options& o, Fig25& F) {
   auto name = [&](std::size_t i) { return F.name(i); };
   auto row = [&](std::size_t i, double lx, double ly) { return F.row(i, lx, ly); };
   const std::vector<std::vector<ch::Seg>>& shown = F.shown;
-  // The labels of Figure 2.5 are set at kFig25Label em (8.5 pt at 15 cm printed, 2 x 3 panels).
+  // The labels of Figure 2.5 are set at kFig25Label em (about 7.8 pt at 15 cm printed, 2 x 3 panels).
   std::vector<double> angle(np, NAN);
   std::vector<std::vector<double>>& staticAngle = F.staticAngle;
   staticAngle.assign(10, std::vector<double>(np, NAN));
