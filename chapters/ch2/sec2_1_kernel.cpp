@@ -540,6 +540,9 @@ void figure23(const ch::Options& o, const KernelExample& ex) {
         const double hw = 0.5 * ch::textWidthEm(name) * fs.em + 2, up = 0.5 * fs.em + 2, down = 0.9 * fs.em + 2;
         const double cx = pb.px(lx) + (hw + 0.4 * fs.em) * std::cos(a), cy = pb.py(ly) - (0.7 * fs.em + 0.4 * fs.em) * std::sin(a);
         const double cl = placerB.clearance({cx - hw, cy - up, cx + hw, cy + down});
+        // The label nearer its own circle than the other one.
+        const double ux = pb.x0 + (cx - pb.left) / pb.scale(), uy = pb.y1 - (cy - pb.top) / pb.scale();
+        if (std::fabs(std::hypot(ux - c.x, uy - c.y) - c.r) >= std::fabs(std::hypot(ux - other.x, uy - other.y) - other.r)) continue;
         if (cl > best) best = cl, bx = cx, by = cy;
       }
       const double hw = 0.5 * ch::textWidthEm(name) * fs.em + 2, up = 0.5 * fs.em + 2, down = 0.9 * fs.em + 2;
