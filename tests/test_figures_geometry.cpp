@@ -659,3 +659,129 @@ TEST_CASE("figures geometry Figure 2.4 labels p_{n+1} sigma_i sigma_{i+1} and p_
   CHECK(joined(markerErrors(f)) == "");
   if (beyondRule(f) > 0) MESSAGE(f.name << ": " << beyondRule(f) << " label(s) beyond 1.5 em (crowded)");
 }
+
+namespace {
+
+/// Frame `i` of the recovery figure as its files give it: every point and super-vertex by name,
+/// the frame's labels, the triangulation it draws; the points of S are its focus.
+GFigure recoveryFrame(const fs::path& dir, int i) {
+  GFigure f;
+  f.name = fmt("fig_recovery_frames frame %d", i);
+  const ch::FigureSize fs = ch::figureSize("fig_recovery_frames");
+  readView(viewLine(dir / fmt("rec_frame_%d.gp", i), "VIEW"), fs.W, f);
+  f.em = fs.em, f.marker = ch::pointRadius(fs, 0.9);
+  // A flip's vertices have five to seven edges, the removed one too: where no place within 1.5
+  // em is clear, the label goes up to 2.5 em away (as in Figure 2.5's DT_9), on its side of every
+  // edge; how many do is printed.
+  f.maxEm = 2.5;
+  readPoints(dir / "rec_named.dat", f);
+  readLabels(dir / fmt("rec_frame_%d_labels.dat", i), f);
+  f.edges = readPolylines(dir / fmt("rec_frame_%d.dat", i));
+  std::istringstream s(slurp(dir / "rec_points.dat"));  // the points of S (not the super-vertices)
+  for (double x, y; s >> x >> y;)
+    for (const GPoint& p : f.points)
+      if (dist(p.x, p.y, x, y) < 1e-9) f.focus.push_back(p);
+  return f;
+}
+
+}  // namespace
+
+TEST_CASE("figures geometry the recovery frames keep points apart and off edges and labels beside them") {
+  const fs::path dir = programRun("sec2_3_6_flips", "fig_recovery_frames");
+  int frames = 0;
+  for (; fs::exists(dir / fmt("rec_frame_%d_labels.dat", frames)); ++frames) {
+    const GFigure f = recoveryFrame(dir, frames);
+    REQUIRE(f.focus.size() == 9);
+    CHECK(joined(attachmentErrors(f)) == "");
+    if (beyondRule(f) > 0) MESSAGE(f.name << ": " << beyondRule(f) << " label(s) beyond 1.5 em (crowded)");
+    GFigure edgesOnly = f;  // the focus rule's edge part: 3 marker radii from every edge, so the uncovered regions show
+    edgesOnly.labels.clear();
+    CHECK(joined(focusErrors(edgesOnly)) == "");
+    for (std::size_t a = 0; a < f.focus.size(); ++a)
+      for (std::size_t b = a + 1; b < f.focus.size(); ++b)
+        CHECK_MESSAGE(dist(f.focus[a].x, f.focus[a].y, f.focus[b].x, f.focus[b].y) * f.scale >= 3 * f.marker,
+                      f.name << ": " << f.focus[a].name << " and " << f.focus[b].name << " closer than 3 marker radii");
+    // The labels of points of S inside the super-vertices' square (a label outside it is across
+    // its side).
+    double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
+    for (const GPoint& p : f.points)
+      if (std::find_if(f.focus.begin(), f.focus.end(), [&](const GPoint& q) { return q.name == p.name; }) == f.focus.end())
+        x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
+    for (const GPoint& l : f.labels) {
+      const bool ofS = std::find_if(f.focus.begin(), f.focus.end(), [&](const GPoint& q) { return q.name == l.name; }) != f.focus.end();
+      const auto b = labelBox(f, l);
+      if (ofS) CHECK_MESSAGE((b[0] > x0 && b[1] < x1 && b[2] > y0 && b[3] < y1), f.name << ": label " << l.name << " leaves the square");
+    }
+  }
+  CHECK(frames >= 5);  // DT(S0 ∪ S), 3 to 5 flips, DT(S)
+}
+
+namespace {
+
+/// The triangles of a gnuplot file of closed triangles (blocks of four rows), as x0 y0 x1 y1 x2 y2.
+std::vector<std::array<double, 6>> readTriangles(const fs::path& p) {
+  std::vector<std::array<double, 6>> out;
+  std::vector<double> cur;
+  std::istringstream in(slurp(p));
+  for (std::string line; std::getline(in, line);) {
+    double x, y;
+    if (std::sscanf(line.c_str(), "%lf %lf", &x, &y) == 2) cur.push_back(x), cur.push_back(y);
+    if (line.empty() || in.peek() == EOF) {
+      if (cur.size() >= 6) out.push_back({cur[0], cur[1], cur[2], cur[3], cur[4], cur[5]});
+      cur.clear();
+    }
+  }
+  return out;
+}
+
+bool insideTriangle(const std::array<double, 6>& t, double x, double y) {
+  auto side = [&](int a, int b) {
+    return (t[2 * b] - t[2 * a]) * (y - t[2 * a + 1]) - (t[2 * b + 1] - t[2 * a + 1]) * (x - t[2 * a]);
+  };
+  const double s0 = side(0, 1), s1 = side(1, 2), s2 = side(2, 0);
+  return (s0 > 0 && s1 > 0 && s2 > 0) || (s0 < 0 && s1 < 0 && s2 < 0);
+}
+
+}  // namespace
+
+TEST_CASE("figures geometry Figure 2.10 draws no sliver and starts every link arrow in a triangle it shows") {
+  const fs::path dir = programRun("sec2_3_4_algorithms", "fig2_10");
+  const auto cavity = readTriangles(dir / "fig2_10_cavity.dat"), ball = readTriangles(dir / "fig2_10_ball.dat"),
+             outer = readTriangles(dir / "fig2_10_outer.dat");
+  REQUIRE(cavity.size() >= 4);
+  REQUIRE(ball.size() == cavity.size() + 2);
+  REQUIRE(outer.size() >= 3);
+  for (const auto* set : {&cavity, &ball, &outer})
+    for (const auto& t : *set) CHECK_MESSAGE(minAngleDeg(t) >= 12, "a triangle drawn to be seen has an angle of " << minAngleDeg(t) << " degrees");
+  // Each link arrow (x y dx dy) starts inside a triangle of the ball or a neighbour.
+  int arrows = 0;
+  for (const char* file : {"fig2_10_links_new.dat", "fig2_10_links_outer.dat"}) {
+    std::istringstream in(slurp(dir / file));
+    for (double x, y, dx, dy; in >> x >> y >> dx >> dy; ++arrows) {
+      bool shown = false;
+      for (const auto* set : {&ball, &outer})
+        for (const auto& t : *set) shown = shown || insideTriangle(t, x, y);
+      CHECK_MESSAGE(shown, file << ": an arrow starts at " << x << ", " << y << ", in no triangle drawn");
+    }
+  }
+  CHECK(arrows >= 2 * int(ball.size()));
+}
+
+TEST_CASE("figures geometry the flip figure labels each vertex beside it and nearer it than any other vertex") {
+  const fs::path dir = programRun("sec2_3_6_flips", "fig_flip");
+  for (const std::string stem : {"flip_before", "flip_after"}) {
+    GFigure f = flipPanel(dir, stem);
+    // Every vertex drawn (each has a marker), not only the flip's four.
+    std::istringstream in(slurp(dir / (stem + "_points.dat")));
+    int markers = 0;
+    for (double x, y; in >> x >> y; ++markers)
+      if (std::none_of(f.points.begin(), f.points.end(), [&](const GPoint& p) { return dist(p.x, p.y, x, y) < 1e-9; }))
+        f.points.push_back({x, y, fmt("vertex (%g, %g)", x, y)});
+    CHECK(markers >= 8);
+    // Up to 3 em (the labels are 3 to 5 em wide, the vertices have five or six edges); how
+    // many are beyond the editor's 1.5 em is printed.
+    f.maxEm = 3.0;
+    CHECK(joined(attachmentErrors(f)) == "");
+    if (beyondRule(f) > 0) MESSAGE(f.name << ": " << beyondRule(f) << " label(s) beyond 1.5 em (crowded)");
+  }
+}

@@ -211,11 +211,11 @@ void figureFlip(const ch::Options& o) {
       const int before = d0.at(v), now = d1.at(v);
       std::string t = ch::mathText(names[i]) + ": " + std::to_string(after ? now : before);
       if (after) t += std::string(" (") + (now > before ? "+" : "\u2212") + std::to_string(std::abs(now - before)) + ")";
-      // gap 1 px: with 3 (the placer's usual) no place within 1.5 em is clear for these wide
-      // labels. maxEm 0.75: the placer looks up to twice as far (1.5 em, the editor's rule) for
-      // a clear place.
-      const auto [x, y] = placer.placeAttached(v->x, v->y, t, edges, NAN, 1, 0.75 / 0.85);
-      lab << "set label \"" << t << "\" at " << x << "," << y << " center front font sprintf(',%.1f', 0.85 * FS)\n";
+      // These labels are 3 to 5 em wide: within 1.5 em of a vertex of five or six edges no place
+      // is clear, so the placer goes up to twice as far (never across an edge, nearer its own
+      // vertex than any other); on the vertex's lines it was unreadable.
+      const auto [x, y] = placer.placeAttached(v->x, v->y, t, edges, NAN, 1, 1.5 / 0.85);
+      lab << "set label \"" << t << "\" at " << x << "," << y << " center front boxed font sprintf(',%.1f', 0.85 * FS)\n";
       rows += ch::fmt("%.10g %.10g ", v->x, v->y) + ch::quoted(t) + ch::fmt(" %.10g %.10g\n", x, y);
     }
     ch::writeOut(o, stem + "_labels.dat", rows);  // x y label lx ly: what the label rules check
