@@ -1108,3 +1108,25 @@ TEST_CASE("figures rules every timing chart shows medians and its caption cites 
     if (values.count(key)) CHECK_MESSAGE(std::atoi(values[key].c_str()) >= 1, key << " = " << values[key]);
   }
 }
+
+TEST_CASE("figures rules Table 2.1's chart has the notes' four values and the sqrt n line over their sizes") {
+  // The notes' Table 2.1 (N_search at n = 10^3..10^6), whatever sizes the run measured.
+  const std::vector<std::string> notes = dataLines(slurp(figureDir() / "table2_1_notes.dat"));
+  REQUIRE(notes.size() == 4);
+  const double want[4][2] = {{1e3, 19.8}, {1e4, 56.8}, {1e5, 161}, {1e6, 503}};
+  for (int i = 0; i < 4; ++i) {
+    double n = 0, v = 0;
+    REQUIRE(std::sscanf(notes[std::size_t(i)].c_str(), "%lf %lf", &n, &v) == 2);
+    CHECK(n == want[i][0]);
+    CHECK(v == doctest::Approx(want[i][1]));
+  }
+  // The reference line: a segment from 10^3 to 10^6 (drawn with one measured n too), rising as sqrt(n).
+  const std::vector<std::string> line = dataLines(slurp(figureDir() / "table2_1_sqrt.dat"));
+  REQUIRE(line.size() == 2);
+  double n0 = 0, v0 = 0, n1 = 0, v1 = 0;
+  REQUIRE(std::sscanf(line[0].c_str(), "%lf %lf", &n0, &v0) == 2);
+  REQUIRE(std::sscanf(line[1].c_str(), "%lf %lf", &n1, &v1) == 2);
+  CHECK(n0 == 1e3);
+  CHECK(n1 == 1e6);
+  CHECK(v1 / v0 == doctest::Approx(std::sqrt(1e3)));
+}
