@@ -25,12 +25,12 @@ do for [term in "png svg"] {
        datadir."/fig2_10_label.dat" using 1:2:(M."𝑝}") with labels tc rgb C_NEW notitle
   eval panel(2, "the ball and its adjacencies")
   eval PB
-  eval key_at(0.75)
+  eval key_at(0.72)  # left of the cell's middle: the two columns are wider than (a)'s one
   plot datadir."/fig2_10_outer.dat" with filledcurves closed fc rgb C_NEIGH fs solid 1.0 title "neighbours", \
        datadir."/fig2_10_ball.dat" with filledcurves closed fc rgb C_BALL fs solid 1.0 title "ball ".T_BALL, \
        datadir."/fig2_10_after.dat" with lines lw 1.2 lc rgb C_TRI notitle, \
-       datadir."/fig2_10_links_new.dat" using 1:2:3:4 with vectors head filled size screen 0.007,25 lw 2 lc rgb C_BALL_EDGE title "links ".T_NEWNEW, \
-       datadir."/fig2_10_links_outer.dat" using 1:2:3:4 with vectors head filled size screen 0.007,25 lw 2 lc rgb C_NEIGH_EDGE title "links ".T_NEWOUT, \
+       datadir."/fig2_10_links_new.dat" using 1:2:3:4 with vectors head filled size screen 0.007,25 lw 2 lc rgb C_BALL_EDGE title T_NEWNEW, \
+       datadir."/fig2_10_links_outer.dat" using 1:2:3:4 with vectors head filled size screen 0.007,25 lw 2 lc rgb C_NEIGH_EDGE title T_NEWOUT, \
        datadir."/fig2_10_point.dat" with points pt 7 ps (1.6*PS) lc rgb C_NEW notitle, \
        datadir."/fig2_10_label.dat" using 1:2:(M."𝑝}") with labels tc rgb C_NEW notitle
   unset multiplot
