@@ -150,7 +150,7 @@ void figure211(const ch::Options& o) {
       bool blocked = false;  // the curve leaves (x, y) vertically towards the label
       for (const std::size_t nb : {c - 1, c + 1})
         if (nb < cells.size() && std::fabs(cells[nb].x - x) < 1e-9 && (cells[nb].y - y) * sy > 0) blocked = true;
-      const double lx = blocked ? x + sx * 0.3 * cs : x, ly = y + sy * 0.28 * cs;
+      const double lx = blocked ? x + sx * 0.4 * cs : x, ly = y + sy * 0.28 * cs;
       curve << cells[c].row << " " << lx << " " << ly << "\n";
     }
     ch::writeOut(o, "fig2_11_h" + std::to_string(k) + ".dat", curve.str());

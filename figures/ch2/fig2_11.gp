@@ -10,7 +10,7 @@ do for [term in "png svg"] {
   set border
   set tics out nomirror
   set xtics nomirror; set ytics nomirror
-  set xrange [-0.05:1.05]
+  set xrange [-0.07:1.07]  # room for the labels beside the curve at x = 1/8 and 7/8
   set yrange [-0.05:1.05]
   set grid back lt 1 lc rgb C_GRID lw 1
 

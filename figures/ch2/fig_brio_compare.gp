@@ -37,8 +37,8 @@ series(c, order, dash) = sprintf("for [i = 0:%d] f using ($1 == i && $3 == %d ? 
 # gnuplot, the svg terminal, which takes a line for taller than its text, made its panels a
 # fifth shorter than the PNG's, and (d)'s legend spread over the y axis.
 # The bottom row leaves 3 em more under it for the legend, two lines across the canvas.
-rows(r) = sprintf("set tmargin at screen %.4f; set bmargin at screen %.4f; ", 1 - (r - 1) / 2.0 - 2.6 * EM / FH, (r == 1 ? 0.5 + 2.4 * EM / FH : 7.2 * EM / FH)) . \
-  (r == 1 ? "unset label 101" : sprintf("set label 101 \"%s\" at graph 0.5, screen %.4f center", M."𝑛}", 4.0 * EM / FH))
+rows(r) = sprintf("set tmargin at screen %.4f; set bmargin at screen %.4f; ", 1 - (r - 1) / 2.0 - 2.6 * EM / FH, (r == 1 ? 0.5 + 2.4 * EM / FH : 7.8 * EM / FH)) . \
+  (r == 1 ? "unset label 101" : sprintf("set label 101 \"%s\" at graph 0.5, screen %.4f center", M."𝑛}", 3.6 * EM / FH))
 do for [term in "png svg"] {
   eval fig_open(term, "fig_brio_compare")
   set output (term eq "png" ? outdir."/fig_brio_compare.png" : outdir."/fig_brio_compare.svg")
@@ -68,7 +68,7 @@ do for [term in "png svg"] {
   set ytics autofreq
   # The legend, under the panels: one entry per input (colour and shape), then the two orders
   # (line and fill, in black).
-  set key at screen 0.5, screen (1.6 * EM / FH) center center vertical maxrows 2 samplen 2.5 spacing 1.0 width 1 Left reverse
+  set key at screen 0.5, screen (1.5 * EM / FH) center center vertical maxrows 2 samplen 2.5 spacing 1.0 width 1 Left reverse
   eval "plot " . series(4, 0, 1) . stopped(4, 1) . \
        ", for [i = 0:ninputs - 1] NaN with linespoints lw 2 pt int(word(marks, i + 1)) ps (1.1*PS) lc rgb word(C_SERIES, i + 1) title word(names, i + 1)" . \
        ", NaN with linespoints lw 2 dt 2 pt 6 ps (1.1*PS) lc rgb 'black' title 'Hilbert (hollow)'" . \

@@ -8,9 +8,6 @@ load system("dirname '".ARG0."'")."/style.gp"
 do for [t in "png svg"] {
   eval fig_open(t, "fig_flip")
   set output (t eq "png" ? outdir.'/fig_flip.png' : outdir.'/fig_flip.svg')
-  # The labels on an opaque white box: where a vertex of five or six edges leaves no clear place
-  # within reach, the lines pass under the label, not through its letters.
-  set style textbox opaque noborder margins 1, 1
   eval layout(1, 2)
   eval panel(1, "before: edge ".M."𝑎𝑏}")
   load datadir.'/flip_before.gp'
