@@ -495,13 +495,13 @@ double recoveryFrames(const ch::Options& o, const RecoveryRun& ex, double factor
 // --seed (default 1) on, the first whose points keep 3 marker radii apart and off every edge
 // (recoveryScore), else the best of 3000 seeds. (Searching further for labels that all keep
 // 2 px off every line, recoveryFrames, cost seconds for little: the labels stay attached.)
-RecoveryRun recoveryExample(const ch::Options& o, double factor, std::uint64_t& seed, double& score, double& clear) {
+RecoveryRun recoveryExample(const ch::Options& o, double factor, std::uint64_t& seed, double& score) {
   const ch::FigureSize fs = ch::figureSize("fig_recovery_frames");
   RecoveryRun best;
-  score = -1, clear = -1e300;
+  score = -1;
   int tried = 0;  // candidates whose labels were laid out (the costly part)
   const std::uint64_t first = o.seed(1);
-  for (std::uint64_t s = first; s < first + 3000 && tried < 1 && !(score >= 3 && clear >= 2); ++s) {
+  for (std::uint64_t s = first; s < first + 3000 && tried < 1; ++s) {
     std::mt19937_64 rng(s);
     std::uniform_real_distribution<double> ux(0, 10), uy(0, 4);
     XY q;
@@ -510,9 +510,8 @@ RecoveryRun recoveryExample(const ch::Options& o, double factor, std::uint64_t& 
     if (!r.naiveFails || r.flips.size() != 4) continue;
     const double sc = std::min(3.0, recoveryScore(r, fs, factor));
     if (sc < score) continue;
-    double cl = -1e300;
-    if (sc >= 3) cl = recoveryFrames(o, r, factor, false), ++tried;
-    if (sc > score || cl > clear) best = std::move(r), score = sc, clear = cl, seed = s;
+    if (sc >= 3) ++tried;
+    if (sc > score) best = std::move(r), score = sc, seed = s;
   }
   if (best.p.empty()) throw std::logic_error("recovery figure: no configuration found");
   return best;
@@ -521,9 +520,9 @@ RecoveryRun recoveryExample(const ch::Options& o, double factor, std::uint64_t& 
 void figureRecovery(const ch::Options& o) {
   const double factor = 1.25;
   std::uint64_t seed = 0;
-  double score = 0, clear = 0;
-  const RecoveryRun ex = recoveryExample(o, factor, seed, score, clear);
-  recoveryFrames(o, ex, factor, true);
+  double score = 0;
+  const RecoveryRun ex = recoveryExample(o, factor, seed, score);
+  const double clear = recoveryFrames(o, ex, factor, true);
   dt::Triangulation Rlog;
   superDT(Rlog, ex.p, factor);
   const dt::FlipStats st = dt::recoverDelaunay(Rlog, dt::RecoveryRule::Full);
