@@ -377,9 +377,6 @@ double LabelPlacer::clearance(const PxBox& b, bool skipLast) const {
     const PxBox& o = boxes_[i];
     const double dx = std::max({o.x0 - b.x1, b.x0 - o.x1, 0.0}), dy = std::max({o.y0 - b.y1, b.y0 - o.y1, 0.0});
     c = std::min(c, (dx == 0 && dy == 0) ? -1e3 : std::hypot(dx, dy));  // never on a label
-    // Two labels on one line (their heights overlapping by half): runGap_ more room sideways.
-    const double overlap = std::min(o.y1, b.y1) - std::max(o.y0, b.y0);
-    if (runGap_ > 0 && overlap > 0.5 * std::min(o.y1 - o.y0, b.y1 - b.y0)) c = std::min(c, dx - runGap_);
   }
   return c;
 }

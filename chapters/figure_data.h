@@ -171,9 +171,6 @@ class LabelPlacer {
   void marker(double x, double y, double radiusPx) { discs_.push_back({p_.px(x), p_.py(y), radiusPx}); }
   /// A box already taken (a title, a legend), in px.
   void box(const PxBox& b) { boxes_.push_back(b); }
-  /// Keep labels on one line `px` farther apart sideways than other obstacles, so that two
-  /// labels never read as one run of text ("p8 p2"); 0 (the default) treats them like the rest.
-  void textRunGap(double px) { runGap_ = px; }
 
   /// The place (data units, the centre of the text) for the label `text` of the point (x, y):
   /// the candidate nearest the point, among 32 directions on rings of growing distance, whose
@@ -216,7 +213,6 @@ class LabelPlacer {
   std::vector<std::array<double, 3>> discs_;
   std::vector<PxBox> boxes_;
   bool farther_ = false;  // placeAttached is looking beyond its maxEm
-  double runGap_ = 0;     // see textRunGap
 };
 
 }  // namespace ch

@@ -310,11 +310,7 @@ GFigure figure25Panel(const fs::path& dir, int panel) {
   f.name = fmt("fig2_5 panel (%c)", 'a' + panel);
   const ch::FigureSize fs = ch::figureSize("fig2_5");
   readView(viewLine(dir / "fig2_5_view.gp", fmt("P%d", panel + 1)), fs.W, f);
-  double font = 0;  // the labels' size in the figure's em (fig2_5_view.gp: LABEL_FONT)
-  std::istringstream view(slurp(dir / "fig2_5_view.gp"));
-  for (std::string line; std::getline(view, line);) std::sscanf(line.c_str(), "LABEL_FONT = %lf", &font);
-  REQUIRE(font > 0);
-  f.em = font * fs.em, f.figureEm = fs.em, f.marker = ch::pointRadius(fs, 1.3);
+  f.em = 0.85 * fs.em, f.figureEm = fs.em, f.marker = ch::pointRadius(fs, 1.3);
   readPoints(dir / "fig2_5_points.dat", f);
   readPoints(dir / "fig2_5_super.dat", f);
   readLabels(dir / fmt("fig2_5_labels_%d.dat", k), f);
@@ -334,11 +330,7 @@ GFigure animationFrame(const fs::path& dir, int n) {
   std::istringstream view(slurp(dir / "fig2_5_view.gp"));
   for (std::string line; std::getline(view, line);) std::sscanf(line.c_str(), "ANIM_FONT = %lf; ANIM_PS = %lf", &font, &ps);
   REQUIRE(font > 0);
-  double label = 0;
-  std::istringstream view2(slurp(dir / "fig2_5_view.gp"));
-  for (std::string line; std::getline(view2, line);) std::sscanf(line.c_str(), "LABEL_FONT = %lf", &label);
-  REQUIRE(label > 0);
-  f.em = font * fs.em, f.figureEm = f.em / label, f.marker = ch::pointRadius(fs, ps);
+  f.em = font * fs.em, f.figureEm = f.em / 0.85, f.marker = ch::pointRadius(fs, ps);
   f.maxEm = 2.5;  // crowded vertices, and circles through the points of the cavity frames
   readPoints(dir / "fig2_5_points.dat", f);
   readPoints(dir / "fig2_5_super.dat", f);
@@ -406,19 +398,16 @@ TEST_CASE("figures geometry the attachment check names a label on the other side
 }
 
 TEST_CASE("figures geometry the attachment check names Figure 2.5's swapped labels") {
-  // The defect Figure 2.5 once had: p_1's and p_8's labels swapped (each beside the other's point).
+  // Figure 2.5 as it was: p_8's label 0.13 from p_1 and 0.34 from p_8, p_1's by p_6.
   GFigure f = figure25Panel(bwRun(), 1);
   REQUIRE(attachmentErrors(f).empty());
-  GPoint *l1 = nullptr, *l8 = nullptr;
   for (GPoint& l : f.labels) {
-    if (l.name.find("𝑝_{8}") != std::string::npos) l8 = &l;
-    if (l.name.find("𝑝_{1}") != std::string::npos) l1 = &l;
+    if (l.name.find("_{8}") != std::string::npos) l.x = 0.09458836555, l.y = 0.330408823;
+    if (l.name.find("_{1}") != std::string::npos && l.name.find("−") == std::string::npos) l.x = -0.05885173903, l.y = 0.443263271;
   }
-  REQUIRE((l1 && l8));
-  std::swap(l1->x, l8->x), std::swap(l1->y, l8->y);
   const std::string e = joined(attachmentErrors(f));
   CHECK(e.find("label {/'DejaVu Math TeX Gyre' 𝑝_{8}} is nearer to {/'DejaVu Math TeX Gyre' 𝑝_{1}}") != std::string::npos);
-  CHECK(e.find("label {/'DejaVu Math TeX Gyre' 𝑝_{1}} is nearer to {/'DejaVu Math TeX Gyre' 𝑝_{8}}") != std::string::npos);
+  CHECK(e.find("label {/'DejaVu Math TeX Gyre' 𝑝_{1}} is nearer to {/'DejaVu Math TeX Gyre' 𝑝_{6}}") != std::string::npos);
 }
 
 TEST_CASE("figures geometry the focus check names a point near an edge or a label and a sliver") {
@@ -455,24 +444,13 @@ TEST_CASE("figures geometry the frame check names a cut circle and a label on a 
 // ---- the figures -----------------------------------------------------------------------------
 
 TEST_CASE("figures geometry every label of Figure 2.5 is attached to its own point in every panel") {
-  // Panel (f), DT_9, is the crowded one: a label there that touches an edge is printed, not
-  // failed (three today, p_4, p_8 and p_9: their small triangles leave no clear place within 2.5 em; not solved
-  // yet); more is a regression. Every other panel: no label touches anything.
-  int touches = 0;
   for (int panel = 0; panel < 6; ++panel) {
     const GFigure f = figure25Panel(bwRun(), panel);
     CHECK(f.labels.size() == f.points.size());
     CHECK(joined(attachmentErrors(f)) == "");
     if (beyondRule(f) > 0) MESSAGE(f.name << ": " << beyondRule(f) << " label(s) beyond 1.5 em (crowded)");
-    for (const std::string& e : frameErrors(f))
-      if (panel == 5 && e.find(" touches an edge") != std::string::npos) {
-        MESSAGE(e);
-        ++touches;
-      } else {
-        FAIL_CHECK(e);
-      }
+    CHECK(joined(frameErrors(f)) == "");
   }
-  CHECK(touches <= 3);
 }
 
 TEST_CASE("figures geometry panel (b) of Figure 2.5 labels p_1 the point the code inserts first") {
@@ -500,10 +478,9 @@ TEST_CASE("figures geometry panel (b) of Figure 2.5 labels p_1 the point the cod
 
 TEST_CASE("figures geometry every frame of the animation keeps its circles in view and its labels attached") {
   // Every frame: circles and labels inside the view, labels attached. Frame 00 and the ball
-  // frames (no circles) up to DT_7: no label touches an edge. The touches of the cavity frames
-  // (dashed circles pass near the new point and through the super-vertices) and of the last
-  // two ball frames (DT_8, DT_9: as crowded as panel (f)) are printed, not failed (not solved
-  // yet); more than today's count is a regression.
+  // frames (no circles): no label touches an edge. The cavity frames' touches are printed, not
+  // failed: near the new point up to five dashed circles pass, and two frames (p_3's label
+  // when p_8 goes in, p_9's when p_9 does) have no clear place within 2.5 em (not solved yet).
   const int n = animationFrames(bwRun());
   REQUIRE(n == 19);
   int circles = 0, touches = 0;
@@ -513,7 +490,7 @@ TEST_CASE("figures geometry every frame of the animation keeps its circles in vi
     CHECK(joined(attachmentErrors(f)) == "");
     if (beyondRule(f) > 0) MESSAGE(f.name << ": " << beyondRule(f) << " label(s) beyond 1.5 em (crowded)");
     for (const std::string& e : frameErrors(f))
-      if ((k % 2 == 1 || k >= 16) && e.find(" touches ") != std::string::npos) {
+      if (k % 2 == 1 && e.find(" touches ") != std::string::npos) {
         MESSAGE(e);
         ++touches;
       } else {
@@ -521,7 +498,7 @@ TEST_CASE("figures geometry every frame of the animation keeps its circles in vi
       }
   }
   CHECK(circles == 9);  // each cavity frame draws its circles
-  CHECK(touches <= 11);  // today's count; more is a regression
+  CHECK(touches <= 3);  // the two frames above; more is a regression
 }
 
 TEST_CASE("figures geometry the animation's circles are dashed in their data") {
@@ -683,113 +660,53 @@ TEST_CASE("figures geometry Figure 2.4 labels p_{n+1} sigma_i sigma_{i+1} and p_
   if (beyondRule(f) > 0) MESSAGE(f.name << ": " << beyondRule(f) << " label(s) beyond 1.5 em (crowded)");
 }
 
-// ---- Figure 2.5 round 5: runs of labels, the super-vertices' labels, room for each insertion ----
-
 namespace {
 
-/// Two labels that read as one run of text ("p8 p2"): boxes on about the same line (their
-/// heights overlap by half) with less than 0.6 em between them.
-std::vector<std::string> runErrors(const GFigure& f) {
-  std::vector<std::string> out;
-  for (std::size_t i = 0; i < f.labels.size(); ++i)
-    for (std::size_t j = i + 1; j < f.labels.size(); ++j) {
-      const auto a = labelBox(f, f.labels[i]), b = labelBox(f, f.labels[j]);
-      const double overlap = std::min(a[3], b[3]) - std::max(a[2], b[2]), h = std::min(a[3] - a[2], b[3] - b[2]);
-      const double gap = std::max(a[0], b[0]) - std::min(a[1], b[1]);
-      if (overlap > 0.5 * h && gap < 0.6 * f.em / f.scale)
-        out.push_back(f.name + ": labels " + f.labels[i].name + " and " + f.labels[j].name + " read as one run of text");
-    }
-  return out;
-}
-
-bool isSuper(const std::string& name) { return name.find("−") != std::string::npos; }
-
-/// The super-vertices' labels across `figs`: each at one place in all of them (1e-9 units),
-/// outside the square at its own corner (its box beyond one of the square's two sides there).
-std::vector<std::string> superLabelErrors(const std::vector<GFigure>& figs) {
-  std::vector<std::string> out;
-  std::map<std::string, GPoint> first;
-  for (const GFigure& f : figs) {
-    double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
-    for (const GPoint& p : f.points)
-      if (isSuper(p.name)) x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
-    for (const GPoint& l : f.labels) {
-      if (!isSuper(l.name)) continue;
-      if (!first.count(l.name)) first[l.name] = l;
-      if (dist(l.x, l.y, first[l.name].x, first[l.name].y) > 1e-9)
-        out.push_back(f.name + ": label " + l.name + " is not where the first panel has it");
-      for (const GPoint& p : f.points)
-        if (p.name == l.name) {
-          const auto b = labelBox(f, l);
-          const bool outside = (p.x <= x0 ? b[1] < x0 : b[0] > x1) || (p.y <= y0 ? b[3] < y0 : b[2] > y1);
-          if (!outside) out.push_back(f.name + ": label " + l.name + " is not outside the square");
-        }
+/// The triangles of a gnuplot file of closed triangles (blocks of four rows), as x0 y0 x1 y1 x2 y2.
+std::vector<std::array<double, 6>> readTriangles(const fs::path& p) {
+  std::vector<std::array<double, 6>> out;
+  std::vector<double> cur;
+  std::istringstream in(slurp(p));
+  for (std::string line; std::getline(in, line);) {
+    double x, y;
+    if (std::sscanf(line.c_str(), "%lf %lf", &x, &y) == 2) cur.push_back(x), cur.push_back(y);
+    if (line.empty() || in.peek() == EOF) {
+      if (cur.size() >= 6) out.push_back({cur[0], cur[1], cur[2], cur[3], cur[4], cur[5]});
+      cur.clear();
     }
   }
   return out;
 }
 
-/// Each cavity frame's new point (fig2_5_anim_NN_p.dat) as the focus of the frame, which draws
-/// DT_{k-1}, the triangulation it enters; the other labels are not its concern here.
-GFigure insertionFrame(const fs::path& dir, int n) {
-  GFigure f = animationFrame(dir, n);
-  std::istringstream in(slurp(dir / fmt("fig2_5_anim_%02d_p.dat", n)));
-  double x = 0, y = 0;
-  std::string name;
-  REQUIRE(static_cast<bool>(in >> x >> y >> name));
-  f.focus = {{x, y, name}};
-  f.labels.clear();
-  return f;
+bool insideTriangle(const std::array<double, 6>& t, double x, double y) {
+  auto side = [&](int a, int b) {
+    return (t[2 * b] - t[2 * a]) * (y - t[2 * a + 1]) - (t[2 * b + 1] - t[2 * a + 1]) * (x - t[2 * a]);
+  };
+  const double s0 = side(0, 1), s1 = side(1, 2), s2 = side(2, 0);
+  return (s0 > 0 && s1 > 0 && s2 > 0) || (s0 < 0 && s1 < 0 && s2 < 0);
 }
 
 }  // namespace
 
-TEST_CASE("figures geometry the run check names two labels set side by side") {
-  GFigure f = plantedBase();
-  CHECK(joined(runErrors(f)) == "");
-  f.labels[1] = {-0.1 + (0.5 * ch::textWidthEm("a") + 0.5 * ch::textWidthEm("b") + 0.3) * 0.2, -0.1, "b"};  // 0.3 em right of a's
-  CHECK(joined(runErrors(f)).find("labels a and b read as one run of text") != std::string::npos);
-}
-
-TEST_CASE("figures geometry Figure 2.5 sets no two labels as one run of text in any panel or frame") {
-  const fs::path dir = bwRun();
-  for (int panel = 0; panel < 6; ++panel) CHECK(joined(runErrors(figure25Panel(dir, panel))) == "");
-  for (int k = 0; k < animationFrames(dir); ++k) CHECK(joined(runErrors(animationFrame(dir, k))) == "");
-}
-
-TEST_CASE("figures geometry Figure 2.5 sets each super-vertex label at one place outside its corner in every panel and frame") {
-  const fs::path dir = bwRun();
-  std::vector<GFigure> figs;
-  for (int panel = 0; panel < 6; ++panel) figs.push_back(figure25Panel(dir, panel));
-  for (int k = 0; k < animationFrames(dir); ++k) figs.push_back(animationFrame(dir, k));
-  CHECK(joined(superLabelErrors(figs)) == "");
-  // Planted: one frame's p_{-3} label moved by half an em; one panel's p_{-1} label inside the square.
-  std::vector<GFigure> moved = figs;
-  for (GPoint& l : moved[9].labels)
-    if (l.name.find("−3") != std::string::npos) l.y += 0.5 * moved[9].em / moved[9].scale;
-  CHECK(joined(superLabelErrors(moved)).find(moved[9].name + ": label") != std::string::npos);
-  std::vector<GFigure> inside = figs;
-  for (GFigure& f : inside)
-    for (GPoint& l : f.labels)
-      if (l.name.find("−1") != std::string::npos)
-        for (const GPoint& p : f.points)
-          if (p.name == l.name) l.x = p.x + 2 * f.em / f.scale, l.y = p.y + 2 * f.em / f.scale;
-  CHECK(joined(superLabelErrors(inside)).find("is not outside the square") != std::string::npos);
-}
-
-TEST_CASE("figures geometry Figure 2.5 inserts every point at least three marker radii from the triangulation it enters") {
-  const fs::path dir = bwRun();
-  for (int k = 1; k < animationFrames(dir); k += 2) CHECK(joined(focusErrors(insertionFrame(dir, k))) == "");
-  // Panel (a): every point clear of DT_0's diagonal (and the square's sides).
-  GFigure a = figure25Panel(dir, 0);
-  for (const GPoint& p : a.points)
-    if (!isSuper(p.name)) a.focus.push_back(p);
-  a.labels.clear();
-  CHECK(joined(focusErrors(a)) == "");
-  // Planted: the new point of frame 05 moved to one marker radius from an edge it enters.
-  GFigure f = insertionFrame(dir, 5);
-  const ch::Seg e = f.edges[0];
-  const double len = std::hypot(e.x1 - e.x0, e.y1 - e.y0), r = f.marker / f.scale;
-  f.focus[0].x = 0.5 * (e.x0 + e.x1) - (e.y1 - e.y0) / len * r, f.focus[0].y = 0.5 * (e.y0 + e.y1) + (e.x1 - e.x0) / len * r;
-  CHECK(joined(focusErrors(f)).find("from an edge") != std::string::npos);
+TEST_CASE("figures geometry Figure 2.10 draws no sliver and starts every link arrow in a triangle it shows") {
+  const fs::path dir = programRun("sec2_3_4_algorithms", "fig2_10");
+  const auto cavity = readTriangles(dir / "fig2_10_cavity.dat"), ball = readTriangles(dir / "fig2_10_ball.dat"),
+             outer = readTriangles(dir / "fig2_10_outer.dat");
+  REQUIRE(cavity.size() >= 4);
+  REQUIRE(ball.size() == cavity.size() + 2);
+  REQUIRE(outer.size() >= 3);
+  for (const auto* set : {&cavity, &ball, &outer})
+    for (const auto& t : *set) CHECK_MESSAGE(minAngleDeg(t) >= 12, "a triangle drawn to be seen has an angle of " << minAngleDeg(t) << " degrees");
+  // Each link arrow (x y dx dy) starts inside a triangle of the ball or a neighbour.
+  int arrows = 0;
+  for (const char* file : {"fig2_10_links_new.dat", "fig2_10_links_outer.dat"}) {
+    std::istringstream in(slurp(dir / file));
+    for (double x, y, dx, dy; in >> x >> y >> dx >> dy; ++arrows) {
+      bool shown = false;
+      for (const auto* set : {&ball, &outer})
+        for (const auto& t : *set) shown = shown || insideTriangle(t, x, y);
+      CHECK_MESSAGE(shown, file << ": an arrow starts at " << x << ", " << y << ", in no triangle drawn");
+    }
+  }
+  CHECK(arrows >= 2 * int(ball.size()));
 }

@@ -1108,3 +1108,61 @@ TEST_CASE("figures rules every timing chart shows medians and its caption cites 
     if (values.count(key)) CHECK_MESSAGE(std::atoi(values[key].c_str()) >= 1, key << " = " << values[key]);
   }
 }
+
+TEST_CASE("figures rules Table 2.1's chart has the notes' four values and the sqrt n line over their sizes") {
+  // The notes' Table 2.1 (N_search at n = 10^3..10^6), whatever sizes the run measured.
+  const std::vector<std::string> notes = dataLines(slurp(figureDir() / "table2_1_notes.dat"));
+  REQUIRE(notes.size() == 4);
+  const double want[4][2] = {{1e3, 19.8}, {1e4, 56.8}, {1e5, 161}, {1e6, 503}};
+  for (int i = 0; i < 4; ++i) {
+    double n = 0, v = 0;
+    REQUIRE(std::sscanf(notes[std::size_t(i)].c_str(), "%lf %lf", &n, &v) == 2);
+    CHECK(n == want[i][0]);
+    CHECK(v == doctest::Approx(want[i][1]));
+  }
+  // The reference line: a segment from 10^3 to 10^6 (drawn with one measured n too), rising as sqrt(n).
+  const std::vector<std::string> line = dataLines(slurp(figureDir() / "table2_1_sqrt.dat"));
+  REQUIRE(line.size() == 2);
+  double n0 = 0, v0 = 0, n1 = 0, v1 = 0;
+  REQUIRE(std::sscanf(line[0].c_str(), "%lf %lf", &n0, &v0) == 2);
+  REQUIRE(std::sscanf(line[1].c_str(), "%lf %lf", &n1, &v1) == 2);
+  CHECK(n0 == 1e3);
+  CHECK(n1 == 1e6);
+  CHECK(v1 / v0 == doctest::Approx(std::sqrt(1e3)));
+}
+
+namespace {
+
+/// What fig_brio_compare's panels (a)-(c) break: an input (a colour) whose markers are not of
+/// two shapes (Hilbert hollow, BRIO filled: the orders told apart without lines), and two
+/// markers of a panel whose centres are within a marker radius (one hides the other).
+std::vector<std::string> orderCueBreaches(const SvgDrawing& d) {
+  std::vector<std::string> out;
+  for (int panel = 1; panel <= 3; ++panel) {
+    std::map<std::string, std::set<std::string>> shapes;  // colour -> marker shapes
+    std::vector<const SvgMarker*> ms;
+    for (const SvgMarker& m : d.markers)
+      if (m.panel == panel && m.plot > 0) shapes[m.colour].insert(m.shape), ms.push_back(&m);
+    for (const auto& [colour, s] : shapes)
+      if (s.size() != 2) out.push_back("panel " + std::to_string(panel) + ": colour " + colour + " has " + std::to_string(s.size()) + " marker shape(s), not 2");
+    for (std::size_t i = 0; i < ms.size(); ++i)
+      for (std::size_t j = i + 1; j < ms.size(); ++j)
+        if (std::hypot(ms[i]->x - ms[j]->x, ms[i]->y - ms[j]->y) < std::max(ms[i]->r, 1.0))
+          out.push_back("panel " + std::to_string(panel) + ": two markers at (" + std::to_string(int(ms[i]->x)) + ", " + std::to_string(int(ms[i]->y)) + ")");
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("figures rules fig_brio_compare tells Hilbert from BRIO by marker fill and hides no marker") {
+  // The check fails on a planted figure: one colour with one shape, two markers on one spot.
+  SvgDrawing planted;
+  planted.markers = {{"#gpPt6", "#1f77b4", 1, 100, 100, 4, 1}, {"#gpPt6", "#1f77b4", 1, 100, 101, 4, 2}};
+  CHECK(orderCueBreaches(planted).size() == 2);
+  planted.markers[1] = {"#gpPt7", "#1f77b4", 1, 120, 100, 4, 2};
+  CHECK(orderCueBreaches(planted).empty());
+  const auto it = runSvgs().find("fig_brio_compare");
+  REQUIRE(it != runSvgs().end());
+  for (const std::string& b : orderCueBreaches(it->second)) FAIL_CHECK("fig_brio_compare.svg: " << b);
+}

@@ -10,7 +10,6 @@
 //
 //   sec2_2_bowyer_watson [--out DIR] [--quick] [--max-n N] [--no-plot]
 #include <algorithm>
-#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -74,140 +73,10 @@ CircleXY circumcircle(const XY& xy, int a, int b, int c) {
 
 // ---- Figure 2.5 and its animation -----------------------------------------------------------
 
+// The 9 points of Figure 2.5 in insertion order (tests/test_2_2_bowyer_watson.cpp uses them too).
+const XY kFig25 = {0.22, 0.31, 0.74, 0.27, 0.51, 0.62, 0.29, 0.83, 0.88, 0.71,
+                   0.07, 0.52, 0.61, 0.09, 0.43, 0.38, 0.69, 0.94};
 const double kFig25Factor = 1.5;  // super-square 1.5 times the box: small enough to see
-const double kFig25Label = 0.92;  // Figure 2.5's labels, in its em (were 0.85: too small to read)
-
-// Figure 2.5's margin around the super-square (data units): room for the super-vertices'
-// labels, which sit outside the square at their corners.
-double fig25Margin(double side) { return 0.17 * side; }
-
-// The super-square's box (its four corners come first in a BowyerWatsonResult's xy).
-std::array<double, 4> squareBox(const XY& xy) {
-  std::array<double, 4> b = {1e300, -1e300, 1e300, -1e300};
-  for (int s = 0; s < 4; ++s)
-    b = {std::min(b[0], xy[2 * s]), std::max(b[1], xy[2 * s]), std::min(b[2], xy[2 * s + 1]), std::max(b[3], xy[2 * s + 1])};
-  return b;
-}
-
-double pointSegDist(double px, double py, double ax, double ay, double bx, double by) {
-  const double dx = bx - ax, dy = by - ay, l2 = dx * dx + dy * dy;
-  const double t = l2 > 0 ? std::clamp(((px - ax) * dx + (py - ay) * dy) / l2, 0.0, 1.0) : 0.0;
-  return std::hypot(px - ax - t * dx, py - ay - t * dy);
-}
-
-// What an example of Figure 2.5 must show, as numbers (in marker radii and ems of the panels):
-// every point p_k at least 3 marker radii from every edge of DT_{k-1}, the triangulation it
-// enters (DT_0's diagonal among them: every point, since panel (a) shows them all with it);
-// every two points at least 2 em apart (room for both labels beside them); and, among the
-// examples that keep these, the smallest view that holds every circle of the animation (the
-// square as large in its frames as it can be).
-struct Fig25Score {
-  double clear = 0;      // least distance of a point to an edge it must not touch, marker radii
-  double apart = 0;      // least distance between two points, em
-  double extent = 1e300; // the animation's view (square and circles) / the square's side
-  bool ok() const { return clear >= 3 && apart >= 2.0; }
-};
-
-Fig25Score scoreFig25(const XY& q, const ch::FigureSize& fs) {
-  const dt::BowyerWatsonResult bw = dt::bowyerWatson(q, kFig25Factor);
-  const XY& xy = bw.xy;
-  const auto sq = squareBox(xy);
-  const double side = sq[1] - sq[0], m = fig25Margin(side);
-  const double scale = ch::cellPanel(fs, 2, 3, 0, sq[0] - m, sq[1] + m, sq[2] - m, sq[3] + m).scale();
-  const double r = ch::pointRadius(fs, 1.3) / scale, em = fs.em / scale;
-  Fig25Score sc;
-  sc.clear = 1e300, sc.apart = 1e300;
-  const std::size_t n = xy.size() / 2;
-  for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t j = i + 1; j < n; ++j) sc.apart = std::min(sc.apart, std::hypot(xy[2 * i] - xy[2 * j], xy[2 * i + 1] - xy[2 * j + 1]) / em);
-  for (std::size_t i = 4; i < n; ++i)  // DT_0's diagonal p_{-1} p_{-2}
-    sc.clear = std::min(sc.clear, pointSegDist(xy[2 * i], xy[2 * i + 1], xy[0], xy[1], xy[2], xy[3]) / r);
-  std::vector<dt::Tri> tri = {{0, 1, 2}, {1, 0, 3}};
-  double x0 = sq[0] - m, x1 = sq[1] + m, y0 = sq[2] - m, y1 = sq[3] + m;
-  for (std::size_t ip = 4; ip < n; ++ip) {
-    for (const dt::Tri& t : tri)
-      for (int c = 0; c < 3; ++c) {
-        const int a = t[c], b = t[(c + 1) % 3];
-        sc.clear = std::min(sc.clear, pointSegDist(xy[2 * ip], xy[2 * ip + 1], xy[2 * a], xy[2 * a + 1], xy[2 * b], xy[2 * b + 1]) / r);
-      }
-    const std::vector<dt::Tri> before = tri;
-    const dt::KernelStep s = dt::delaunayKernelStep(xy, tri, int(ip));
-    const std::set<dt::Tri> kept(tri.begin(), tri.end() - long(s.ball));
-    for (const dt::Tri& t : before)
-      if (!kept.count(t)) {
-        const CircleXY c = circumcircle(xy, t[0], t[1], t[2]);
-        x0 = std::min(x0, c.x - c.r), x1 = std::max(x1, c.x + c.r), y0 = std::min(y0, c.y - c.r), y1 = std::max(y1, c.y + c.r);
-      }
-  }
-  sc.extent = std::max(x1 - x0, y1 - y0) / side;
-  return sc;
-}
-
-// One candidate for Figure 2.5, built point by point from a random stream (coordinates rounded
-// to 0.01): the next point is the first of the stream 0.25 from the points taken, and 3.3 marker
-// radii from DT_0's diagonal and from every edge of the triangulation it enters, the square
-// taken as the unit box's (the score then measures the real one). Fewer than 9 if the stream
-// runs out.
-XY fig25Candidate(const XY& stream, const ch::FigureSize& fs) {
-  const dt::BowyerWatsonResult box = dt::bowyerWatson(XY{0, 0, 1, 1}, kFig25Factor);
-  XY xy(box.xy.begin(), box.xy.begin() + 8);
-  const auto sq = squareBox(xy);
-  const double side = sq[1] - sq[0], m = fig25Margin(side);
-  const double scale = ch::cellPanel(fs, 2, 3, 0, sq[0] - m, sq[1] + m, sq[2] - m, sq[3] + m).scale();
-  const double need = 3.3 * ch::pointRadius(fs, 1.3) / scale;
-  std::vector<dt::Tri> tri = {{0, 1, 2}, {1, 0, 3}};
-  XY q;
-  for (std::size_t i = 0; i < stream.size() / 2 && q.size() < 18; ++i) {
-    const double x = std::round(100 * stream[2 * i]) / 100, y = std::round(100 * stream[2 * i + 1]) / 100;
-    bool fits = pointSegDist(x, y, xy[0], xy[1], xy[2], xy[3]) >= need;
-    for (std::size_t j = 0; fits && j < q.size(); j += 2) fits = std::hypot(x - q[j], y - q[j + 1]) >= 0.25;
-    for (std::size_t t = 0; fits && t < tri.size(); ++t)
-      for (int c = 0; c < 3; ++c) {
-        const int a = tri[t][c], b = tri[t][(c + 1) % 3];
-        fits = fits && pointSegDist(x, y, xy[2 * a], xy[2 * a + 1], xy[2 * b], xy[2 * b + 1]) >= need;
-      }
-    if (!fits) continue;
-    q.push_back(x), q.push_back(y), xy.push_back(x), xy.push_back(y);
-    dt::delaunayKernelStep(xy, tri, int(xy.size() / 2 - 1));
-  }
-  return q;
-}
-
-// Figure 2.5's 9 points, in insertion order: the best-scoring of 400 random sets (fixed seeds,
-// coordinates rounded to 0.01), found by figure25Example. Written out here because the live
-// Figure 2.5 (web/CMakeLists.txt) and tests/test_2_2_bowyer_watson.cpp read it; the program
-// checks that the search still chooses it.
-const XY kFig25 = {0.05, 0.69, 0.48, 0.05, 0.99, 0.60, 0.60, 0.39, 0.34, 1.00,
-                   0.68, 0.96, 0.07, 0.32, 0.85, 0.35, 0.82, 0.07};
-
-// The search: 400 random 9-point sets (the book's seeds, or the teacher's --seed), each scored
-// by scoreFig25; the choice and its score said on stdout.
-XY figure25Example(const ch::Options& o) {
-  const ch::FigureSize fs = ch::figureSize("fig2_5");
-  XY best;
-  Fig25Score bs;
-  int chosen = -1, good = 0;
-  for (int seed = 1; seed <= 400; ++seed) {
-    const XY q = fig25Candidate(dt::uniformPoints(300, o.seed(2500 + seed)), fs);
-    if (q.size() < 18) continue;
-    const Fig25Score sc = scoreFig25(q, fs);
-    good += sc.ok();
-    const bool better = chosen < 0 || (sc.ok() && !bs.ok()) ||
-                        (sc.ok() == bs.ok() && (sc.ok() ? sc.extent < bs.extent : sc.clear > bs.clear));
-    if (better) best = q, bs = sc, chosen = seed;
-  }
-  std::cout << "Figure 2.5: " << good << " of 400 random 9-point sets keep every point 3 marker radii from the edges it enters "
-            << "and 2 em from the others; showing seed " << 2500 + chosen
-            << ch::fmt(" (least clearance %.1f marker radii, points %.1f em apart, animation view %.2f times the square)", bs.clear,
-                       bs.apart, bs.extent)
-            << (bs.ok() ? "" : ": no set keeps the rules, the clearest is shown") << "\n";
-  if (!o.seedOption && best != kFig25) {
-    std::string xy;
-    for (const double v : best) xy += ch::fmt("%s%.2f", xy.empty() ? "" : ", ", v);
-    throw std::logic_error("Figure 2.5: the search chooses {" + xy + "}, not kFig25: update kFig25");
-  }
-  return best;
-}
 
 // What Figure 2.5's panels and the animation's frames share: the insertions
 // (figure25Steps) and the layout (figure25Panels).
@@ -225,7 +94,6 @@ struct Fig25 {
   double animFont = 0, animPs = 0;
   std::vector<std::vector<double>> staticAngle;     // each label's direction in each panel, by k
   std::map<int, std::vector<std::pair<double, double>>> staticAt;  // each panel's labels, by k
-  std::vector<std::pair<double, double>> superAt;  // the super-vertices' labels: one place for all
   std::string name(std::size_t i) const { return ch::mathText(pname(all.ids[i])); }
   // A label row: x y name lx ly super.
   std::string row(std::size_t i, double lx, double ly) const {
@@ -239,7 +107,7 @@ struct Fig25 {
 // table_fig2_5.
 void figure25Steps(const ch::Options& o, Fig25& F) {
   // DT_0 and the points, numbered as Algorithm 1 does (super-vertices first).
-  F.all = dt::bowyerWatson(figure25Example(o), kFig25Factor);
+  F.all = dt::bowyerWatson(kFig25, kFig25Factor);
   const dt::BowyerWatsonResult& all = F.all;
   XY& xy = F.xy;
   xy = all.xy;
@@ -310,59 +178,11 @@ void figure25Steps(const ch::Options& o, Fig25& F) {
   tab.emit(o, "table_fig2_5");
 }
 
-// The clearance in data units between a box (x0 x1 y0 y1) and a circle: 0 if it crosses it.
-double boxCircleClearance(const std::array<double, 4>& b, const CircleXY& c) {
-  double lo = 1e300, hi = -1e300;
-  for (int k = 0; k <= 16; ++k) {
-    const double t = k / 16.0;
-    for (const auto& [x, y] : {std::pair{b[0] + t * (b[1] - b[0]), b[2]}, std::pair{b[0] + t * (b[1] - b[0]), b[3]},
-                               std::pair{b[0], b[2] + t * (b[3] - b[2])}, std::pair{b[1], b[2] + t * (b[3] - b[2])}}) {
-      const double d = std::hypot(x - c.x, y - c.y) - c.r;
-      lo = std::min(lo, d), hi = std::max(hi, d);
-    }
-  }
-  return lo < 0 && hi > 0 ? 0 : std::min(std::fabs(lo), std::fabs(hi));
-}
-
-// The super-vertex s's label (s = 0..3), at one place in every panel and frame: outside the
-// square at its corner, in the direction (of 10 in the outward quarter) whose box, just clear
-// of the marker, stays farthest from every circle of the animation (the first cavity's circle
-// passes through all four corners), the nearer on a tie (data units; every panel and frame
-// sets labels and markers at the same size in data units).
-std::pair<double, double> superLabelAt(const Fig25& F, std::size_t s, const ch::Panel& p) {
-  const double cx = F.xy[2 * s], cy = F.xy[2 * s + 1], em = kFig25Label * F.fs.em, u = 1 / p.scale();
-  const double sx = cx < 0.5 * (F.x0 + F.x1) ? -1 : 1, sy = cy < 0.5 * (F.y0 + F.y1) ? -1 : 1;
-  const double hw = 0.5 * ch::textWidthEm(F.name(s)) * em, r = ch::pointRadius(F.fs, 1.3) + 3;
-  std::pair<double, double> best;
-  double bestScore = -1e300;
-  for (int k = 0; k <= 9; ++k) {
-    const double a = M_PI / 2 * k / 9, dx = sx * std::cos(a), dy = sy * std::sin(a);
-    double t = 0;  // px: the box (anchor 0.85 em above its bottom, 0.47 em below its top) clear of the marker
-    while (std::fabs(t * dx) < r + hw && (t * dy > r + 0.85 * em || -t * dy > r + 0.47 * em) == false) t += 1;
-    if (k > 0 && t > 1.45 * F.fs.em) continue;  // attached: within 1.5 em (beside it always is)
-    const std::array<double, 4> b = {cx + (t * dx - hw) * u, cx + (t * dx + hw) * u, cy + (t * dy - 0.85 * em) * u,
-                                     cy + (t * dy + 0.47 * em) * u};
-    double c = 1e300;
-    for (const auto& cs : F.frameCircles)
-      for (const CircleXY& ci : cs) c = std::min(c, boxCircleClearance(b, ci) / u);
-    const double score = std::min(c, 8.0) - 0.05 * t;
-    if (score > bestScore) bestScore = score, best = {cx + t * dx * u, cy + t * dy * u};
-  }
-  return best;
-}
-
-// A label's box in px as the placer sees it (anchor 0.47 em below its top, 0.85 em above its
-// bottom with a subscript).
-ch::PxBox labelPxBox(const ch::Panel& p, double emPx, const std::string& text, double lx, double ly) {
-  const double hw = 0.5 * ch::textWidthEm(text) * emPx;
-  return {p.px(lx) - hw, p.py(ly) - 0.47 * emPx, p.px(lx) + hw, p.py(ly) + 0.85 * emPx};
-}
-
 // Points and labels. fig2_5_points.dat and fig2_5_super.dat: x y name giflabel (the markers).
 // Each panel K of Figure 2.5 has its own labels (fig2_5_labels_K.dat: x y name lx ly super),
 // placed with that panel's edges by placeAttached: beside its own point, on the point's side
-// of every edge, within 1.5 em of the figure (one place for six panels was next to other
-// points); the super-vertices' labels at one place outside the square (superLabelAt).
+// of every edge, within 1.5 em of the figure (1.5 / 0.85 of the labels' own em; one place for
+// six panels was next to other points).
 // A label keeps its direction from panel to panel where it can. Each animation frame has its
 // labels too (fig2_5_anim_NN_labels.dat: x y name lx ly super giflabel), in the direction of
 // the static panel that shows the same triangulation (at its very places on a frame without
@@ -371,9 +191,10 @@ void figure25Panels(const ch::Options& o, Fig25& F) {
   const XY& xy = F.xy;
   const std::vector<std::vector<CircleXY>>& frameCircles = F.frameCircles;
   double &x0 = F.x0, &x1 = F.x1, &y0 = F.y0, &y1 = F.y1;
-  const auto sq = squareBox(xy);
-  x0 = sq[0], x1 = sq[1], y0 = sq[2], y1 = sq[3];
-  const double m = F.m = fig25Margin(x1 - x0);  // room for the super-vertices' labels outside the square
+  x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
+  for (std::size_t i = 0; i < xy.size(); i += 2)
+    x0 = std::min(x0, xy[i]), x1 = std::max(x1, xy[i]), y0 = std::min(y0, xy[i + 1]), y1 = std::max(y1, xy[i + 1]);
+  const double m = F.m = 0.11 * (x1 - x0);  // room for the super-vertices' labels outside the square
   // The animation's one view holds every circle of every frame (none cut by the canvas).
   double ax0 = x0 - m, ax1 = x1 + m, ay0 = y0 - m, ay1 = y1 + m;
   for (const auto& cs : frameCircles)
@@ -388,7 +209,7 @@ void figure25Panels(const ch::Options& o, Fig25& F) {
   auto name = [&](std::size_t i) { return F.name(i); };
   auto row = [&](std::size_t i, double lx, double ly) { return F.row(i, lx, ly); };
   const std::vector<std::vector<ch::Seg>>& shown = F.shown;
-  // The labels of Figure 2.5 are set at kFig25Label em (about 7.8 pt at 15 cm printed, 2 x 3 panels).
+  // The labels of Figure 2.5 are set at 0.85 em (7.2 pt at 15 cm printed, 2 x 3 panels).
   std::vector<double> angle(np, NAN);
   std::vector<std::vector<double>>& staticAngle = F.staticAngle;
   staticAngle.assign(10, std::vector<double>(np, NAN));
@@ -397,13 +218,9 @@ void figure25Panels(const ch::Options& o, Fig25& F) {
   for (int k = 0; k < 6; ++k) {
     const ch::Panel pk = ch::cellPanel(fs, 2, 3, k, x0 - m, x1 + m, y0 - m, y1 + m);
     view += ch::fmt("P%d = \"", k + 1) + pk.gnuplot() + "\"\n";
-    ch::LabelPlacer place(pk, kFig25Label * fs.em);
-    place.textRunGap(0.62 * kFig25Label * fs.em);
+    ch::LabelPlacer place(pk, 0.85 * fs.em);
     place.segments(shown[k], 1.5 * std::max(1.5, fs.em / 18));
     for (std::size_t i = 0; i < np; ++i) place.marker(xy[2 * i], xy[2 * i + 1], ch::pointRadius(fs, 1.3));
-    if (k == 0)
-      for (std::size_t s = 0; s < 4; ++s) F.superAt.push_back(superLabelAt(F, s, pk));
-    for (std::size_t s = 0; s < 4; ++s) place.box(labelPxBox(pk, kFig25Label * fs.em, name(s), F.superAt[s].first, F.superAt[s].second));
     // The most crowded points first (most edges at them): their few clear wedges go to them.
     std::vector<std::size_t> order(np);
     std::vector<int> degree(np, 0);
@@ -415,11 +232,7 @@ void figure25Panels(const ch::Options& o, Fig25& F) {
     std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return degree[a] > degree[b]; });
     std::vector<std::pair<double, double>> at(np);
     for (const std::size_t i : order) {
-      if (all.ids[i] < 0) {
-        at[i] = F.superAt[i];
-        continue;
-      }
-      at[i] = place.placeAttached(xy[2 * i], xy[2 * i + 1], name(i), shown[k], angle[i], 5, 1.5 / kFig25Label, &angle[i]);
+      at[i] = place.placeAttached(xy[2 * i], xy[2 * i + 1], name(i), shown[k], angle[i], 5, 1.5 / 0.85, &angle[i]);
       staticAngle[panelOf[k]][i] = angle[i];
     }
     staticAt[panelOf[k]] = at;
@@ -437,9 +250,9 @@ void figure25Panels(const ch::Options& o, Fig25& F) {
   // copied from a panel keeps the same room around it (fig2_5_anim.gp: ANIM_FONT of FS, ANIM_PS
   // of PS; the labels set smaller than Figure 2.5's where the view is smaller).
   const double ratio = pa.scale() / ch::cellPanel(fs, 2, 3, 0, x0 - m, x1 + m, y0 - m, y1 + m).scale();
-  const double animFont = F.animFont = kFig25Label * fs.em * ratio / fa.em, animPs = F.animPs = 1.3 * fs.em * ratio / fa.em;
+  const double animFont = F.animFont = 0.85 * fs.em * ratio / fa.em, animPs = F.animPs = 1.3 * fs.em * ratio / fa.em;
   ch::writeOut(o, "fig2_5_view.gp", view + "VIEWA = \"" + pa.gnuplot() + "\"\n" +
-                                        ch::fmt("ANIM_FONT = %.4f; ANIM_PS = %.4f\nLABEL_FONT = %.3f\n", animFont, animPs, kFig25Label));
+                                        ch::fmt("ANIM_FONT = %.4f; ANIM_PS = %.4f\n", animFont, animPs));
 }
 
 // The animation's labels, frame by frame (see figure25Panels).
@@ -465,7 +278,6 @@ void figure25Frames(const ch::Options& o, const Fig25& F) {
     const int k = f == 0 ? 0 : f % 2 == 0 ? f / 2 : (f - 1) / 2;
     const std::size_t labelled = 4 + std::size_t((f + 1) / 2);
     ch::LabelPlacer place(pa, animFont * fa.em);
-    place.textRunGap(0.62 * animFont * fa.em);
     place.segments(allFrames[f], 1.5 * std::max(1.5, fa.em / 18));
     for (const CircleXY& c : frameCircles[f]) place.circle(c.x, c.y, c.r, 1.5 * std::max(1.5, fa.em / 18));
     for (std::size_t i = 0; i < np; ++i) place.marker(xy[2 * i], xy[2 * i + 1], ch::pointRadius(fa, animPs));
@@ -486,14 +298,9 @@ void figure25Frames(const ch::Options& o, const Fig25& F) {
     }
     std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return degree[a] > degree[b]; });
     std::vector<std::pair<double, double>> at(labelled);
-    for (std::size_t s = 0; s < 4; ++s) place.box(labelPxBox(pa, animFont * fa.em, name(s), F.superAt[s].first, F.superAt[s].second));
     for (const std::size_t i : order) {
-      if (all.ids[i] < 0) {
-        at[i] = F.superAt[i];
-        continue;
-      }
       const double prefer = staticAt.count(k) ? staticAngle[k][i] : fangle[i];
-      at[i] = same ? staticAt.at(k)[i] : place.placeAttached(xy[2 * i], xy[2 * i + 1], name(i), allFrames[f], prefer, 1.5, 1.5 / kFig25Label, &fangle[i]);
+      at[i] = same ? staticAt.at(k)[i] : place.placeAttached(xy[2 * i], xy[2 * i + 1], name(i), allFrames[f], prefer, 1.5, 1.5 / 0.85, &fangle[i]);
       if (same) fangle[i] = staticAngle[k][i];
     }
     for (std::size_t i = 0; i < labelled; ++i)

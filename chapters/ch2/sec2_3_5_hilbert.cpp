@@ -118,7 +118,12 @@ void figure211(const ch::Options& o) {
   const dt::HilbertFrame root{0.5, 0.5, 0.5, 0, 0, 0.5};  // red = +x, blue = +y (half-sides)
   for (int k = 1; k <= 2; ++k) {
     const int m = 1 << k;
-    std::vector<std::pair<std::uint64_t, std::string>> cells;
+    struct Cell {
+      std::uint64_t key;
+      std::string row;
+      double x, y;
+    };
+    std::vector<Cell> cells;
     int bits[2];
     for (int i = 0; i < m; ++i)
       for (int j = 0; j < m; ++j) {
@@ -127,14 +132,27 @@ void figure211(const ch::Options& o) {
                          bits);
         std::ostringstream s;
         s << x << " " << y << " \"(" << bits[0];
-        if (k == 2) s << "," << bits[1];
+        if (k == 2) s << ", " << bits[1];
         s << ")\"";
-        cells.emplace_back(dt::hilbertPack(bits, k), s.str());
+        cells.push_back({dt::hilbertPack(bits, k), s.str(), x, y});
       }
-    std::sort(cells.begin(), cells.end());
+    std::sort(cells.begin(), cells.end(), [](const Cell& a, const Cell& b) { return a.key < b.key; });
     std::ostringstream curve;
-    curve << "# x y label: cell centres of H" << k << " in the order of Listing 2.8\n";
-    for (const auto& c : cells) curve << c.second << "\n";
+    curve << "# x y label lx ly: cell centres of H" << k << " in the order of Listing 2.8, and where\n"
+          << "# each cell's label goes: above or below its centre, away from its quadrant's centre\n"
+          << "# (where the frame's arrows are); if the curve leaves the centre that way, beside the\n"
+          << "# curve, away from the quadrant's centre. So no two cells' labels meet across a\n"
+          << "# quadrant's side.\n";
+    const double cs = 1.0 / m;  // a cell's side
+    auto quadCentre = [&](double v) { return k == 1 ? 0.5 : std::floor(v * 2) / 2 + 0.25; };
+    for (std::size_t c = 0; c < cells.size(); ++c) {
+      const double x = cells[c].x, y = cells[c].y, sy = y > quadCentre(y) ? 1 : -1, sx = x > quadCentre(x) ? 1 : -1;
+      bool blocked = false;  // the curve leaves (x, y) vertically towards the label
+      for (const std::size_t nb : {c - 1, c + 1})
+        if (nb < cells.size() && std::fabs(cells[nb].x - x) < 1e-9 && (cells[nb].y - y) * sy > 0) blocked = true;
+      const double lx = blocked ? x + sx * 0.4 * cs : x, ly = y + sy * 0.28 * cs;
+      curve << cells[c].row << " " << lx << " " << ly << "\n";
+    }
     ch::writeOut(o, "fig2_11_h" + std::to_string(k) + ".dat", curve.str());
     // The frames that Listing 2.8 uses to number these cells: the root for H1, its four
     // children (hilbertChild, the same update as HilbertCoord) for H2.

@@ -20,9 +20,9 @@ do for [term in "png svg"] {
     inserted = (k == 0) ? "" : sprintf(", datadir.'/fig2_5_points.dat' every ::0::%d using 1:2 with points pt 7 ps (1.3*PS) lc rgb C_POINT", k - 1)
     eval "plot datadir.sprintf('/fig2_5_%d.dat', k) with lines lw 1.5 lc rgb C_TRI, " . \
          "datadir.'/fig2_5_super.dat' using 1:2 with points pt 5 ps (1.3*PS) lc rgb C_SUPER, " . \
-         "datadir.sprintf('/fig2_5_labels_%d.dat', k) using 4:($6 == 1 ? $5 : NaN):3 with labels tc rgb C_SUPER font ',' . sprintf('%.1f', LABEL_FONT * FS), " . \
+         "datadir.sprintf('/fig2_5_labels_%d.dat', k) using 4:($6 == 1 ? $5 : NaN):3 with labels tc rgb C_SUPER font ',' . sprintf('%.1f', 0.85 * FS), " . \
          "datadir.'/fig2_5_points.dat' using 1:2 with points pt 6 ps (1.3*PS) lc rgb C_PENDING, " . \
-         "datadir.sprintf('/fig2_5_labels_%d.dat', k) using 4:($6 == 0 ? $5 : NaN):3 with labels tc rgb C_TRI font ',' . sprintf('%.1f', LABEL_FONT * FS)" . inserted
+         "datadir.sprintf('/fig2_5_labels_%d.dat', k) using 4:($6 == 0 ? $5 : NaN):3 with labels tc rgb C_TRI font ',' . sprintf('%.1f', 0.85 * FS)" . inserted
   }
   unset multiplot
 }
