@@ -269,6 +269,10 @@ double textWidthEm(const std::string& s) {
   return w;
 }
 
+// sqrt(x^2 + y^2) without std::hypot's care for overflow: px values, and the placer calls it
+// millions of times (std::hypot was 70 % of Figure 2.5's search).
+static inline double fastHypot(double x, double y) { return std::sqrt(x * x + y * y); }
+
 void LabelPlacer::circle(double cx, double cy, double r, double widthPx) {
   for (int k = 0; k < 96; ++k) {
     const double a = 2 * M_PI * k / 96, b = 2 * M_PI * (k + 1) / 96;
@@ -298,7 +302,7 @@ std::pair<double, double> LabelPlacer::place(double x, double y, const std::stri
       // nearest point.
       const double own = boxPoint(b, X, Y);
       for (const auto& d : discs_)
-        if (std::hypot(d[0] - X, d[1] - Y) > 0.5 && boxPoint(b, d[0], d[1]) < own + 0.1 * em_) c = std::min(c, -0.5);
+        if (fastHypot(d[0] - X, d[1] - Y) > 0.5 && boxPoint(b, d[0], d[1]) < own + 0.1 * em_) c = std::min(c, -0.5);
       const double score = std::min(c, gap) - 0.01 * ring;  // clear enough and near beats clearer but far
       if (c >= gap) {
         boxes_.push_back(b);
@@ -329,12 +333,12 @@ std::pair<double, double> LabelPlacer::placeAttached(double x, double y, const s
       const double ccx = X + (hw + r) * std::cos(a), ccy = Y - (hh + r) * std::sin(a) + 0.5 * (up - down);
       const PxBox b{ccx - hw, ccy - up, ccx + hw, ccy + down};
       const double midY = 0.5 * (b.y0 + b.y1);
-      if (std::hypot(ccx - X, ccy - Y) > maxEm * em_ || std::hypot(ccx - X, midY - Y) > maxEm * em_) continue;
-      const double own = boxPoint(b, X, Y), ownAnchor = std::hypot(ccx - X, ccy - Y);
+      if (fastHypot(ccx - X, ccy - Y) > maxEm * em_ || fastHypot(ccx - X, midY - Y) > maxEm * em_) continue;
+      const double own = boxPoint(b, X, Y), ownAnchor = fastHypot(ccx - X, ccy - Y);
       bool ok = true;
       for (const auto& d : discs_)
-        if (std::hypot(d[0] - X, d[1] - Y) > 0.5 &&
-            (boxPoint(b, d[0], d[1]) < own + 0.1 * em_ || std::hypot(ccx - d[0], ccy - d[1]) < ownAnchor + 0.1 * em_))
+        if (fastHypot(d[0] - X, d[1] - Y) > 0.5 &&
+            (boxPoint(b, d[0], d[1]) < own + 0.1 * em_ || fastHypot(ccx - d[0], ccy - d[1]) < ownAnchor + 0.1 * em_))
           ok = false;
       for (const auto& e : px)
         if (ok && crosses(X, Y, ccx, ccy, e)) ok = false;
@@ -371,19 +375,25 @@ std::pair<double, double> LabelPlacer::placeAttached(double x, double y, const s
 
 double LabelPlacer::clearance(const PxBox& b, bool skipLast) const {
   double c = std::min({b.x0 - p_.left, p_.left + p_.w - b.x1, b.y0 - p_.top, p_.top + p_.h - b.y1});
-  for (const auto& s : segs_) c = std::min(c, boxSeg(b, s) - s[4]);
+  for (const auto& s : segs_) {
+    // A segment whose bounding box is already farther than c cannot lower it.
+    const double gx = std::max({std::min(s[0], s[2]) - b.x1, b.x0 - std::max(s[0], s[2]), 0.0}),
+                 gy = std::max({std::min(s[1], s[3]) - b.y1, b.y0 - std::max(s[1], s[3]), 0.0});
+    if (std::max(gx, gy) - s[4] >= c) continue;
+    c = std::min(c, boxSeg(b, s) - s[4]);
+  }
   for (const auto& d : discs_) c = std::min(c, boxPoint(b, d[0], d[1]) - d[2]);
   for (std::size_t i = 0; i + (skipLast ? 1 : 0) < boxes_.size(); ++i) {
     const PxBox& o = boxes_[i];
     const double dx = std::max({o.x0 - b.x1, b.x0 - o.x1, 0.0}), dy = std::max({o.y0 - b.y1, b.y0 - o.y1, 0.0});
-    c = std::min(c, (dx == 0 && dy == 0) ? -1e3 : std::hypot(dx, dy));  // never on a label
+    c = std::min(c, (dx == 0 && dy == 0) ? -1e3 : fastHypot(dx, dy));  // never on a label
   }
   return c;
 }
 
 double LabelPlacer::boxPoint(const PxBox& b, double x, double y) {
   const double dx = std::max({b.x0 - x, 0.0, x - b.x1}), dy = std::max({b.y0 - y, 0.0, y - b.y1});
-  return std::hypot(dx, dy);
+  return fastHypot(dx, dy);
 }
 
 bool LabelPlacer::crosses(double x, double y, double u, double v, const std::array<double, 4>& e) {
@@ -391,18 +401,33 @@ bool LabelPlacer::crosses(double x, double y, double u, double v, const std::arr
   const double den = dx * ey - dy * ex;
   if (std::fabs(den) < 1e-12) return false;
   const double t = ((e[0] - x) * ey - (e[1] - y) * ex) / den, s = ((e[0] - x) * dy - (e[1] - y) * dx) / den;
-  const double len = std::hypot(dx, dy);
+  const double len = fastHypot(dx, dy);
   return s >= 0 && s <= 1 && t * len > 1.5 && t <= 1;
 }
 
 double LabelPlacer::boxSeg(const PxBox& b, const std::array<double, 5>& s) {
-  // Sampled every px: exact enough for a clearance of a few px.
-  const double len = std::hypot(s[2] - s[0], s[3] - s[1]);
-  const int n = std::max(1, int(len));
-  double best = 1e300;
-  for (int k = 0; k <= n; ++k) {
-    best = std::min(best, boxPoint(b, s[0] + (s[2] - s[0]) * k / n, s[1] + (s[3] - s[1]) * k / n));
-    if (best == 0) return 0;
+  // Exact: 0 if the segment meets the box (clipped to it, Liang-Barsky), else the least of
+  // the distances from its ends to the box and from the box's corners to it.
+  const double dx = s[2] - s[0], dy = s[3] - s[1];
+  double t0 = 0, t1 = 1;
+  auto clip = [&](double p, double q) {
+    if (p == 0) return q >= 0;
+    const double r = q / p;
+    if (p < 0) {
+      if (r > t1) return false;
+      t0 = std::max(t0, r);
+    } else {
+      if (r < t0) return false;
+      t1 = std::min(t1, r);
+    }
+    return true;
+  };
+  if (clip(-dx, s[0] - b.x0) && clip(dx, b.x1 - s[0]) && clip(-dy, s[1] - b.y0) && clip(dy, b.y1 - s[1])) return 0;
+  double best = std::min(boxPoint(b, s[0], s[1]), boxPoint(b, s[2], s[3]));
+  const double len2 = dx * dx + dy * dy;
+  for (const auto& [cx, cy] : {std::pair{b.x0, b.y0}, std::pair{b.x1, b.y0}, std::pair{b.x0, b.y1}, std::pair{b.x1, b.y1}}) {
+    const double t = len2 > 0 ? std::clamp(((cx - s[0]) * dx + (cy - s[1]) * dy) / len2, 0.0, 1.0) : 0.0;
+    best = std::min(best, fastHypot(cx - s[0] - t * dx, cy - s[1] - t * dy));
   }
   return best;
 }

@@ -3,7 +3,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <random>
+#include <regex>
+#include <sstream>
 #include <string>
 
 #include "bowyer_watson.h"
@@ -33,13 +36,26 @@ dt::PlainMesh listing27(const XY& p, double factor, dt::InsertionStats* st = nul
   return dt::extractMesh(T, false);
 }
 
-// The 9 points of Figure 2.5, in insertion order (chapters/ch2/sec2_2_bowyer_watson.cpp).
-const XY kFig25 = {0.22, 0.31, 0.74, 0.27, 0.51, 0.62, 0.29, 0.83, 0.88, 0.71,
-                   0.07, 0.52, 0.61, 0.09, 0.43, 0.38, 0.69, 0.94};
+// The 9 points of Figure 2.5, in insertion order, read from the chapter program that draws it
+// (its kFig25, chosen there by score), as the live figure reads them.
+XY figure25Points() {
+  std::ifstream in(std::string(DT_SOURCE_DIR) + "/chapters/ch2/sec2_2_bowyer_watson.cpp");
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string t = text.str();
+  std::smatch m;
+  REQUIRE(std::regex_search(t, m, std::regex("const XY kFig25 = \\{([^}]*)\\};")));
+  std::istringstream nums(std::regex_replace(std::string(m[1]), std::regex(","), " "));
+  XY xy;
+  for (double v; nums >> v;) xy.push_back(v);
+  REQUIRE(xy.size() == 18);
+  return xy;
+}
 
 }  // namespace
 
 TEST_CASE("2.2 Algorithm 1 (corrected) gives the same triangles as delaunayTrgl") {
+  const XY kFig25 = figure25Points();
   XY grid = dt::gridPoints(12, 12);
   XY gridShuffled = grid;
   dt::shufflePoints(gridShuffled, dttest::variant(21));
@@ -70,6 +86,7 @@ TEST_CASE("2.2 Algorithm 1 (corrected) gives the same triangles as delaunayTrgl"
 
 TEST_CASE("2.2.1 Figure 2.5: 2 4 6 8 10 triangles after 0..4 insertions into the super-triangles") {
   // Each insertion of a point strictly inside removes |C| triangles and adds |C| + 2.
+  const XY kFig25 = figure25Points();
   const dt::BowyerWatsonResult all = dt::bowyerWatson(kFig25, 1.5);
   CHECK(all.tri.size() == 20);  // 4 super-vertices + 9 points, hull of 4: 2(13-1) - 4
   for (std::size_t k = 1; k <= 9; ++k) {

@@ -11,7 +11,7 @@ array K[6] = [0, 1, 2, 3, 4, 9]
 do for [term in "png svg"] {
   eval fig_open(term, "fig2_5")
   set output (term eq "png" ? outdir."/fig2_5.png" : outdir."/fig2_5.svg")
-  eval layout(2, 3)
+  eval layout(3, 2)
   do for [i=1:6] {
     k = K[i]
     eval panel(i, k == 0 ? "DT_".M."0}" : sprintf("%d point%s inserted", k, k == 1 ? "" : "s"))
