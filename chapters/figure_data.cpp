@@ -387,6 +387,8 @@ double LabelPlacer::clearance(const PxBox& b, bool skipLast) const {
     const PxBox& o = boxes_[i];
     const double dx = std::max({o.x0 - b.x1, b.x0 - o.x1, 0.0}), dy = std::max({o.y0 - b.y1, b.y0 - o.y1, 0.0});
     c = std::min(c, (dx == 0 && dy == 0) ? -1e3 : fastHypot(dx, dy));  // never on a label
+    const double shared = std::min(o.y1, b.y1) - std::max(o.y0, b.y0);
+    if (sameLine_ > 0 && shared > 0.5 * std::min(o.y1 - o.y0, b.y1 - b.y0)) c = std::min(c, dx - sameLine_);
   }
   return c;
 }

@@ -171,6 +171,9 @@ class LabelPlacer {
   void marker(double x, double y, double radiusPx) { discs_.push_back({p_.px(x), p_.py(y), radiusPx}); }
   /// A box already taken (a title, a legend), in px.
   void box(const PxBox& b) { boxes_.push_back(b); }
+  /// Two labels on one line (sharing more than half their height) must keep `px` more than
+  /// the gap between them, so that they do not read as one run of text ("p8 p2"). 0: off.
+  void sameLineExtra(double px) { sameLine_ = px; }
 
   /// The place (data units, the centre of the text) for the label `text` of the point (x, y):
   /// the candidate nearest the point, among 32 directions on rings of growing distance, whose
@@ -213,6 +216,7 @@ class LabelPlacer {
   std::vector<std::array<double, 3>> discs_;
   std::vector<PxBox> boxes_;
   bool farther_ = false;  // placeAttached is looking beyond its maxEm
+  double sameLine_ = 0;   // sameLineExtra
 };
 
 }  // namespace ch

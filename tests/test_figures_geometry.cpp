@@ -156,14 +156,15 @@ std::vector<std::string> runErrors(const GFigure& f) {
   return out;
 }
 
-/// Points drawn but not yet in the triangulation (`pending`) that sit on an edge: nearer than
-/// two marker radii, the marker would touch the line (issue 42's review: p1 10 px from the
-/// diagonal in Figure 2.5 (a)).
+/// Points that sit on an edge not their own: points drawn but not yet in the triangulation
+/// (`pending`), or vertices and an edge that does not end at them. Nearer than two marker radii,
+/// the marker would touch the line (issue 42's review: p1 10 px from the diagonal in Figure
+/// 2.5 (a), p9 3 px from an edge in the recovery frames).
 std::vector<std::string> pendingErrors(const GFigure& f, const std::vector<GPoint>& pending) {
   std::vector<std::string> out;
   for (const GPoint& p : pending)
     for (const ch::Seg& e : f.edges)
-      if (ch::segDistance(e, p.x, p.y) * f.scale < 2 * f.marker) {
+      if (dist(e.x0, e.y0, p.x, p.y) > 1e-9 && dist(e.x1, e.y1, p.x, p.y) > 1e-9 && ch::segDistance(e, p.x, p.y) * f.scale < 2 * f.marker) {
         out.push_back(f.name + ": " + p.name + fmt(" is %.1f px from an edge (at least %.1f)", ch::segDistance(e, p.x, p.y) * f.scale, 2 * f.marker));
         break;
       }
@@ -482,6 +483,11 @@ TEST_CASE("figures geometry the pending check names a point not yet inserted on 
   GFigure f = plantedBase();
   CHECK(joined(pendingErrors(f, {{0.3, 0.3, "q"}})) == "");
   CHECK(joined(pendingErrors(f, {{0.5, 0.45, "q"}})).find("q is 3.5 px from an edge") != std::string::npos);
+  // A vertex is not on its own edges, but is on another's.
+  CHECK(joined(pendingErrors(f, f.points)) == "");
+  f.points[3].x = 0.56, f.points[3].y = 0.47;  // d near the edge b-c (3.5 px), its own edges moved with it
+  f.edges = {{0, 0, 1, 0}, {1, 0, 0, 1}, {0, 1, 0, 0}, {1, 0, 0.56, 0.47}, {0.56, 0.47, 0, 1}};
+  CHECK(joined(pendingErrors(f, f.points)).find("d is 2.1 px from an edge") != std::string::npos);
 }
 
 TEST_CASE("figures geometry the focus check names a point near an edge or a label and a sliver") {
@@ -791,4 +797,47 @@ TEST_CASE("figures geometry Figure 2.10 draws no sliver and starts every link ar
     }
   }
   CHECK(arrows >= 2 * int(ball.size()));
+}
+
+namespace {
+
+/// Frame `k` of the recovery figure: every vertex (named), the frame's labels ("set label"
+/// lines), its triangles and its flip's two edges ("set arrow" lines).
+GFigure recoveryFrame(const fs::path& dir, int k) {
+  GFigure f;
+  f.name = fmt("fig_recovery_frames frame %d", k);
+  const ch::FigureSize fs = ch::figureSize("fig_recovery_frames");
+  const fs::path gp = dir / fmt("rec_frame_%d.gp", k);
+  readView(viewLine(gp, "VIEW"), fs.W, f);
+  f.em = fs.em, f.marker = ch::pointRadius(fs, 0.9);
+  readPoints(dir / "rec_points.dat", f);
+  readPoints(dir / "rec_super.dat", f);
+  const std::string text = slurp(gp);
+  const std::regex label("set label \"([^\"]*)\" at ([-0-9.e]+),([-0-9.e]+)"),
+      arrow("set arrow from ([-0-9.e]+),([-0-9.e]+) to ([-0-9.e]+),([-0-9.e]+)");
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), label); it != std::sregex_iterator(); ++it)
+    f.labels.push_back({std::stod((*it)[2]), std::stod((*it)[3]), (*it)[1]});
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), arrow); it != std::sregex_iterator(); ++it)
+    f.edges.push_back({std::stod((*it)[1]), std::stod((*it)[2]), std::stod((*it)[3]), std::stod((*it)[4])});
+  const std::vector<ch::Seg> tri = readPolylines(dir / fmt("rec_frame_%d.dat", k));
+  f.edges.insert(f.edges.end(), tri.begin(), tri.end());
+  return f;
+}
+
+}  // namespace
+
+TEST_CASE("figures geometry the recovery frames label each vertex beside it and draw no vertex on another's edge") {
+  const fs::path dir = programRun("sec2_3_6_flips", "fig_recovery_frames");
+  int frames = 0, labels = 0;
+  for (int k = 0; fs::exists(dir / fmt("rec_frame_%d.gp", k)); ++k, ++frames) {
+    const GFigure f = recoveryFrame(dir, k);
+    labels += int(f.labels.size());
+    CHECK(joined(attachmentErrors(f)) == "");
+    CHECK(beyondRule(f) == 0);
+    CHECK(joined(markerErrors(f)) == "");
+    CHECK(joined(pendingErrors(f, f.points)) == "");
+    CHECK(joined(frameErrors(f)) == "");
+  }
+  CHECK(frames == 6);  // four flips: the grid of three rows of two, full
+  CHECK(labels >= 5 * 4 + 4);  // the super-vertices in (a)-(e), and the points of each flip (one at least)
 }

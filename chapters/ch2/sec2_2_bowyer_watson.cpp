@@ -212,11 +212,12 @@ void figure25Steps(Fig25& F) {
     if (cavity.size() != s.cavity) throw std::logic_error("figure 2.5: the step's cavity is not what it removed");
     // Titles: the PNG frames in the notes' notation; the GIF (libgd) cannot show 𝒞, so words.
     const std::string name = pname(all.ids[ip]);
+    auto triangles = [](std::size_t n) { return std::to_string(n) + (n == 1 ? " triangle" : " triangles"); };
     writeFrame(before, cavity, ip, "inserting " + ch::mathText(name) + ": the cavity " + ch::mathText("\\mathscr{C}") + " (" +
-                                       std::to_string(s.cavity) + " triangles)\tinserting " + ch::mathTextGif(name) + ": the cavity (" +
-                                       std::to_string(s.cavity) + " triangles)");
+                                       triangles(s.cavity) + ")\tinserting " + ch::mathTextGif(name) + ": the cavity (" +
+                                       triangles(s.cavity) + ")");
     writeFrame(tri, ball, ip, "inserting " + ch::mathText(name) + ": the ball " + ch::mathText("\\mathscr{B}") + " (" +
-                                  std::to_string(s.ball) + " triangles)\tinserting " + ch::mathTextGif(name) + ": the ball (" + std::to_string(s.ball) + " triangles)");
+                                  triangles(s.ball) + ")\tinserting " + ch::mathTextGif(name) + ": the ball (" + triangles(s.ball) + ")");
     tab.add({std::to_string(k), std::to_string(s.cavity), std::to_string(s.ball), std::to_string(tri.size())});
     if (k <= 4 || k == 9) {
       F.out(ch::fmt("fig2_5_%d.dat", k), ch::gnuplotEdges(xy, tri));
@@ -299,8 +300,11 @@ bool figure25Panels(Fig25& F, int bound = 1 << 30) {
     const ch::Panel pk = ch::cellPanel(fs, 3, 2, k, x0 - m, x1 + m, y0 - m, y1 + m);
     view += ch::fmt("P%d = \"", k + 1) + pk.gnuplot() + "\"\n";
     ch::LabelPlacer place(pk, emL);
+    place.sameLineExtra(fs.em - 5);  // labels on one line at least 1 em apart (the gap is 5 px)
     place.segments(shown[k], 1.5 * std::max(1.5, fs.em / 18));
     for (std::size_t i = 0; i < np; ++i) place.marker(xy[2 * i], xy[2 * i + 1], ch::pointRadius(fs, 1.3));
+    if (panelOf[k] > 0)  // the ring around the point inserted last (fig2_5.gp: ps 2.4, lw 2)
+      place.marker(xy[2 * (3 + panelOf[k])], xy[2 * (3 + panelOf[k]) + 1], ch::pointRadius(fs, 2.4) + 2 * std::max(1.5, fs.em / 18));
     // The most crowded points first (most edges at them): their few clear wedges go to them.
     std::vector<std::size_t> order(np);
     std::vector<int> degree(np, 0);
