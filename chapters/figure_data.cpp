@@ -324,6 +324,31 @@ std::pair<double, double> LabelPlacer::placeAttached(double x, double y, const s
   const double X = p_.px(x), Y = p_.py(y);
   std::vector<std::array<double, 4>> px;
   for (const Seg& e : edges) px.push_back({p_.px(e.x0), p_.py(e.y0), p_.px(e.x1), p_.py(e.y1)});
+  // Whether the anchor (ccx, ccy) keeps the rules: within maxEm, nearer its own point than any
+  // other marker, no edge between.
+  auto keepsRules = [&](double ccx, double ccy) {
+    const PxBox b{ccx - hw, ccy - up, ccx + hw, ccy + down};
+    const double midY = 0.5 * (b.y0 + b.y1);
+    if (fastHypot(ccx - X, ccy - Y) > maxEm * em_ || fastHypot(ccx - X, midY - Y) > maxEm * em_) return false;
+    const double own = boxPoint(b, X, Y), ownAnchor = fastHypot(ccx - X, ccy - Y);
+    for (const auto& d : discs_)
+      if (fastHypot(d[0] - X, d[1] - Y) > 0.5 &&
+          (boxPoint(b, d[0], d[1]) < own + 0.1 * em_ || fastHypot(ccx - d[0], ccy - d[1]) < ownAnchor + 0.1 * em_))
+        return false;
+    for (const auto& e : px)
+      if (crosses(X, Y, ccx, ccy, e)) return false;
+    return true;
+  };
+  if (hasPreferAt_ && !farther_) {
+    hasPreferAt_ = false;
+    const double ccx = p_.px(preferAt_.first), ccy = p_.py(preferAt_.second);
+    const PxBox b{ccx - hw, ccy - up, ccx + hw, ccy + down};
+    if (keepsRules(ccx, ccy) && clearance(b) >= gap) {
+      boxes_.push_back(b);
+      if (angleDeg) *angleDeg = std::atan2(-(ccy - 0.5 * (up - down) - Y) / (hh + 1e-9), (ccx - X) / (hw + 1e-9)) * 180 / M_PI;
+      return preferAt_;
+    }
+  }
   double bestScore = -1e300, bestC = -1e300, bx = NAN, by = NAN, ba = 0;
   for (int ring = 0; ring < 24; ++ring) {
     const double r = 0.08 * ring * em_;
@@ -332,17 +357,7 @@ std::pair<double, double> LabelPlacer::placeAttached(double x, double y, const s
       const double a = k < 0 ? preferDeg * M_PI / 180 : M_PI / 4 + 2 * M_PI * k / 48;
       const double ccx = X + (hw + r) * std::cos(a), ccy = Y - (hh + r) * std::sin(a) + 0.5 * (up - down);
       const PxBox b{ccx - hw, ccy - up, ccx + hw, ccy + down};
-      const double midY = 0.5 * (b.y0 + b.y1);
-      if (fastHypot(ccx - X, ccy - Y) > maxEm * em_ || fastHypot(ccx - X, midY - Y) > maxEm * em_) continue;
-      const double own = boxPoint(b, X, Y), ownAnchor = fastHypot(ccx - X, ccy - Y);
-      bool ok = true;
-      for (const auto& d : discs_)
-        if (fastHypot(d[0] - X, d[1] - Y) > 0.5 &&
-            (boxPoint(b, d[0], d[1]) < own + 0.1 * em_ || fastHypot(ccx - d[0], ccy - d[1]) < ownAnchor + 0.1 * em_))
-          ok = false;
-      for (const auto& e : px)
-        if (ok && crosses(X, Y, ccx, ccy, e)) ok = false;
-      if (!ok) continue;
+      if (!keepsRules(ccx, ccy)) continue;
       const double c = clearance(b);
       if (c >= gap) {
         boxes_.push_back(b);

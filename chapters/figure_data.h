@@ -171,6 +171,9 @@ class LabelPlacer {
   void marker(double x, double y, double radiusPx) { discs_.push_back({p_.px(x), p_.py(y), radiusPx}); }
   /// A box already taken (a title, a legend), in px.
   void box(const PxBox& b) { boxes_.push_back(b); }
+  /// The next placeAttached() tries this anchor (data units) first, e.g. the label's place in
+  /// the frame before, and keeps it if it keeps every rule and is clear (no jump).
+  void preferAt(double lx, double ly) { preferAt_ = {lx, ly}, hasPreferAt_ = true; }
   /// Two labels on one line (sharing more than half their height) must keep `px` more than
   /// the gap between them, so that they do not read as one run of text ("p8 p2"). 0: off.
   void sameLineExtra(double px) { sameLine_ = px; }
@@ -217,6 +220,8 @@ class LabelPlacer {
   std::vector<PxBox> boxes_;
   bool farther_ = false;  // placeAttached is looking beyond its maxEm
   double sameLine_ = 0;   // sameLineExtra
+  std::pair<double, double> preferAt_{0, 0};
+  bool hasPreferAt_ = false;
 };
 
 }  // namespace ch

@@ -371,6 +371,7 @@ void figure25Frames(Fig25& F) {
   auto name = [&](std::size_t i) { return F.name(i); };
   auto row = [&](std::size_t i, double lx, double ly) { return F.row(i, lx, ly); };
   std::vector<double> fangle(np, NAN);
+  std::vector<std::pair<double, double>> prevAt(np, {NAN, NAN});  // each label's place in the frame before
   for (int f = 0; f < frame; ++f) {
     // The triangulation a frame shows: DT_k on the ball frame 2k, DT_{k-1} on the cavity
     // frame 2k-1; the points inserted so far (and the one being inserted) are labelled.
@@ -404,12 +405,20 @@ void figure25Frames(Fig25& F) {
         fangle[i] = staticAngle[k][i];
         continue;
       }
+      // No jump where none is needed: the static panel's place for this triangulation, else
+      // the frame before's, if it is still clear.
+      if (staticAt.count(k))
+        place.preferAt(staticAt.at(k)[i].first, staticAt.at(k)[i].second);
+      else if (!std::isnan(prevAt[i].first))
+        place.preferAt(prevAt[i].first, prevAt[i].second);
       at[i] = place.placeAttached(xy[2 * i], xy[2 * i + 1], name(i), allFrames[f], prefer, 1.5, 1.5 / 0.85, &fangle[i]);
       F.score.frameLabels += place.lastClearance() < 1.5 - 1e-9 ||
                              std::hypot(at[i].first - xy[2 * i], at[i].second - xy[2 * i + 1]) * pa.scale() > 1.5 * animFont * fa.em / 0.85 + 1e-6;
     }
-    for (std::size_t i = 0; i < labelled; ++i)
+    for (std::size_t i = 0; i < labelled; ++i) {
       labels += row(i, at[i].first, at[i].second) + " " + ch::quoted(ch::mathTextGif(pname(all.ids[i]))) + "\n";
+      prevAt[i] = at[i];
+    }
     F.out(ch::fmt("fig2_5_anim_%02d_labels.dat", f), labels, false);
   }
 }
