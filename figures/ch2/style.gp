@@ -41,7 +41,7 @@ FIGSIZES = " fig2_1 1400 640" . \
            " fig_time_per_point 1200 860" . \
            " fig_outside_hull 1200 1440" . \
            " fig_parabola_cavity 1200 860" . \
-           " fig_recovery_frames 1500 2300" . \
+           " fig_recovery_frames 1500 1560" . \
            " fig_table2_1_search 1200 860 "
 
 # Figures printed at about 8 cm (one panel); the others are printed at 15 cm.
