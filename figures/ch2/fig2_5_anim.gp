@@ -4,7 +4,7 @@
 # fig2_5_anim_NN.png, and the animated GIF fig2_5_anim.gif written by gnuplot's own gif terminal
 # (libgd; no other program needed), which holds the last frame longer.
 # The circles come dashed in their data (gnuplot's gif terminal draws a dash type solid), so
-# they are drawn as plain lines. Each frame's labels (fig2_5_anim_NN_labels.dat: x y label lx ly
+# they are drawn as plain lines; the GIF's key, whose sample is solid there, says "dashed" in words. Each frame's labels (fig2_5_anim_NN_labels.dat: x y label lx ly
 # super giflabel) are placed by the program beside their points, clear of the frame's circles.
 # The view holds every circle of every frame; labels and markers are Figure 2.5's scaled to it
 # (fig2_5_view.gp: ANIM_FONT, ANIM_PS), so that a frame showing a panel's triangulation takes
@@ -60,7 +60,7 @@ do for [pass=0:1] {
        (f == 0 ? datadir."/fig2_5_super.dat" : stem."_p.dat") using 1:(f == 0 ? NaN : $2) with points pt 7 ps (1.4*ANIM_PS*PS) lc rgb C_NEW notitle, \
        NaN with boxes fs solid 1.0 fc rgb C_CAVITY title "cavity", \
        NaN with boxes fs solid 1.0 fc rgb C_BALL title "ball", \
-       NaN with lines lw 1.5 dt 2 lc rgb C_CIRCLE title "circumcircles", \
+       NaN with lines lw 1.5 dt 2 lc rgb C_CIRCLE title (pass == 0 ? "circumcircles" : "circumcircles (dashed)"), \
        NaN with points pt 7 ps (1.4*ANIM_PS*PS) lc rgb C_NEW title "new point"
   }
   set output
