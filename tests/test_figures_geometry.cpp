@@ -841,3 +841,39 @@ TEST_CASE("figures geometry the recovery frames label each vertex beside it and 
   CHECK(frames == 4);  // two flips: the grid of two rows of two, full
   CHECK(labels >= 4 * 4 + 2);  // the super-vertices in every frame, and the points of each flip (one at least)
 }
+
+TEST_CASE("figures geometry Figure 2.2 labels every corner and x beside its point") {
+  // The corners sigma_j in order (fig2_2_polygon.dat and fig2_2_labels.dat: the same order) and
+  // x; the edges a label may not cross are the polygon's sides (x's sight lines fan out from it:
+  // its label sits between two of them).
+  const fs::path dir = programRun("sec2_1_kernel", "fig2_2");
+  const ch::FigureSize fs = ch::figureSize("fig2_2");
+  GFigure f;
+  f.name = "fig2_2";
+  readView(viewLine(dir / "fig2_2_view.gp", "VIEW"), fs.W, f);
+  f.em = fs.em, f.marker = ch::pointRadius(fs, 0.9);
+  // At most 3 em: the placer's reach (twice the rule's 1.5 em) for a corner whose sides are all
+  // taken by edges and sight lines; how many are beyond 1.5 em is printed.
+  f.maxEm = 3.0;
+  GFigure named;
+  readPoints(dir / "fig2_2_labels.dat", named);  // x y "name": the labels' anchors and names
+  std::istringstream corners(slurp(dir / "fig2_2_polygon.dat"));
+  std::vector<GPoint> P;
+  for (double x, y; corners >> x >> y;) P.push_back({x, y, ""});
+  REQUIRE(P.size() == named.points.size() + 1);  // the polygon is closed: its first corner again
+  P.pop_back();
+  for (std::size_t j = 0; j < P.size(); ++j) {
+    f.points.push_back({P[j].x, P[j].y, named.points[j].name});
+    f.labels.push_back(named.points[j]);
+    f.edges.push_back({P[j].x, P[j].y, P[(j + 1) % P.size()].x, P[(j + 1) % P.size()].y});
+  }
+  const GPoint x = rowPoint(dir / "fig2_2_x.dat", 0, "x");
+  GFigure xl;
+  readPoints(dir / "fig2_2_xlabel.dat", xl);
+  REQUIRE(xl.points.size() == 1);
+  f.points.push_back({x.x, x.y, xl.points[0].name});
+  f.labels.push_back(xl.points[0]);
+  CHECK(joined(attachmentErrors(f)) == "");
+  CHECK(joined(markerErrors(f)) == "");
+  if (beyondRule(f) > 0) MESSAGE(f.name << ": " << beyondRule(f) << " label(s) beyond 1.5 em (crowded)");
+}

@@ -144,26 +144,12 @@ std::pair<std::size_t, double> widestStep(const std::vector<dt::Face*>& chain) {
 
 // ---- Figure 2.2: a star-shaped polygon and its kernel -------------------------------------
 
-void figure22(const ch::Options& o) {
-  // An irregular seven-pointed star (counter-clockwise), fixed corners.
-  const double outer[7] = {1.00, 0.86, 1.10, 0.95, 0.80, 1.05, 0.90};
-  const double inner[7] = {0.46, 0.52, 0.40, 0.55, 0.48, 0.43, 0.50};
-  std::vector<dt::Point2> P;
-  for (int k = 0; k < 7; ++k) {
-    const double a = 2 * M_PI * k / 7 + 0.2, b = a + M_PI / 7 + 0.06 * std::sin(3.0 * k);
-    P.push_back({outer[k] * std::cos(a), outer[k] * std::sin(a)});
-    P.push_back({inner[k] * std::cos(b) + 0.05, inner[k] * std::sin(b) - 0.03});
-  }
-  const std::vector<dt::Point2> K = dt::polygonKernel(P);
-  dt::Point2 x = {0, 0};
-  for (const auto& q : K) x.x += q.x / double(K.size()), x.y += q.y / double(K.size());
-  x.x += 0.3 * (K[0].x - x.x);  // a kernel point off the centre, so the sight lines fan
-  x.y += 0.3 * (K[0].y - x.y);
-  std::size_t seen = 0;
-  for (std::size_t j = 0; j < P.size(); ++j) seen += dt::seesCorner(P, x, j);
-  std::cout << "Figure 2.2: polygon of " << P.size() << " corners, kernel of " << K.size()
-            << " corners; the kernel point sees " << seen << "/" << P.size()
-            << " corners (exact test); in the open kernel: " << dt::inOpenKernel(P, x) << "\n";
+// Figure 2.2's layout for the kernel point x and ker(Σ)'s label in the corner kerCorner: its files (if o is given) and its score, 100 for
+// each label that no clear spot keeps beside its point (then placed by place(), unattached) and
+// 1 for each label more than 1.5 em from its point.
+int figure22Layout(const std::vector<dt::Point2>& P, const std::vector<dt::Point2>& K, const dt::Point2& x,
+                   int kerCorner, const ch::Options* o) {
+  int score = 0;
   std::string poly, ker, sight, lines, labels;
   // The view: the polygon with room for the labels, laid out in pixels (fig2_2_view.gp) so that
   // the labels are placed clear of everything drawn; the edge lines are clipped to it here.
@@ -204,29 +190,35 @@ void figure22(const ch::Options& o) {
     }
   }
   placer.marker(x.x, x.y, ch::pointRadius(fs, 1.5));
-  // ker(Σ): in the free corner at the lower left, with an arrow to a kernel point near its
-  // lowest-left corner (the sight lines fill the kernel's middle). The arrow is an obstacle.
+  // ker(Σ): in a free corner of the view (kerCorner: 0 lower left, 1 lower right, 2 upper left,
+  // 3 upper right), with an arrow to a kernel point near the kernel's corner on that side (the
+  // sight lines fill the kernel's middle). The arrow is an obstacle.
+  const double sx = (kerCorner & 1) ? -1 : 1, sy = (kerCorner & 2) ? -1 : 1;
   std::size_t low = 0;
   for (std::size_t i = 0; i < K.size(); ++i)
-    if (K[i].x + K[i].y < K[low].x + K[low].y) low = i;
+    if (sx * K[i].x + sy * K[i].y < sx * K[low].x + sy * K[low].y) low = i;
   double kx = 0, ky = 0;
   for (const auto& q : K) kx += q.x / double(K.size()), ky += q.y / double(K.size());
   const double ax = 0.5 * (kx + K[low].x), ay = 0.5 * (ky + K[low].y);
   const std::string kerName = "ker(" + ch::mathText("\\Sigma") + ")";
-  // Its place: the clearest in the lower left quarter of the view (left-aligned text).
+  // Its place: the clearest in that quarter of the view (left-aligned text).
   const double kerW = ch::textWidthEm(kerName) * fs.em;  // px
   auto kerBox = [&](double x, double y) {
     return ch::PxBox{pv.px(x) - 3, pv.py(y) - 0.5 * fs.em - 3, pv.px(x) + kerW + 3, pv.py(y) + 0.65 * fs.em + 3};
   };
-  double tx = X0 + 0.22 * (X1 - X0), ty = Y0 + 0.1 * (Y1 - Y0), bestC = -1e300;
+  double tx = 0, ty = 0, bestC = -1e300;
   for (int i = 0; i <= 20; ++i)
     for (int j = 0; j <= 20; ++j) {
-      const double x = X0 + (0.02 + 0.3 * i / 20) * (X1 - X0), y = Y0 + (0.04 + 0.3 * j / 20) * (Y1 - Y0);
+      const double fx = 0.02 + 0.3 * i / 20, fy = 0.04 + 0.3 * j / 20;
+      const double x = sx > 0 ? X0 + fx * (X1 - X0) : X1 - fx * (X1 - X0) - kerW / pv.scale(),
+                   y = sy > 0 ? Y0 + fy * (Y1 - Y0) : Y1 - fy * (Y1 - Y0);
       const double c = std::min(placer.clearance(kerBox(x, y)), 12.0) - 0.001 * (i + j);
       if (c > bestC) bestC = c, tx = x, ty = y;
     }
   placer.box(kerBox(tx, ty));
-  const double tailx = tx + (kerW + 0.3 * fs.em) / pv.scale(), taily = ty + 0.3 * fs.em / pv.scale();
+  // The arrow's tail: beside the text's end nearer the kernel, a little above (below) it.
+  const double tailx = sx > 0 ? tx + (kerW + 0.3 * fs.em) / pv.scale() : tx - 0.3 * fs.em / pv.scale(),
+               taily = ty + sy * (sy > 0 ? 0.3 : 0.7) * fs.em / pv.scale();
   placer.segment(tailx, taily, ax, ay, 1.5 * lw);
   // Corner labels, then x's, then ker(Σ)'s (its place is fixed: it only has to be clear).
   // Each label attached to its point: no edge or sight line between them.
@@ -243,8 +235,13 @@ void figure22(const ch::Options& o) {
     // Attached where a clear spot is; else the nearest clear spot (a label never on a line).
     ch::LabelPlacer trial = placer;
     auto [lx, ly] = trial.placeAttached(P[j].x, P[j].y, name, drawn, away, 4);
-    if (trial.lastClearance() >= 1) placer = trial;
-    else std::tie(lx, ly) = placer.place(P[j].x, P[j].y, name, away);
+    if (trial.lastClearance() >= 1) {
+      placer = trial;
+      score += std::hypot(lx - P[j].x, ly - P[j].y) * pv.scale() > 1.5 * fs.em;
+    } else {
+      std::tie(lx, ly) = placer.place(P[j].x, P[j].y, name, away);
+      score += 100;
+    }
     labels += num(lx) + " " + num(ly) + " " + ch::quoted(name) + "\n";
   }
   {
@@ -263,20 +260,63 @@ void figure22(const ch::Options& o) {
     for (std::size_t j = 0; j < P.size(); ++j) sides.push_back({P[j].x, P[j].y, P[(j + 1) % P.size()].x, P[(j + 1) % P.size()].y});
     ch::LabelPlacer trial = placer;
     auto [lx, ly] = trial.placeAttached(x.x, x.y, name, sides, gapMid * 180 / M_PI, 3, 2.5);
-    if (trial.lastClearance() >= 1) placer = trial;
-    else std::tie(lx, ly) = placer.place(x.x, x.y, name, gapMid * 180 / M_PI);
-    ch::writeOut(o, "fig2_2_xlabel.dat", num(lx) + " " + num(ly) + " " + ch::quoted(name) + "\n");
+    if (trial.lastClearance() >= 1) {
+      placer = trial;
+      score += std::hypot(lx - x.x, ly - x.y) * pv.scale() > 1.5 * fs.em;
+    } else {
+      std::tie(lx, ly) = placer.place(x.x, x.y, name, gapMid * 180 / M_PI);
+      score += 100;
+    }
+    if (o) ch::writeOut(*o, "fig2_2_xlabel.dat", num(lx) + " " + num(ly) + " " + ch::quoted(name) + "\n");
   }
-  ch::writeOut(o, "fig2_2_view.gp", ch::fmt("X0 = %.10g; X1 = %.10g; Y0 = %.10g; Y1 = %.10g\n", X0, X1, Y0, Y1) +
+  if (o) ch::writeOut(*o, "fig2_2_view.gp", ch::fmt("X0 = %.10g; X1 = %.10g; Y0 = %.10g; Y1 = %.10g\n", X0, X1, Y0, Y1) +
                                        "VIEW = \"" + pv.gnuplot() + "\"\n" +
                                        ch::fmt("AX = %.10g; AY = %.10g; TX = %.10g; TY = %.10g; TAILX = %.10g; TAILY = %.10g\n", ax, ay, tx, ty, tailx, taily) +
                                        "KER = \"" + kerName + "\"\n");
-  ch::writeOut(o, "fig2_2_polygon.dat", poly);
-  ch::writeOut(o, "fig2_2_kernel.dat", ker);
-  ch::writeOut(o, "fig2_2_sight.dat", sight);
-  ch::writeOut(o, "fig2_2_lines.dat", lines);
-  ch::writeOut(o, "fig2_2_labels.dat", labels);
-  ch::writeOut(o, "fig2_2_x.dat", num(x.x) + " " + num(x.y) + "\n");
+  if (o) ch::writeOut(*o, "fig2_2_polygon.dat", poly);
+  if (o) ch::writeOut(*o, "fig2_2_kernel.dat", ker);
+  if (o) ch::writeOut(*o, "fig2_2_sight.dat", sight);
+  if (o) ch::writeOut(*o, "fig2_2_lines.dat", lines);
+  if (o) ch::writeOut(*o, "fig2_2_labels.dat", labels);
+  if (o) ch::writeOut(*o, "fig2_2_x.dat", num(x.x) + " " + num(x.y) + "\n");
+  return score;
+}
+
+void figure22(const ch::Options& o) {
+  // An irregular seven-pointed star (counter-clockwise), fixed corners.
+  const double outer[7] = {1.00, 0.86, 1.10, 0.95, 0.80, 1.05, 0.90};
+  const double inner[7] = {0.46, 0.52, 0.40, 0.55, 0.48, 0.43, 0.50};
+  std::vector<dt::Point2> P;
+  for (int k = 0; k < 7; ++k) {
+    const double a = 2 * M_PI * k / 7 + 0.2, b = a + M_PI / 7 + 0.06 * std::sin(3.0 * k);
+    P.push_back({outer[k] * std::cos(a), outer[k] * std::sin(a)});
+    P.push_back({inner[k] * std::cos(b) + 0.05, inner[k] * std::sin(b) - 0.03});
+  }
+  const std::vector<dt::Point2> K = dt::polygonKernel(P);
+  dt::Point2 x = {0, 0};
+  for (const auto& q : K) x.x += q.x / double(K.size()), x.y += q.y / double(K.size());
+  // x: a kernel point off the centre, so that the sight lines fan, chosen by score
+  // (figure22Layout): every label beside its point and clear, as near as that allows; among
+  // the centroid moved 0.15 to 0.6 of the way to each corner of the kernel (in order; the first
+  // best wins).
+  // ker(Σ)'s label goes in one of the view's corners, also by score.
+  const dt::Point2 c = x;
+  int best = 1 << 30, kerCorner = 0;
+  for (int corner = 0; corner < 4; ++corner)
+    for (const double t : {0.3, 0.15, 0.45, 0.6})
+      for (const dt::Point2& q : K) {
+        const dt::Point2 cand = {c.x + t * (q.x - c.x), c.y + t * (q.y - c.y)};
+        if (!dt::inOpenKernel(P, cand)) continue;
+        const int score = figure22Layout(P, K, cand, corner, nullptr);
+        if (score < best) best = score, x = cand, kerCorner = corner;
+      }
+  std::size_t seen = 0;
+  for (std::size_t j = 0; j < P.size(); ++j) seen += dt::seesCorner(P, x, j);
+  std::cout << "Figure 2.2: polygon of " << P.size() << " corners, kernel of " << K.size()
+            << " corners; the kernel point sees " << seen << "/" << P.size()
+            << " corners (exact test); in the open kernel: " << dt::inOpenKernel(P, x) << "\n";
+  std::cout << "Figure 2.2: the kernel point x chosen by score: " << best << " (100 per label not attached, 1 per label beyond 1.5 em)\n";
+  figure22Layout(P, K, x, kerCorner, &o);
   ch::runGnuplot(o, "fig2_2.gp");
 }
 
