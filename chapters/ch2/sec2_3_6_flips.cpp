@@ -194,6 +194,11 @@ void figureFlip(const ch::Options& o) {
       ch::writeOut(o, "flip_circle.dat", ch::fmt("%.10g %.10g %.10g\n", ax + ux, ay + uy, std::hypot(ux, uy)));
     }
     placer.segment(e0->x, e0->y, e1->x, e1->y, 3.5 * lw);
+    std::set<const dt::Vertex*> corners;  // every vertex: a label stays nearer its own than any
+    for (const dt::Face* h : T.finiteFaces())
+      for (const dt::Vertex* v : h->V) corners.insert(v);
+    for (const dt::Vertex* v : corners) placer.marker(v->x, v->y, 0.5 * lw);
+    const std::vector<ch::Seg> edges = ch::faceSegs(T.finiteFaces());
     std::ostringstream lab;
     lab.precision(17);
     std::string rows;
@@ -202,7 +207,14 @@ void figureFlip(const ch::Options& o) {
       const int before = d0.at(v), now = d1.at(v);
       std::string t = ch::mathText(names[i]) + ": " + std::to_string(after ? now : before);
       if (after) t += std::string(" (") + (now > before ? "+" : "\u2212") + std::to_string(std::abs(now - before)) + ")";
-      const auto [x, y] = placer.place(v->x, v->y, t);
+      // Beside its vertex (nearer it than any other vertex, no edge between) within 3 em (the
+      // label is 3 to 4 em wide), clear of every line; else the nearest clear spot.
+      ch::LabelPlacer trial = placer;
+      auto [x, y] = trial.placeAttached(v->x, v->y, t, edges, NAN, 4, 3.0);
+      if (trial.lastClearance() >= 1)
+        placer = trial;
+      else
+        std::tie(x, y) = placer.place(v->x, v->y, t);
       lab << "set label \"" << t << "\" at " << x << "," << y << " center front font sprintf(',%.1f', 0.85 * FS)\n";
       rows += ch::fmt("%.10g %.10g ", v->x, v->y) + ch::quoted(t) + ch::fmt(" %.10g %.10g\n", x, y);
     }
