@@ -879,3 +879,50 @@ TEST_CASE("figures geometry Figure 2.2 labels every corner and x beside its poin
   CHECK(joined(markerErrors(f)) == "");
   if (beyondRule(f) > 0) MESSAGE(f.name << ": " << beyondRule(f) << " label(s) beyond 1.5 em (crowded)");
 }
+
+TEST_CASE("figures geometry Figure 2.6 labels p_k p_j p_l and the super-vertices beside their points") {
+  // Panel (a): every edge of DT(S0 ∪ S), the super-vertices and p_k, p_j, p_l labelled; panel
+  // (b): the triangles kept and the missing triangle p_k p_j p_l, the three labelled. Every point
+  // of S is a point a label must not be nearer to.
+  const fs::path dir = programRun("sec2_2_bowyer_watson", "fig2_6");
+  const ch::FigureSize fs = ch::figureSize("fig2_6");
+  GFigure named;
+  readPoints(dir / "fig2_6_named.dat", named);
+  REQUIRE(named.points.size() == 3);
+  std::vector<GPoint> S;
+  std::istringstream pts(slurp(dir / "fig2_6_points.dat"));
+  for (double x, y; pts >> x >> y;) {
+    bool isNamed = false;
+    for (const GPoint& q : named.points) isNamed = isNamed || dist(q.x, q.y, x, y) < 1e-9;
+    if (!isNamed) S.push_back({x, y, "a point of S"});
+  }
+  auto labelsOf = [&](const fs::path& p) {  // lx ly "name"
+    GFigure g;
+    readPoints(p, g);
+    return g.points;
+  };
+  for (const std::string panel : {"PA", "PB"}) {
+    GFigure f;
+    f.name = "fig2_6 " + panel;
+    readView(viewLine(dir / "fig2_6_view.gp", panel), fs.W, f);
+    f.em = fs.em, f.marker = ch::pointRadius(fs, panel == "PA" ? 0.8 : 1.0);
+    f.points = named.points;
+    f.points.insert(f.points.end(), S.begin(), S.end());
+    if (panel == "PA") {
+      f.labels = labelsOf(dir / "fig2_6_labels_a.dat");
+      GFigure sup;
+      readPoints(dir / "fig2_6_super.dat", sup);  // x y "name" lx ly: the super-vertices
+      readLabels(dir / "fig2_6_super.dat", sup);
+      f.points.insert(f.points.end(), sup.points.begin(), sup.points.end());
+      f.labels.insert(f.labels.end(), sup.labels.begin(), sup.labels.end());
+      f.edges = readPolylines(dir / "fig2_6_all.dat");
+    } else {
+      f.labels = labelsOf(dir / "fig2_6_labels.dat");
+      f.edges = readPolylines(dir / "fig2_6_kept_edges.dat");
+      const std::vector<ch::Seg> missing = readPolylines(dir / "fig2_6_missing.dat");
+      f.edges.insert(f.edges.end(), missing.begin(), missing.end());
+    }
+    CHECK(joined(attachmentErrors(f)) == "");
+    if (beyondRule(f) > 0) MESSAGE(f.name << ": " << beyondRule(f) << " label(s) beyond 1.5 em (crowded)");
+  }
+}

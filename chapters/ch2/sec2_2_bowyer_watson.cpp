@@ -583,17 +583,31 @@ void figure26(const ch::Options& o) {
     placeB.marker(p[i], p[i + 1], ch::pointRadius(fs, 1.0));
   }
   for (int s = 0; s < 4; ++s) placeA.marker(bw.xy[2 * s], bw.xy[2 * s + 1], ch::pointRadius(fs, 1.3));
-  std::string labels;
+  // Each label beside its point: on its side of every edge of its panel, nearer it than any other
+  // point (placeAttached); only if no such spot is clear, the nearest clear spot.
+  std::vector<ch::Seg> edgesB = keptSegs;
+  for (const auto& [u, v] : std::vector<std::pair<int, int>>{{k, l}, {k, j}, {j, l}}) edgesB.push_back({p[2 * u], p[2 * u + 1], p[2 * v], p[2 * v + 1]});
+  auto attached = [](ch::LabelPlacer& placer, double x, double y, const std::string& text, const std::vector<ch::Seg>& edges) {
+    ch::LabelPlacer trial = placer;
+    const std::pair<double, double> at = trial.placeAttached(x, y, text, edges, NAN, 4);
+    if (trial.lastClearance() >= 1) {
+      placer = trial;
+      return at;
+    }
+    return placer.place(x, y, text);
+  };
+  std::string labels, named;  // named: x y "name" of each labelled point of (b) (the tests read it)
   for (const auto& [idx, name] : std::vector<std::pair<int, std::string>>{{K, "p_k"}, {J, "p_j"}, {L, "p_l"}}) {
     const std::string text = ch::mathText(name);
-    const auto [lx, ly] = placeB.place(bw.xy[2 * idx], bw.xy[2 * idx + 1], text);
+    const auto [lx, ly] = attached(placeB, bw.xy[2 * idx], bw.xy[2 * idx + 1], text, edgesB);
     labels += num(lx) + " " + num(ly) + " " + ch::quoted(text) + "\n";
+    named += num(bw.xy[2 * idx]) + " " + num(bw.xy[2 * idx + 1]) + " " + ch::quoted(text) + "\n";
   }
   // Super-vertex labels of (a); in (b), p_{-1} is named where its crossing edge leaves the view.
   std::string superLabel, exitLabel;
   for (int s = 0; s < 4; ++s) {
     const std::string text = ch::mathText(pname(bw.ids[s]));
-    const auto [lx, ly] = placeA.place(bw.xy[2 * s], bw.xy[2 * s + 1], text);
+    const auto [lx, ly] = attached(placeA, bw.xy[2 * s], bw.xy[2 * s + 1], text, allSegs);
     superLabel += num(bw.xy[2 * s]) + " " + num(bw.xy[2 * s + 1]) + " " + ch::quoted(text) + " " + num(lx) + " " + num(ly) + " " +
                   (std::count(mi.superInCircle.begin(), mi.superInCircle.end(), s) ? "1" : "0") + "\n";
   }
@@ -601,7 +615,7 @@ void figure26(const ch::Options& o) {
   std::string labelsA;
   for (const auto& [idx, name] : std::vector<std::pair<int, std::string>>{{K, "p_k"}, {J, "p_j"}, {L, "p_l"}}) {
     const std::string text = ch::mathText(name);
-    const auto [lx, ly] = placeA.place(bw.xy[2 * idx], bw.xy[2 * idx + 1], text);
+    const auto [lx, ly] = attached(placeA, bw.xy[2 * idx], bw.xy[2 * idx + 1], text, allSegs);
     labelsA += num(lx) + " " + num(ly) + " " + ch::quoted(text) + "\n";
   }
   for (const auto& [a, b] : mi.crossing) {
@@ -630,6 +644,7 @@ void figure26(const ch::Options& o) {
   ch::writeOut(o, "fig2_6_labels.dat", labels);
   ch::writeOut(o, "fig2_6_labels_a.dat", labelsA);
   ch::writeOut(o, "fig2_6_super.dat", superLabel);
+  ch::writeOut(o, "fig2_6_named.dat", named);
   ch::writeOut(o, "fig2_6_exit.dat", exitLabel.empty() ? "NaN NaN NaN NaN x\n" : exitLabel);
   ch::writeOut(o, "fig2_6_crossing.dat", crossing);
   ch::writeOut(o, "fig2_6_view.gp", "PA = \"" + pa.gnuplot() + "\"\nPB = \"" + pb.gnuplot() + "\"\n");
