@@ -17,8 +17,10 @@
 #include "degenerate.h"
 #include "fast_delaunay.h"
 #include "fast_parallel.h"
+#include "fast_split.h"
 #include "generators.h"
 #include "hilbert.h"
+#include "predicates.h"
 #include "support.h"
 #include "triangulate.h"
 
@@ -51,9 +53,11 @@ dt::FastResult parallelChecked(const dttest::XY& p, int threads, int minPiece,
 }  // namespace
 
 TEST_CASE("parallel the same triangulation as the sequential kernel in general position") {
-  // Small pieces and more threads than cores make the threads meet (and defer) often. Both
-  // claims: slabs (the default) and locks.
-  for (dt::ParallelClaim claim : {dt::ParallelClaim::Slabs, dt::ParallelClaim::Locks}) {
+  // Small pieces and more threads than cores make the threads meet (and defer) often. The three
+  // designs: parts merged along their seams (the default; it never defers), and the shared
+  // triangulation's slabs and locks.
+  for (dt::ParallelClaim claim :
+       {dt::ParallelClaim::Parts, dt::ParallelClaim::Slabs, dt::ParallelClaim::Locks}) {
     std::uint64_t deferred = 0, concurrent = 0;
     for (std::size_t n : {3000u, 40000u, 200000u}) {
       const dttest::XY p = dttest::uniformPoints(n, 7 + n);
@@ -79,7 +83,9 @@ TEST_CASE("parallel the same triangulation as the sequential kernel in general p
     // points and 8 threads many do, but far from all (a claim that refused everything would
     // still give the right triangles, one thread doing all the work).
     CHECK(deferred < concurrent / 4);
-    MESSAGE((claim == dt::ParallelClaim::Slabs ? "slabs" : "locks")
+    if (claim == dt::ParallelClaim::Parts) CHECK(deferred == 0);
+    MESSAGE((claim == dt::ParallelClaim::Parts ? "parts"
+             : claim == dt::ParallelClaim::Slabs ? "slabs" : "locks")
             << ": insertions deferred " << deferred << " of " << concurrent);
   }
 }
@@ -97,6 +103,95 @@ TEST_CASE("parallel a Delaunay triangulation on every degenerate family") {
         CHECK(r.duplicates == seq.duplicates);
       }
   }
+}
+
+namespace {
+
+// Whether DT(S) is unique, from one Delaunay triangulation of S: no edge between two triangles
+// has the fourth point on the circle (exact incircle). Then every Delaunay triangulation of S
+// is this one.
+bool uniqueDelaunay(const dttest::XY& p, const Tris& tri) {
+  std::map<std::pair<int, int>, int> apex;  // directed edge a -> b: the third vertex of its triangle
+  for (const auto& t : tri)
+    for (int k = 0; k < 3; ++k) apex[{t[k], t[(k + 1) % 3]}] = t[(k + 2) % 3];
+  auto at = [&](int v, int c) { return p[2 * std::size_t(v) + std::size_t(c)]; };
+  for (const auto& t : tri)
+    for (int k = 0; k < 3; ++k) {
+      const auto other = apex.find({t[(k + 1) % 3], t[k]});
+      if (other == apex.end()) continue;
+      const int d = other->second;
+      if (dt::incircle(at(t[0], 0), at(t[0], 1), at(t[1], 0), at(t[1], 1), at(t[2], 0),
+                       at(t[2], 1), at(d, 0), at(d, 1)) == 0)
+        return false;
+    }
+  return true;
+}
+
+}  // namespace
+
+TEST_CASE("parallel the parts and their seam give DT(S) on every degenerate family") {
+  // Each family at 2, 3 and 8 threads, the parts forced (mode Always): the result is validated
+  // exactly, has the sequential kernel's triangles where DT(S) is unique, else its number of
+  // triangles, and the same merged duplicates. Where a slab's points are collinear or the seam
+  // cannot be merged, the sequential kernel runs and the reason says so.
+  int merged = 0, fallbacks = 0, uniqueSets = 0;
+  for (const dtdeg::Family& f : dtdeg::families()) {
+    CAPTURE(f.name);
+    const dt::FastResult seq = dt::fastDelaunay(f.points);
+    const bool unique = uniqueDelaunay(f.points, seq.tri);
+    uniqueSets += unique;
+    for (int threads : {2, 3, 8}) {
+      CAPTURE(threads);
+      dt::ParallelStats ps;
+      const dt::FastResult r = parallelChecked(f.points, threads, 8, &ps, dt::ParallelClaim::Parts);
+      CHECK(r.tri.size() == seq.tri.size());
+      CHECK(r.duplicates == seq.duplicates);
+      if (unique) CHECK(canonical(r.tri) == canonical(seq.tri));
+      if (ps.reason == dt::ParallelReason::Concurrent) {
+        ++merged;
+        CHECK(ps.threadsUsed == threads);
+        CHECK(ps.borderPoints > 0);
+      } else {
+        ++fallbacks;
+        CHECK(ps.reason == dt::ParallelReason::SeamNotMerged);
+        CHECK(ps.threadsUsed == 1);
+      }
+    }
+  }
+  MESSAGE("parts merged " << merged << " times, fell back " << fallbacks << " times; "
+                          << uniqueSets << " families with a unique DT(S)");
+  // The merge itself ran on most of them (cocircular grids included), not only the fallback.
+  CHECK(merged >= 2 * fallbacks);
+  CHECK(uniqueSets >= 3);
+}
+
+TEST_CASE("parallel a disk is inside a slab only when it is") {
+  // Circles with exact centres and radii: the integer points (3, 4), (5, 0), (-4, -3) of the
+  // circle of radius 5 about the origin, scaled by powers of two (exact) and moved.
+  for (int e : {-1000, -600, -100, 0, 100, 600, 900}) {
+    for (double cx : {0.0, 7.0, -1e6}) {
+      CAPTURE(e);
+      CAPTURE(cx);
+      const double s = std::ldexp(1.0, e), c = cx * s;
+      const double a[2] = {c + 3 * s, 4 * s}, b[2] = {c + 5 * s, 0}, d[2] = {c - 4 * s, -3 * s};
+      const double left = c - 5 * s, right = c + 5 * s;  // the disk's extent in x
+      // Well inside: true. Touching either side, or cut: false.
+      CHECK(dt::fast::diskInSlab(a, b, d, left - 1e-6 * s, right + 1e-6 * s));
+      CHECK(dt::fast::diskInSlab(a, b, d, -HUGE_VAL, right + 1e-6 * s));
+      CHECK(dt::fast::diskInSlab(a, b, d, left - 1e-6 * s, HUGE_VAL));
+      CHECK_FALSE(dt::fast::diskInSlab(a, b, d, left, right + 1e-6 * s));
+      CHECK_FALSE(dt::fast::diskInSlab(a, b, d, left - 1e-6 * s, right));
+      CHECK_FALSE(dt::fast::diskInSlab(a, b, d, left - 1e-6 * s, c));
+      CHECK_FALSE(dt::fast::diskInSlab(a, b, d, c, HUGE_VAL));
+      // The vertices in the other order (clockwise): the same disk.
+      CHECK(dt::fast::diskInSlab(a, d, b, left - 1e-6 * s, right + 1e-6 * s));
+      CHECK_FALSE(dt::fast::diskInSlab(a, d, b, left - 1e-6 * s, right));
+    }
+  }
+  // A sliver (its centre moves far with a rounding) and a value that is not finite: not judged.
+  const double p[2] = {0, 0}, q[2] = {1, 1e-9}, r[2] = {2, 0}, inf[2] = {HUGE_VAL, 0};
+  CHECK_FALSE(dt::fast::diskInSlab(p, q, r, -HUGE_VAL, 1e300));
+  CHECK_FALSE(dt::fast::diskInSlab(p, q, inf, -1e300, 1e300));
 }
 
 TEST_CASE("parallel the sort with several threads gives the sequential order") {

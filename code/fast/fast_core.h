@@ -742,6 +742,38 @@ constexpr bool countsInRecord(long) {
   return false;
 }
 
+/// The insertions of a one-thread run on the store S of n points (S.INF = n): the first
+/// triangle f, then points 1..n-1 in order with the policies Pred, Walk and Link; a duplicate
+/// goes to dups as (point, vertex it duplicates). tick(i) is called before point i when i is a
+/// multiple of `every` (the progress report; every = -1: never). fastDelaunay's loop, and each
+/// part's loop of the divide-and-merge kernel (fast_split.cpp).
+template <class Pred, class Walk = VisibilityWalk, class Link = RingLink, class Tick>
+void insertAlone(Store& S, const FirstTriangle& f, Pred pred, const Build& how, FastStats& st,
+                 std::vector<std::pair<int, int>>& dups, std::size_t every, Tick tick) {
+  if (f.ccw)
+    S.init(0, f.i1, f.i2);
+  else
+    S.init(0, f.i2, f.i1);
+  MarkClaim claim(S);  // its marks are freed on return
+  Inserter<Pred, PlainAccess, MarkClaim, Walk, Link> K(S, claim, pred, st);
+  K.ringStart = how.ringStart;
+  st.insertions = 3;
+  st.x86_64_v3 = how.v3;
+  const int n = S.INF;
+  std::size_t next = every;
+  inBuild(how.v3, [&] {
+    for (int i = 1; i < n; ++i) {
+      if (__builtin_expect(std::size_t(i) == next, 0)) {
+        tick(i);
+        next += every;
+      }
+      if (i == f.i1 || i == f.i2) continue;
+      int d = -1;
+      if (K.insert(i, d) == decltype(K)::Duplicate) dups.emplace_back(i, d);
+    }
+  });
+}
+
 template <class Pred, class Walk = VisibilityWalk, class Link = RingLink>
 FastResult oneThread(const std::vector<double>& xy, const FastOptions& opt, const Build& how) {
   checkInput(xy, "fastDelaunay");
@@ -754,37 +786,18 @@ FastResult oneThread(const std::vector<double>& xy, const FastOptions& opt, cons
   const int n = int(o.orig.size());
   const FirstTriangle f = firstTriangle(P, n);
   Store S(P.data(), n, slotsFor(std::size_t(n)), 1, std::move(o.memA));
-  if (f.ccw)
-    S.init(0, f.i1, f.i2);
-  else
-    S.init(0, f.i2, f.i1);
-  MarkClaim claim(S);
   Pred pred = [&] {
     if constexpr (countsInRecord<Pred>(0))
       return Pred{&res.stats};
     else
       return Pred{};
   }();
-  Inserter<Pred, PlainAccess, MarkClaim, Walk, Link> K(S, claim, pred, res.stats);
-  K.ringStart = how.ringStart;
-  res.stats.insertions = 3;
   std::vector<std::pair<int, int>> dups;  // (point, vertex it duplicates), insertion numbers
-  const std::size_t every = std::max<std::size_t>(1, opt.progressEvery);
-  std::size_t nextReport = opt.progress ? every : std::size_t(-1);
-  const bool v3 = res.stats.x86_64_v3 = how.v3;
-  inBuild(v3, [&] {
-    for (int i = 1; i < n; ++i) {
-      if (__builtin_expect(std::size_t(i) == nextReport, 0)) {
-        opt.progress(std::size_t(i), std::size_t(n), res.stats);
-        nextReport += every;
-      }
-      if (i == f.i1 || i == f.i2) continue;
-      int d = -1;
-      if (K.insert(i, d) == decltype(K)::Duplicate) dups.emplace_back(i, d);
-    }
+  const std::size_t every = opt.progress ? std::max<std::size_t>(1, opt.progressEvery) : std::size_t(-1);
+  insertAlone<Pred, Walk, Link>(S, f, pred, how, res.stats, dups, every, [&](int i) {
+    opt.progress(std::size_t(i), std::size_t(n), res.stats);
   });
   // Only the vertices of the triangles are kept: they become the output.
-  claim.freeMarks();
   S.freeAdjacency();
   finish(S.V, std::size_t(S.count.load()), n, P, o.orig, dups, opt.insertionNumbering, 1, res);
   res.stats.insertSeconds =

@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "fast_core.h"
+#include "fast_split.h"
 #include "generators.h"
 #include "hilbert.h"
 #include "errors.h"
@@ -138,6 +139,7 @@ const char* parallelReasonName(ParallelReason r) {
     case ParallelReason::TooFewPoints: return "too_few_points";
     case ParallelReason::SlabsDoNotSplit: return "slabs_do_not_split";
     case ParallelReason::SequentialOnly: return "sequential_order_or_kernel";
+    case ParallelReason::SeamNotMerged: return "seam_not_merged";
   }
   return "unknown";
 }
@@ -428,8 +430,29 @@ FastResult fastDelaunayParallel(const std::vector<double>& xy, int threads, cons
   }
   ps.reason = d.reason;
   ps.forecast = d.forecast;
-  FastResult res = d.threads > 1 ? runShared(xy, d.threads, opt, ps, minPiece, claim, fast::hasV3())
-                                 : fastDelaunay(xy, opt);
+  FastResult res;
+  if (d.threads > 1 && claim == ParallelClaim::Parts) {
+    fast::checkInput(xy, "fastDelaunayParallel");
+    const int threadsUsed = std::min(d.threads, fast::kMaxThreads);
+    fast::SplitReport rep;
+    res = fast::splitAndMerge(xy, threadsUsed, opt, fast::hasV3(), rep);
+    ps.concurrentSeconds = ps.parallelSeconds = rep.partsSeconds;
+    ps.busySeconds = rep.busySeconds;
+    ps.loneSeconds = rep.mergeSeconds;
+    ps.finishSeconds = rep.finishSeconds;
+    ps.borderPoints = rep.border;
+    if (rep.merged) {
+      ps.threadsUsed = threadsUsed;
+      ps.parallelPoints = xy.size() / 2;
+    } else {
+      ps.reason = ParallelReason::SeamNotMerged;
+      res = fastDelaunay(xy, opt);
+    }
+  } else if (d.threads > 1) {
+    res = runShared(xy, d.threads, opt, ps, minPiece, claim, fast::hasV3());
+  } else {
+    res = fastDelaunay(xy, opt);
+  }
   if (pstats) *pstats = ps;
   return res;
 }
@@ -437,6 +460,8 @@ FastResult fastDelaunayParallel(const std::vector<double>& xy, int threads, cons
 
 FastResult fastDelaunaySharedCoreAlone(const std::vector<double>& xy, const FastOptions& opt,
                                        ParallelStats* pstats, ParallelClaim claim) {
+  if (claim == ParallelClaim::Parts)
+    throw std::invalid_argument("fastDelaunaySharedCoreAlone: the claim Parts shares no triangulation");
   ParallelStats ps;
   ps.reason = ParallelReason::Concurrent;  // the shared machinery's rounds, by one thread
   FastResult res = runShared(xy, 1, opt, ps, 2048, claim, fast::hasV3());

@@ -25,6 +25,8 @@ enum class ParallelReason {
   TooFewPoints,    ///< "too_few_points": fewer than ParallelModel::minPointsPerThread per thread
   SlabsDoNotSplit, ///< "slabs_do_not_split": a sample's triangles cross the slab cuts too often
   SequentialOnly,  ///< "sequential_order_or_kernel": an order or kernel that has no parallel form
+  SeamNotMerged,   ///< "seam_not_merged": a part was degenerate or the seam did not merge; the
+                   ///< sequential kernel ran after the parts (ParallelClaim::Parts)
 };
 
 /// The name of a reason: lower case, words joined by '_' (the enum's documentation gives each).
@@ -88,12 +90,17 @@ struct ParallelStats {
   double concurrentSeconds = 0;  ///< wall time of the concurrent rounds' pieces (the slabs' cuts included)
   double busySeconds = 0;        ///< the threads' time inside their pieces, summed over the threads
   double finishSeconds = 0;      ///< the output (fast::finish)
+  // Parts only: the seam's points (the set B of book/parallel.md) and the merge's wall time;
+  // concurrentSeconds is then the parts' wall time, loneSeconds the merge's.
+  std::uint64_t borderPoints = 0;  ///< points re-triangulated along the seams
 };
 
-/// How the threads of a concurrent round keep out of each other's triangles (parallel page).
+/// How the threads share the work (parallel page). Parts, the default, is divide and merge;
+/// Slabs and Locks are the two designs of one shared triangulation, kept for the comparison.
 enum class ParallelClaim {
-  Slabs,  ///< each thread owns a slab of the plane and takes only triangles inside it: no atomics
-  Locks,  ///< a try-lock (compare-and-swap) per triangle read or written
+  Parts,  ///< each thread triangulates one slab's points alone; one thread merges the seams
+  Slabs,  ///< shared: each thread owns a slab of the plane and takes only triangles inside it
+  Locks,  ///< shared: a try-lock (compare-and-swap) per triangle read or written
 };
 
 /// The machine's hardware threads (at least 1): what `--threads auto` asks for, and the most the
@@ -104,31 +111,39 @@ int defaultThreadCount();
 /// With mode WherePays (the default) the cost model (decideThreads, ParallelModel) picks the
 /// number: at most the machine's hardware threads, and the sequential kernel (fastDelaunay
 /// itself) below the model's size or where the slabs would not split; pstats says which and
-/// why. threads <= 1 calls fastDelaunay(xy, opt). With more than one thread the small first
-/// BRIO rounds (opt.order
-/// must be InsertionOrder::Brio) are inserted by one thread, and each larger round is shared
-/// among the threads (claim: Slabs, each thread the round's points in one slab of x, cut
-/// at the x-quantiles of a sample of the round, in Hilbert order; Locks, consecutive pieces of the round's
-/// Hilbert order), inserted concurrently; insertions that need another thread's triangles are
-/// redone by one thread after the round. The result is the
-/// exact DT(S) whenever it is unique (points in general position: then equal to fastDelaunay's),
-/// otherwise a Delaunay triangulation of S (checkDelaunay validates it); duplicates are merged
-/// into the smallest-numbered equal point, as fastDelaunay does; opt.insertionNumbering is
-/// honoured, and opt.progress is called by the calling thread only (during a concurrent round
-/// with estimated counts: its own piece's, times the number of threads). Same exceptions as
-/// fastDelaunay, and std::invalid_argument for another order when threads > 1. A round is
-/// inserted concurrently when each thread gets at least minPiece points of it (the tests make it
-/// small, and the mode Always, to make threads meet on small inputs).
+/// why. threads <= 1 calls fastDelaunay(xy, opt). opt.order must be InsertionOrder::Brio.
+/// With more than one thread:
+///  - claim Parts (the default): the points are cut into one slab of x per thread (at the
+///    x-quantiles of a sample); each thread triangulates its slab's points, in the run's order,
+///    with the one-thread core; the triangles whose circumdisk lies inside their slab are kept,
+///    and one thread triangulates the vertices of the others (the set B) and keeps the triangles
+///    of DT(B) outside the kept ones. If a slab's points are all on a line, or the seam does not
+///    separate DT(B) as it must, the sequential kernel runs (reason SeamNotMerged);
+///  - claims Slabs and Locks (one shared triangulation): the small first BRIO rounds are
+///    inserted by one thread, and each larger round is shared among the threads (Slabs: each
+///    thread the round's points in one slab of x; Locks: consecutive pieces of the round's
+///    Hilbert order), inserted concurrently; insertions that need another thread's triangles
+///    are redone by one thread after the round. A round is inserted concurrently when each
+///    thread gets at least minPiece points of it (the tests make it small).
+/// The result is the exact DT(S) whenever it is unique (points in general position: then the
+/// same triangles as fastDelaunay's, perhaps in another order), otherwise a Delaunay
+/// triangulation of S (checkDelaunay validates it); duplicates are merged into the
+/// smallest-numbered equal point, as fastDelaunay does; opt.insertionNumbering is honoured, and
+/// opt.progress is called by the calling thread only, with estimated counts (its own part's or
+/// piece's, times the number of threads). Same exceptions as fastDelaunay, and
+/// std::invalid_argument for another order when threads > 1. The mode Always runs the threads
+/// whatever the size and the input (the tests, to make threads meet on small inputs).
 FastResult fastDelaunayParallel(const std::vector<double>& xy, int threads,
                                 const FastOptions& opt = {}, ParallelStats* pstats = nullptr,
-                                int minPiece = 2048, ParallelClaim claim = ParallelClaim::Slabs,
+                                int minPiece = 2048, ParallelClaim claim = ParallelClaim::Parts,
                                 ParallelMode mode = ParallelMode::WherePays);
 
 /// The parallel kernel's machinery run by one thread, for measurement: the same rounds, relaxed
 /// atomic access, claim (one slab, the whole plane, or the locks) and deferred insertions as
 /// fastDelaunayParallel, with no second thread. Its time against fastDelaunay's is what sharing
 /// costs by itself, apart from what a second thread adds (bench_parallel's budget table).
-/// Same result and exceptions as fastDelaunayParallel.
+/// Same result and exceptions as fastDelaunayParallel; claim Parts is refused
+/// (std::invalid_argument: it has no shared machinery).
 FastResult fastDelaunaySharedCoreAlone(const std::vector<double>& xy, const FastOptions& opt = {},
                                        ParallelStats* pstats = nullptr,
                                        ParallelClaim claim = ParallelClaim::Slabs);
