@@ -74,7 +74,7 @@ const char* kUsage =
     "                 they pay (--stats prints threads_requested, threads_used and\n"
     "                 threads_reason), and never more than the CPUs the process may run\n"
     "                 on (capped, with a note); a Delaunay DT(S), on cocircular points\n"
-    "                 possibly another from run to run\n"
+    "                 possibly another than one thread's (the same on every run)\n"
     "  --progress     report progress on stderr (default: only when stderr is a terminal)\n"
     "  --no-progress  never report progress\n"
     "  -h, --help     this help\n"
@@ -100,8 +100,8 @@ struct Options {
   // -o names a stream ('-', /dev/null, a named pipe, /dev/stdout): the .ele is written into it.
   bool eleIntoOut = false;
   // --threads N (fast kernel, BRIO order). Default 1: on cocircular points two threads may
-  // return another Delaunay triangulation from run to run, the sequential kernel always the
-  // same one (the book's "parallel" page); more threads are used only where they pay.
+  // return another Delaunay triangulation than one thread (the same one on every run: the
+  // book's "parallel" page); more threads are used only where they pay.
   int threads = 1;
 };
 

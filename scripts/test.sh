@@ -12,7 +12,7 @@ cmake --build build -j"$(nproc)"
 ctest --test-dir build --output-on-failure -j"$(nproc)" | tee -a "$log"
 # Issue 10: the same tests built with AddressSanitizer and UndefinedBehaviorSanitizer (the CLI
 # too: the tests run build-asan/delaunay2d); any report aborts its test. Then a short fuzz run.
-# DT_SKIP_SANITIZERS=1 skips both (a quick local run). test_exercises is left out of the
+# DT_SKIP_SANITIZERS=1 skips them all (a quick local run). test_exercises is left out of the
 # sanitizer run: it builds and runs a student's copy of the project with scripts/exercise.sh
 # (shell machinery, already run once above), which would take minutes more for nothing new;
 # so is the book layout check's self-test (a shell script and a browser: no compiled code).
@@ -22,6 +22,12 @@ if [ "${DT_SKIP_SANITIZERS:-0}" != 1 ]; then
   ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
     ctest --test-dir build-asan --output-on-failure -j"$(nproc)" -E '^(test_exercises|test_exercises_class|book_layout_check_self_test)$' | tee -a "$log"
   bash scripts/fuzz.sh "${DT_FUZZ_SECONDS:-60}"
+  # The parallel kernel's tests under ThreadSanitizer (the library and the suite built with it;
+  # the command-line tests are left out: they run the CLI of the release build). A report
+  # fails the run.
+  cmake -S . -B build-tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDT_TSAN=ON > /dev/null
+  cmake --build build-tsan -j"$(nproc)" --target dt_tests
+  TSAN_OPTIONS=halt_on_error=1:abort_on_error=1 build-tsan/dt_tests -tc='parallel*' -tce='*command line*'
 fi
 # ctest's own summaries ("N% tests passed, F tests failed out of T"), added up.
 awk '/tests passed, [0-9]+ tests failed out of/ { f += $(NF-4); t += $NF }

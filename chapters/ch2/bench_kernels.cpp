@@ -176,7 +176,7 @@ long triangulate(Method m, const std::vector<double>& xy, std::vector<dt::Tri>& 
     const int threads = m == Method::Fast ? 1 : dt::defaultThreadCount();
     const dt::ParallelMode mode =
         m == Method::FastForced ? dt::ParallelMode::Always : dt::ParallelMode::WherePays;
-    tri = dt::fastDelaunayParallel(xy, threads, {}, &ps, 2048, dt::ParallelClaim::Slabs, mode).tri;
+    tri = dt::fastDelaunayParallel(xy, threads, {}, &ps, 2048, dt::ParallelClaim::Parts, mode).tri;
     return long(tri.size());
   }
   if (m == Method::Listings) {

@@ -126,8 +126,9 @@ void validate(const std::vector<double>& xy, const std::vector<dt::Tri>& tri) {
   if (!c.ok) throw std::runtime_error("the triangulation fails the exact check: " + c.error);
 }
 
-// One triangulation of n uniform points with `threads` threads (0: CGAL; -3: 2 threads that
-// claim triangles with locks instead of slabs), validated if `check`.
+// One triangulation of n uniform points with `threads` threads (0: CGAL; a positive count: the
+// parts and their seam, the default design; -3 and -4: 2 threads on one shared mesh, claiming
+// triangles with locks or with slabs), validated if `check`.
 // out: wall, CPU, triangles, deferred insertions, concurrent points, peak MB.
 void threadsJob(std::size_t n, int threads, bool check, double* out) {
   const std::vector<double> xy = dt::uniformPoints(n, 2026);
@@ -152,9 +153,9 @@ void threadsJob(std::size_t n, int threads, bool check, double* out) {
   dt::ParallelStats ps;
   const dt::ParallelMode always = dt::ParallelMode::Always;
   const dt::FastResult r =
-      threads == -3
-          ? dt::fastDelaunayParallel(xy, 2, {}, &ps, 2048, dt::ParallelClaim::Locks, always)
-          : dt::fastDelaunayParallel(xy, threads, {}, &ps, 2048, dt::ParallelClaim::Slabs, always);
+      threads == -3   ? dt::fastDelaunayParallel(xy, 2, {}, &ps, 2048, dt::ParallelClaim::Locks, always)
+      : threads == -4 ? dt::fastDelaunayParallel(xy, 2, {}, &ps, 2048, dt::ParallelClaim::Slabs, always)
+                      : dt::fastDelaunayParallel(xy, threads, {}, &ps, 2048, dt::ParallelClaim::Parts, always);
   out[0] = wallNow() - w0;
   out[1] = cpuNow() - c0;
   out[2] = double(r.tri.size());
@@ -176,7 +177,7 @@ void modelJob(std::size_t n, double width, int threads, bool check, double* out)
   const double w0 = wallNow(), c0 = cpuNow();
   const dt::FastResult r =
       threads == 1 ? dt::fastDelaunay(xy)
-                   : dt::fastDelaunayParallel(xy, threads, {}, nullptr, 2048, dt::ParallelClaim::Slabs,
+                   : dt::fastDelaunayParallel(xy, threads, {}, nullptr, 2048, dt::ParallelClaim::Parts,
                                               dt::ParallelMode::Always);
   out[0] = wallNow() - w0;
   out[1] = cpuNow() - c0;
@@ -202,11 +203,11 @@ void pairJob(std::size_t n, double* out) {
 }
 
 // The runs of the time budget (where the wall time goes, at the first n): the sequential
-// kernel, the parallel machinery on one thread (fastDelaunaySharedCoreAlone) with each claim,
-// and two threads with each claim.
-enum class Budget { Sequential, AloneSlabs, AloneLocks, TwoSlabs, TwoLocks };
+// kernel, the shared mesh's machinery on one thread (fastDelaunaySharedCoreAlone) with each
+// claim, two threads with each claim, and two threads with the parts and their seam.
+enum class Budget { Sequential, AloneSlabs, AloneLocks, TwoSlabs, TwoLocks, TwoParts };
 constexpr Budget kBudgetRuns[] = {Budget::Sequential, Budget::AloneSlabs, Budget::AloneLocks,
-                                  Budget::TwoSlabs, Budget::TwoLocks};
+                                  Budget::TwoSlabs, Budget::TwoLocks, Budget::TwoParts};
 // Slots of budgetJob's out.
 enum BudgetSlot { bWall, bCpu, bSort, bInsert, bLone, bConcurrent, bBusy, bFinish, bDeferred,
                   bParallelPoints, bTriangles, bWalkSteps, bInsertions };
@@ -217,7 +218,8 @@ void budgetJob(std::size_t n, Budget run, bool check, double* out) {
   const std::vector<double> xy = dt::uniformPoints(n, 2026);
   const dt::ParallelClaim claim = run == Budget::AloneLocks || run == Budget::TwoLocks
                                       ? dt::ParallelClaim::Locks
-                                      : dt::ParallelClaim::Slabs;
+                                  : run == Budget::TwoParts ? dt::ParallelClaim::Parts
+                                                            : dt::ParallelClaim::Slabs;
   dt::ParallelStats ps;
   const double w0 = wallNow(), c0 = cpuNow();
   const dt::FastResult r = run == Budget::Sequential ? dt::fastDelaunay(xy)
@@ -356,7 +358,8 @@ ThreadRuns measureThreads(const Run& s, std::size_t n) {
   // and two threads are measured.
   const bool pair = std::count(runs.begin(), runs.end(), 1) && std::count(runs.begin(), runs.end(), 2);
   if (pair) runs.push_back(-2);
-  if (pair) runs.push_back(-3);  // the same two threads with a lock per triangle
+  if (pair) runs.push_back(-3);  // two threads on one shared mesh, a lock per triangle
+  if (pair) runs.push_back(-4);  // two threads on one shared mesh, slabs
   if (haveCgal) runs.push_back(0);
   std::vector<std::vector<double>> best(runs.size());
   // Alternate the runs (all kernels once, then again): a burst of load hits them all.
@@ -415,7 +418,7 @@ void sayParallelVerdict(std::ostream& pv, const ThreadRuns& r) {
 void setParallelValues(ch::Values& values, const ThreadRuns& r) {
   const std::size_t n = r.n;
   const std::vector<double>*seq = r.of(1), *two = r.of(2), *pairRun = r.of(-2), *lockRun = r.of(-3),
-                            *cg = r.of(0);
+                            *slabRun = r.of(-4), *cg = r.of(0);
   const bool both = seq && two;
   values.set("par.n", std::to_string(n));
   values.set("par.load", loadAverage());
@@ -448,10 +451,17 @@ void setParallelValues(ch::Values& values, const ThreadRuns& r) {
   values.set("par.locks_wall_ratio2", lk ? ch::fmt("%.2f", (*lockRun)[0] / (*seq)[0]) : "(not measured)");
   values.set("par.locks_cpu_extra2",
              lk ? ch::fmt("%.0f%%", 100 * ((*lockRun)[1] / (*seq)[1] - 1)) : "(not measured)");
+  const bool sl = slabRun && seq;
+  values.set("par.slabs_wall_ratio2", sl ? ch::fmt("%.2f", (*slabRun)[0] / (*seq)[0]) : "(not measured)");
   values.set("par.slabs_vs_locks",
-             !(lk && two) ? "was not measured"
-             : (*two)[1] < (*lockRun)[1] ? "took less CPU time than the locks"
-                                         : "did not take less CPU time than the locks");
+             !(lk && sl) ? "was not measured"
+             : (*slabRun)[1] < (*lockRun)[1] ? "took less CPU time than the locks"
+                                             : "did not take less CPU time than the locks");
+  values.set("par.parts_vs_shared",
+             !(lk && sl && two) ? "was not measured"
+             : (*two)[0] < std::min((*slabRun)[0], (*lockRun)[0])
+                 ? "took less wall time than both designs of the shared mesh"
+                 : "did not take less wall time than both designs of the shared mesh");
   values.set("par.cpu_extra2",
              ceil ? ch::fmt("%.0f%%", 100 * ((*two)[1] / (*seq)[1] - 1)) : "(not measured)");
 }
@@ -464,13 +474,14 @@ void addParallelRows(ch::Table& t, const ThreadRuns& r) {
   for (std::size_t j = 0; j < runs.size(); ++j) {
     const std::vector<double>& r = best[j];
     const bool cgal = runs[j] == 0;
-    const bool twice = runs[j] == -2, locks = runs[j] == -3;
+    const bool twice = runs[j] == -2, locks = runs[j] == -3, slabs = runs[j] == -4;
     t.add({std::to_string(n),
            cgal ? "CGAL 2D"
                 : twice ? "fast (sequential): two runs at once"
-                : locks ? "fast parallel, locks"
-                        : (runs[j] == 1 ? "fast (sequential)" : "fast parallel"),
-           cgal ? "1" : twice ? "2 x 1" : locks ? "2" : std::to_string(runs[j]), ch::fmt("%.3f", r[0]),
+                : locks ? "fast parallel, shared mesh, locks"
+                : slabs ? "fast parallel, shared mesh, slabs"
+                        : (runs[j] == 1 ? "fast (sequential)" : "fast parallel, parts and seam"),
+           cgal ? "1" : twice ? "2 x 1" : locks || slabs ? "2" : std::to_string(runs[j]), ch::fmt("%.3f", r[0]),
            ch::fmt("%.3f", r[1]),
            cg ? ch::fmt("%.2f", r[0] / (*cg)[0]) : "-", cg ? ch::fmt("%.2f", r[1] / (*cg)[1]) : "-",
            cgal || twice || runs[j] == 1 ? "-" : ch::fmt("%.3f", 100 * r[3] / std::max(1.0, r[4])),
@@ -496,7 +507,10 @@ void tableParallel(const Run& s, ch::Values& values) {
               std::to_string(reps) + " (with that run's CPU time, all threads); the machine has " +
               std::to_string(hw) + " hardware threads; load average before / after: " +
               loadBefore + " / " + loadAverage() +
-              ". Deferred: concurrent insertions that met another thread's triangles (its lock, or a triangle "
+              ". Fast parallel, parts and seam: the default design, each thread triangulating one slab's "
+              "points alone, then the seam merged by one thread (nothing is deferred). Shared "
+              "mesh: the two earlier designs, all threads inserting into one triangulation. "
+              "Deferred: concurrent insertions that met another thread's triangles (its lock, or a triangle "
               "outside the thread's slab) and were redone "
               "alone. Checked: validated by dt::checkDelaunay. Two runs at once: two processes of "
               "the sequential kernel started together, each on all n points; wall time of the "
@@ -520,7 +534,8 @@ std::vector<std::vector<double>> measureBudget(const Run& s) {
   for (int k = 0; k < reps; ++k)
     for (std::size_t j = 0; j < kRuns; ++j) {
       const Budget run = kBudgetRuns[j];
-      if (!withTwo && (run == Budget::TwoSlabs || run == Budget::TwoLocks)) continue;
+      if (!withTwo && (run == Budget::TwoSlabs || run == Budget::TwoLocks || run == Budget::TwoParts))
+        continue;
       const std::vector<double> r = inChild([&](double* out) { budgetJob(n, run, k == 0, out); });
       if (r.empty()) throw std::runtime_error("a run of the time budget failed (n = " + std::to_string(n) + ")");
       if (b[j].empty() || r[bWall] < b[j][bWall]) b[j] = r;
@@ -542,16 +557,18 @@ void tableParallelBudget(const Run& s, const std::vector<std::vector<double>>& b
   bt.htmlParts = {{0, 1, 2, 3, 4, 5, 6}, {7, 8, 9, 10, 11}};
   // (No comma in a label or header: the .csv does not quote its cells.)
   const char* labels[] = {"sequential kernel", "shared core alone (slabs)", "shared core alone (locks)",
-                          "two threads (slabs)", "two threads (locks)"};
+                          "two threads (slabs)", "two threads (locks)", "two threads (parts and seam)"};
   auto ms = [](double v) { return v < 0 ? std::string("-") : ch::fmt("%.1f", 1000 * v); };
   for (std::size_t j = 0; j < kRuns; ++j) {
     if (b[j].empty()) continue;
     const std::vector<double>& r = b[j];
     const bool shared = j > 0, concurrent = r[bParallelPoints] > 0;
+    const bool parts = kBudgetRuns[j] == Budget::TwoParts;
     // The rest: what none of the kernel's clocks covers (the shared arrays' set-up, the
-    // claims, the call itself).
-    const double rest = shared ? r[bWall] - r[bSort] - r[bLone] - r[bConcurrent] - r[bFinish]
-                               : r[bWall] - r[bSort] - r[bInsert];
+    // claims, the call itself). The parts sort inside their own time.
+    const double rest = parts ? r[bWall] - r[bLone] - r[bConcurrent] - r[bFinish]
+                        : shared ? r[bWall] - r[bSort] - r[bLone] - r[bConcurrent] - r[bFinish]
+                                 : r[bWall] - r[bSort] - r[bInsert];
     bt.add({labels[j], ms(r[bWall]), ms(r[bSort]), ms(r[bInsert]), ms(r[bLone]), ms(r[bConcurrent]),
             ms(r[bBusy]), ms(r[bFinish]), ch::fmt("%.1f", 1000 * rest),
             !shared ? "1.00"
@@ -572,14 +589,19 @@ void tableParallelBudget(const Run& s, const std::vector<std::vector<double>>& b
                "the threads. Output: the final compaction. The rest: the wall time minus sort, "
                "lone, concurrent rounds and output (the set-up of the shared arrays). Busy per "
                "point: busy time per point of the concurrent rounds, over the sequential "
-               "kernel's time after the sort per point." + machineNote(hw);
+               "kernel's time after the sort per point. Two threads (parts and seam): sort is the "
+               "longest part's sort, inside the part's time; concurrent rounds is the parts' wall "
+               "time (gathering, sorting, inserting, sorting the triangles), busy the threads' time "
+               "in their parts, lone the seam (B and its triangulation, one thread), output the "
+               "writing of the triangles." + machineNote(hw);
   bt.emit(o, "table_parallel_budget");
 }
 
 void setBudgetValues(const Run& s, const std::vector<std::vector<double>>& b, ch::Values& values) {
   const std::size_t n = s.sizes.front();
   const int hw = s.hw;
-  const std::vector<double>&seq = b[0], &aloneS = b[1], &aloneL = b[2], &twoS = b[3], &twoL = b[4];
+  const std::vector<double>&seq = b[0], &aloneS = b[1], &aloneL = b[2], &twoS = b[3], &twoL = b[4],
+                            &twoP = b[5];
   // The budget's values. A perfect split: the concurrent rounds take the shared core's
   // one-thread busy time divided by the threads, everything else as measured with two
   // threads. With 4 or 8 threads this is a model, not a measurement.
@@ -594,6 +616,16 @@ void setBudgetValues(const Run& s, const std::vector<std::vector<double>>& b, ch
     return (two[bWall] - two[bConcurrent] + alone[bBusy] / k) / seq[bWall];
   };
   values.set("par.budget_n", std::to_string(n));
+  // The parts and their seam: the wall ratio, the seam's share of the wall time, and a model of
+  // 4 and 8 cores: the parts' busy time shared by k threads, the seam (one thread) grown with
+  // the k - 1 cuts, the output shared by k threads.
+  const bool ranP = !twoP.empty() && twoP[bParallelPoints] > 0;
+  values.set("par.budget_wall2_parts", ranP ? ch::fmt("%.2f", twoP[bWall] / seq[bWall]) : none);
+  values.set("par.budget_seam_parts", ranP ? pct(twoP[bLone] / twoP[bWall]) : none);
+  for (const auto& [k, key] : {std::pair{4.0, "par.budget_parts_k4"}, std::pair{8.0, "par.budget_parts_k8"}})
+    values.set(key, ranP ? ch::fmt("%.2f", (twoP[bBusy] / k + twoP[bLone] * (k - 1) + twoP[bFinish] * 2 / k) /
+                                               seq[bWall])
+                         : none);
   values.set("par.hw_threads", std::to_string(hw));
   values.set("par.budget_share_cost", pct(aloneS[bInsert] / seq[bInsert] - 1));
   values.set("par.budget_share_cost_locks", pct(aloneL[bInsert] / seq[bInsert] - 1));

@@ -1,11 +1,12 @@
 // Going further: the fast kernel on several cores, for inputs where one core's insertion time
-// dominates. The same Bowyer-Watson insertion as fast_delaunay.h (one core, fast_core.h, with
-// other policies), run by several threads on one shared triangulation. By default each thread
-// owns a slab of the plane for the round and takes only the triangles with all three vertices
-// in it, which no other thread can touch (no lock, no atomic read-modify-write); the other
-// claim locks every triangle an insertion reads or writes with a try-lock. An insertion that
-// cannot take a triangle it needs gives up and is redone after the round, alone. Why this
-// gives DT(S): book/parallel.md.
+// dominates. By default (ParallelClaim::Parts, fast_split.h) each thread triangulates the points
+// of one slab of x with the one-thread core, and one thread merges the parts along the cuts.
+// Two earlier designs run the same Bowyer-Watson insertion (fast_core.h, with other policies)
+// by several threads on one shared triangulation: each thread owns a slab of the plane for the
+// round and takes only the triangles with all three vertices in it (no lock), or locks every
+// triangle an insertion reads or writes with a try-lock; an insertion that cannot take a
+// triangle it needs gives up and is redone after the round, alone. Why each gives DT(S):
+// book/parallel.md.
 #pragma once
 
 #include <cstddef>
@@ -42,13 +43,14 @@ enum class ParallelMode {
 /// The cost model's inputs, measured on this project's benchmarks (the parallel page shows
 /// them and the table that checks them). A second thread pays only when (1) each thread gets
 /// at least minPointsPerThread points: below that the fixed costs of the threads (starting
-/// them, cutting the slabs, the first rounds alone, the deferred insertions) outweigh the
+/// them, gathering and sorting each part, the seam's triangulation, the output) outweigh the
 /// shared insertions; and (2) the slabs split the mesh: a sample of sampleSize points is
-/// triangulated by the sequential kernel and cut at the x-quantiles the rounds would use, and
-/// the share of its vertices on a triangle that crosses a cut (a stand-in for the insertions
-/// a slab would defer) is at most maxCutShareRatio times what uniform points give.
+/// triangulated by the sequential kernel and cut at the x-quantiles the parts would use, and
+/// the share of its vertices on a triangle that crosses a cut or on the hull (a stand-in for
+/// the seam's points B, which one thread triangulates again) is at most maxCutShareRatio times
+/// what uniform points give.
 struct ParallelModel {
-  static constexpr std::size_t minPointsPerThread = 300000;
+  static constexpr std::size_t minPointsPerThread = 50000;
   static constexpr std::size_t sampleSize = 2048;
   static constexpr double maxCutShareRatio = 3.0;
 };

@@ -4,6 +4,8 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <memory>
+#include <unordered_map>
 #include <unordered_set>
 
 #include "errors.h"
@@ -65,112 +67,176 @@ std::uint64_t edgeKey(int a, int b) {
   return std::uint64_t(std::uint32_t(a)) << 32 | std::uint32_t(b);
 }
 
-// The points of P (the whole run's, in insertion order) whose numbers are listed in ids, in
-// that order, and a dummy point for the vertex at infinity: a store's point array.
-std::vector<double> pointsOf(const std::vector<double>& P, const std::vector<int>& ids) {
-  std::vector<double> Q;
-  Q.reserve(2 * ids.size() + 2);
-  for (int j : ids) {
-    Q.push_back(P[2 * std::size_t(j)]);
-    Q.push_back(P[2 * std::size_t(j) + 1]);
-  }
-  Q.push_back(0);
-  Q.push_back(0);
-  return Q;
-}
-
 // One part: the points of the slab lo <= x < hi, triangulated alone; what the merge needs of it.
 struct alignas(64) Part {
   double lo = 0, hi = 0;
-  std::vector<int> ids;  // the part's points: their numbers in the run's insertion order
+  std::vector<double> Q;  // its points in its insertion order, and the dummy point of INF
+  std::vector<int> inNo;  // the input number of each (of the kept one, for merged duplicates)
+  std::size_t offset = 0;  // where its points start in the run's insertion order
+  std::unique_ptr<Store> S;  // its triangulation T, kept until the output is written
+  std::vector<unsigned char> safe;  // of each slot of T: a safe triangle (sortPart)
+  std::size_t safeCount = 0;
   FastStats stats;
-  std::vector<std::pair<int, int>> dups;  // (point, vertex it duplicates), run's numbers
-  std::vector<Tri> safe;                  // the safe triangles (below), run's numbers
-  std::vector<std::uint64_t> seam;        // edgeKey(a, b): a safe triangle left of a -> b, none right
-  bool degenerate = false;                // fewer than 3 points, or all on a line
-  double busySeconds = 0;
+  double sortSeconds = 0, busySeconds = 0;
+  std::vector<std::pair<int, int>> named;  // (input number of a duplicate, vertex of Q kept)
+  std::vector<std::uint64_t> seam;         // edgeKey(a, b) in input numbers: safe on the left only
+  std::vector<int> border;                 // its vertices in B (vertices of Q)
+  bool degenerate = false;                 // fewer than 3 points, or all on a line
 };
 
 //! [partSafe]
 // The part's triangulation T, from its store, sorted for the merge. A triangle of T is safe when
 // its closed circumdisk lies inside the part's open slab: no point of another part is in it, so
-// it is a triangle of DT(S). Every other face of T (a ghost too) puts its vertices in B (inB,
-// indexed by the run's numbers; each part writes its own points' entries). The safe triangles
+// it is a triangle of DT(S). Every other face of T (a ghost too) puts its vertices in B (the
+// part's list border, each vertex once). The safe triangles
 // are kept, with their edges to a face that is not safe: the seam (book/parallel.md).
-void sortPart(Part& part, const Store& S, const double* Q, std::vector<unsigned char>& inB) {
+void sortPart(Part& part) {
+  const Store& S = *part.S;
   const std::size_t count = std::size_t(S.count.load(std::memory_order_relaxed));
   const int INF = S.INF;
-  const std::vector<int>& id = part.ids;
-  auto pt = [Q](int v) { return Q + 2 * std::size_t(v); };
+  const std::vector<int>& id = part.inNo;
+  auto pt = [&](int v) { return part.Q.data() + 2 * std::size_t(v); };
+  std::vector<unsigned char> inB(part.inNo.size(), 0);
   auto toB = [&](const Tri& w) {
     for (int v : w)
-      if (v != INF) inB[std::size_t(id[std::size_t(v)])] = 1;
+      if (v != INF && !inB[std::size_t(v)]) {
+        inB[std::size_t(v)] = 1;
+        part.border.push_back(v);
+      }
   };
-  std::vector<unsigned char> safe(count, 0);
+  part.safe.assign(count, 0);
+  std::vector<int> unsafe;  // the faces that are not safe, ghosts included: few (near the cuts and the hull)
   for (std::size_t t = 0; t < count; ++t) {
     const Tri& w = S.V[t];
-    if (w[2] == INF)  // a ghost (or a slot no triangle uses, all INF)
+    if (w[0] == INF) continue;  // a slot no triangle uses
+    if (w[2] != INF && diskInSlabInline(pt(w[0]), pt(w[1]), pt(w[2]), part.lo, part.hi)) {
+      part.safe[t] = 1;
+      ++part.safeCount;
+    } else {
       toB(w);
-    else if (diskInSlabInline(pt(w[0]), pt(w[1]), pt(w[2]), part.lo, part.hi))
-      safe[t] = 1;
-    else
-      toB(w);
+      unsafe.push_back(int(t));
+    }
   }
-  part.safe.reserve(count);
-  for (std::size_t t = 0; t < count; ++t) {
-    if (!safe[t]) continue;
-    const Tri& w = S.V[t];
-    part.safe.push_back({id[std::size_t(w[0])], id[std::size_t(w[1])], id[std::size_t(w[2])]});
+  // The seam: each edge between a face that is not safe and a safe triangle, as the safe one
+  // sees it (the reverse of the other's edge).
+  for (int u : unsafe) {
+    const Tri& w = S.V[std::size_t(u)];
     for (int k = 0; k < 3; ++k)
-      if (!safe[std::size_t(S.A[3 * t + std::size_t(k)] / 3)])
-        part.seam.push_back(edgeKey(id[std::size_t(w[std::size_t(k)])], id[std::size_t(w[std::size_t((k + 1) % 3)])]));
+      if (part.safe[std::size_t(S.A[3 * std::size_t(u) + std::size_t(k)] / 3)])
+        part.seam.push_back(edgeKey(id[std::size_t(w[std::size_t((k + 1) % 3)])], id[std::size_t(w[std::size_t(k)])]));
   }
 }
 //! [partSafe]
 
-// Thread k's work: gather the slab's points (in the run's order), triangulate them with the
-// one-thread core, sort the triangles. tick(i, stats) reports progress (the calling thread's
-// part only).
+// Thread k's work: gather the slab's points, sort them (the one-thread kernel's order, in the
+// memory of the adjacency array, as fastDelaunay does), triangulate them with the one-thread
+// core, merge duplicates into the smallest input number, sort the triangles. tick(i, stats)
+// reports progress (the calling thread's part only).
 template <class Tick>
-void runPart(Part& part, const std::vector<double>& P, int n, bool v3, std::size_t every,
-             std::vector<unsigned char>& inB, Tick tick) {
+void runPart(Part& part, const std::vector<double>& xy, const FastOptions& opt, int threads, bool v3,
+             std::size_t every, Tick tick) {
   const auto t0 = Clock::now();
-  for (int j = 0; j < n; ++j) {
-    const double x = P[2 * std::size_t(j)];
-    if (x >= part.lo && x < part.hi) part.ids.push_back(j);
+  const std::size_t n = xy.size() / 2;
+  std::vector<double> pts;
+  std::vector<int> ids;
+  pts.reserve(2 * (n / std::size_t(threads) + n / 16));
+  ids.reserve(n / std::size_t(threads) + n / 16);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double x = xy[2 * i];
+    if (x >= part.lo && x < part.hi) {
+      ids.push_back(int(i));
+      pts.push_back(x);
+      pts.push_back(xy[2 * i + 1]);
+    }
   }
-  const std::vector<double> Q = pointsOf(P, part.ids);
-  const int m = int(part.ids.size());
-  FirstTriangle f{};
-  try {
-    if (m < 3) throw DegenerateInput("fewer than 3 points in a part");
-    f = firstTriangle(Q, m);
-  } catch (const DegenerateInput&) {
+  const int m = int(ids.size());
+  if (m < 3) {
     part.degenerate = true;
     return;
   }
   const std::size_t slots = slotsFor(std::size_t(m));
-  Store S(Q.data(), m, slots, 1, adjacencyMemory(slots, std::size_t(m)));
+  RawMemory memA = adjacencyMemory(slots, std::size_t(m));
+  std::vector<int> order;
+  {
+    const std::size_t* o = brioCoinOrderInto(pts, opt.seed, std::max(1, std::min(opt.rounds, 32)), memA.get());
+    order.assign(o, o + m);
+  }
+  part.Q = pointsInOrder(pts, order, 1);
+  part.inNo.resize(std::size_t(m));
+  for (std::size_t j = 0; j < std::size_t(m); ++j) part.inNo[j] = ids[std::size_t(order[j])];
+  std::vector<double>().swap(pts);
+  std::vector<int>().swap(ids);
+  std::vector<int>().swap(order);
+  part.sortSeconds = secondsSince(t0);
+  FirstTriangle f{};
+  try {
+    f = firstTriangle(part.Q, m);
+  } catch (const DegenerateInput&) {
+    part.degenerate = true;
+    return;
+  }
+  part.S.reset(new Store(part.Q.data(), m, slots, 1, std::move(memA)));
   std::vector<std::pair<int, int>> dups;
-  insertAlone<InlinePredicates>(S, f, InlinePredicates{&part.stats}, Build{v3, true}, part.stats,
+  insertAlone<InlinePredicates>(*part.S, f, InlinePredicates{&part.stats}, Build{v3, true}, part.stats,
                                 dups, every, [&](int i) { tick(i, part.stats); });
-  for (auto [i, d] : dups) part.dups.emplace_back(part.ids[std::size_t(i)], part.ids[std::size_t(d)]);
-  sortPart(part, S, Q.data(), inB);
+  // Equal points: the smallest input number names the vertex (fast::finish's rule).
+  for (auto [i, d] : dups) {
+    int& a = part.inNo[std::size_t(i)];
+    int& b = part.inNo[std::size_t(d)];
+    if (a < b) std::swap(a, b);
+    part.named.emplace_back(a, d);
+  }
+  sortPart(part);
   part.busySeconds = secondsSince(t0);
 }
 
+// Thread k's second task: its safe triangles, renumbered for the output, written at `at`; with
+// insertion numbering, its points and input numbers too. Then its arrays are freed.
+void writePart(Part& part, bool insertionNumbering, Tri* at, FastResult& res) {
+  const Store& S = *part.S;
+  const std::size_t count = part.safe.size();
+  const int off = int(part.offset);
+  for (std::size_t t = 0; t < count; ++t) {
+    if (!part.safe[t]) continue;
+    const Tri& w = S.V[t];
+    *at++ = insertionNumbering ? Tri{off + w[0], off + w[1], off + w[2]}
+                               : Tri{part.inNo[std::size_t(w[0])], part.inNo[std::size_t(w[1])],
+                                     part.inNo[std::size_t(w[2])]};
+  }
+  if (insertionNumbering) {
+    std::copy(part.Q.begin(), part.Q.end() - 2, res.points.begin() + 2 * std::ptrdiff_t(part.offset));
+    std::copy(part.inNo.begin(), part.inNo.end(), res.inserted.begin() + std::ptrdiff_t(part.offset));
+  }
+  part.S.reset();
+  std::vector<unsigned char>().swap(part.safe);
+  std::vector<double>().swap(part.Q);
+}
+
 //! [mergeSeam]
-// The triangles of DT(B) outside the safe triangles' union U, appended to out (run's numbers);
+// The triangles of DT(B) outside the safe triangles' union U, appended to out (input numbers);
 // false if the seam does not separate DT(B) as it must (the caller then falls back). Every seam
 // edge is an edge of DT(B) (sortPart), and cuts it into triangles inside U and outside: a
 // triangle on the left of a seam edge a -> b is inside, one on its right outside, and the labels
 // spread across the edges that are not on the seam.
-bool mergeSeam(const std::vector<double>& P, const std::vector<int>& bid,
+bool mergeSeam(const std::vector<double>& xy, std::vector<int> bid,
                const std::unordered_set<std::uint64_t>& seam, bool v3, FastStats& st,
                std::vector<Tri>& out) {
   const int m = int(bid.size());
   if (m < 3) return false;
-  const std::vector<double> Q = pointsOf(P, bid);
+  std::vector<double> Q;
+  {
+    std::vector<double> pts;
+    pts.reserve(2 * bid.size());
+    for (int j : bid) {
+      pts.push_back(xy[2 * std::size_t(j)]);
+      pts.push_back(xy[2 * std::size_t(j) + 1]);
+    }
+    const std::vector<std::size_t> o = brioCoinOrder(pts, 1);  // B's points, near ones together
+    std::vector<int> order(o.begin(), o.end()), sorted(bid.size());
+    for (std::size_t j = 0; j < sorted.size(); ++j) sorted[j] = bid[std::size_t(order[j])];
+    bid.swap(sorted);
+    Q = pointsInOrder(pts, order, 1);
+  }
   FirstTriangle f{};
   try {
     f = firstTriangle(Q, m);
@@ -256,20 +322,10 @@ FastResult splitAndMerge(const std::vector<double>& xy, int threads, const FastO
   res.stats.x86_64_v3 = v3;
   const auto t0 = Clock::now();
   const std::size_t n = xy.size() / 2;
-  const int N = int(n);
-  std::vector<int> orig;
-  {
-    RawMemory scratch(::operator new(brioCoinScratchBytes(n)));
-    const std::size_t* o = brioCoinOrderInto(xy, opt.seed, std::max(1, std::min(opt.rounds, 32)),
-                                             scratch.get(), true, threads);
-    orig.assign(o, o + n);
-  }
-  std::vector<double> P = pointsInOrder(xy, orig, threads);
-  res.stats.sortSeconds = secondsSince(t0);
 
-  // The slabs: cut at x-quantiles of an evenly spaced sample of the order (about 4096 points).
+  // The slabs: cut at x-quantiles of an evenly spaced sample of the input (about 4096 points).
   std::vector<double> xs;
-  for (std::size_t j = 0; j < n; j += std::max<std::size_t>(1, n / 4096)) xs.push_back(P[2 * j]);
+  for (std::size_t j = 0; j < n; j += std::max<std::size_t>(1, n / 4096)) xs.push_back(xy[2 * j]);
   std::vector<Part> parts(static_cast<std::size_t>(threads));
   std::vector<double> cut(std::size_t(threads) + 1, -HUGE_VAL);
   cut[std::size_t(threads)] = HUGE_VAL;
@@ -279,36 +335,40 @@ FastResult splitAndMerge(const std::vector<double>& xy, int threads, const FastO
     cut[std::size_t(k)] = *q;
     if (!(cut[std::size_t(k)] > cut[std::size_t(k) - 1])) return res;  // an empty slab: not merged
   }
-  for (int k = 0; k < threads; ++k) {
-    parts[std::size_t(k)].lo = cut[std::size_t(k)];
-    parts[std::size_t(k)].hi = cut[std::size_t(k) + 1];
-  }
+  for (std::size_t k = 0; k < parts.size(); ++k) parts[k].lo = cut[k], parts[k].hi = cut[k + 1];
+
   // The parts, a thread each. Progress comes from the calling thread's part, scaled.
-  std::vector<unsigned char> inB(n, 0);
   const std::size_t every = opt.progress ? std::max<std::size_t>(1, opt.progressEvery) : std::size_t(-1);
   const auto tp = Clock::now();
   parallelFor(threads, std::size_t(threads), [&](int, std::size_t lo, std::size_t hi) {
     for (std::size_t k = lo; k < hi; ++k)
-      runPart(parts[k], P, N, v3, k == 0 ? every : std::size_t(-1), inB, [&](int i, const FastStats& s) {
-        FastStats scaled = s;
-        scaled.insertions *= std::uint64_t(threads);
-        scaled.walkSteps *= std::uint64_t(threads);
-        scaled.cavityFaces *= std::uint64_t(threads);
-        opt.progress(std::min(n, std::size_t(i) * std::size_t(threads)), n, scaled);
-      });
+      runPart(parts[k], xy, opt, threads, v3, k == 0 ? every : std::size_t(-1),
+              [&](int i, const FastStats& st) {
+                FastStats scaled = st;
+                scaled.insertions *= std::uint64_t(threads);
+                scaled.walkSteps *= std::uint64_t(threads);
+                scaled.cavityFaces *= std::uint64_t(threads);
+                opt.progress(std::min(n, std::size_t(i) * std::size_t(threads)), n, scaled);
+              });
   });
   rep.partsSeconds = secondsSince(tp);
   for (const Part& part : parts) {
     if (part.degenerate) return res;
     rep.busySeconds += part.busySeconds;
+    res.stats.sortSeconds = std::max(res.stats.sortSeconds, part.sortSeconds);
   }
+  for (std::size_t k = 1; k < parts.size(); ++k)
+    parts[k].offset = parts[k - 1].offset + parts[k - 1].inNo.size();
 
   // The seam: B, its triangulation, the triangles of it outside the safe ones.
   const auto tm = Clock::now();
-  std::vector<int> bid;
-  for (int j = 0; j < N; ++j)
-    if (inB[std::size_t(j)]) bid.push_back(j);
-  std::vector<unsigned char>().swap(inB);
+  std::vector<int> bid;  // input numbers
+  std::unordered_map<int, int> number;  // with insertion numbering: B's points' numbers there
+  for (const Part& part : parts)
+    for (int v : part.border) {
+      bid.push_back(part.inNo[std::size_t(v)]);
+      if (opt.insertionNumbering) number[bid.back()] = int(part.offset) + v;
+    }
   rep.border = bid.size();
   std::unordered_set<std::uint64_t> seam;
   for (Part& part : parts) {
@@ -316,32 +376,41 @@ FastResult splitAndMerge(const std::vector<double>& xy, int threads, const FastO
     std::vector<std::uint64_t>().swap(part.seam);
   }
   std::vector<Tri> kept;
-  if (!mergeSeam(P, bid, seam, v3, res.stats, kept)) return res;
+  if (!mergeSeam(xy, std::move(bid), seam, v3, res.stats, kept)) return res;
+  if (opt.insertionNumbering)
+    for (Tri& t : kept)
+      for (int& v : t) v = number.at(v);
   rep.mergeSeconds = secondsSince(tm);
 
-  // The output: the parts' safe triangles and the kept ones, through the kernels' finish.
+  // The output: the parts' safe triangles (each part writes its own, renumbered) and the kept.
   const auto tf = Clock::now();
   std::vector<std::size_t> at(parts.size() + 1, 0);
-  for (std::size_t k = 0; k < parts.size(); ++k) at[k + 1] = at[k] + parts[k].safe.size();
-  std::vector<Tri> V(at.back() + kept.size());
+  for (std::size_t k = 0; k < parts.size(); ++k) at[k + 1] = at[k] + parts[k].safeCount;
+  // The output's pages are mapped by the threads, a piece each, before it is written.
+  auto sized = [threads](auto& v, std::size_t size) {
+    v.reserve(size);
+    populatePages(v.data(), size * sizeof(v[0]), threads);
+    v.resize(size);
+  };
+  sized(res.tri, at.back() + kept.size());
+  if (opt.insertionNumbering) {
+    sized(res.points, 2 * n);
+    sized(res.inserted, n);
+  }
   parallelFor(threads, parts.size(), [&](int, std::size_t lo, std::size_t hi) {
-    for (std::size_t k = lo; k < hi; ++k) {
-      std::copy(parts[k].safe.begin(), parts[k].safe.end(), V.begin() + std::ptrdiff_t(at[k]));
-      std::vector<Tri>().swap(parts[k].safe);
-    }
+    for (std::size_t k = lo; k < hi; ++k)
+      writePart(parts[k], opt.insertionNumbering, res.tri.data() + at[k], res);
   });
-  std::copy(kept.begin(), kept.end(), V.begin() + std::ptrdiff_t(at.back()));
-  std::vector<std::pair<int, int>> dups;
+  std::copy(kept.begin(), kept.end(), res.tri.begin() + std::ptrdiff_t(at.back()));
   for (const Part& part : parts) {
     res.stats.insertions += part.stats.insertions;
     res.stats.walkSteps += part.stats.walkSteps;
     res.stats.cavityFaces += part.stats.cavityFaces;
     res.stats.orient += part.stats.orient;
     res.stats.incircle += part.stats.incircle;
-    dups.insert(dups.end(), part.dups.begin(), part.dups.end());
+    for (const auto& [d, v] : part.named) res.duplicates.emplace_back(d, part.inNo[std::size_t(v)]);
   }
-  const std::size_t count = V.size();
-  finish(V, count, N, P, orig, dups, opt.insertionNumbering, threads, res);
+  std::sort(res.duplicates.begin(), res.duplicates.end());
   rep.finishSeconds = secondsSince(tf);
   rep.merged = true;
   res.stats.insertSeconds = secondsSince(t0) - res.stats.sortSeconds;
