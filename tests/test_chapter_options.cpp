@@ -234,7 +234,7 @@ std::string valueOf(const fs::path& p, const std::string& key) {
 
 }  // namespace
 
-TEST_CASE("chapter options bench_parallel writes the time budget of its five runs and leaves out two threads when --threads does") {
+TEST_CASE("chapter options bench_parallel writes the time budget of its six runs and leaves out two threads when --threads does") {
   const fs::path d = freshDir("budget");
   // 20000 points: the last rounds are large enough to be shared between two threads.
   const Run r = chapter("bench_parallel", {"--quick", "--no-plot", "--max-n", "20000", "--threads", "1,2", "--out",
@@ -243,7 +243,7 @@ TEST_CASE("chapter options bench_parallel writes the time budget of its five run
   INFO(r.err);
   REQUIRE(r.status == 0);
   const auto rows = csvRows(d / "table_parallel_budget.csv");
-  REQUIRE(rows.size() == 6);
+  REQUIRE(rows.size() == 7);
   const std::vector<std::string>& head = rows[0];
   auto col = [&](const std::string& name) {
     return std::size_t(std::find(head.begin(), head.end(), name) - head.begin());
@@ -252,8 +252,8 @@ TEST_CASE("chapter options bench_parallel writes the time budget of its five run
                     perPoint = col("busy per point / sequential's");
   REQUIRE(perPoint < head.size());
   const char* labels[] = {"sequential kernel", "shared core alone (slabs)", "shared core alone (locks)",
-                          "two threads (slabs)", "two threads (locks)"};
-  for (std::size_t i = 0; i < 5; ++i) {
+                          "two threads (slabs)", "two threads (locks)", "two threads (parts and seam)"};
+  for (std::size_t i = 0; i < 6; ++i) {
     CAPTURE(labels[i]);
     REQUIRE(rows[i + 1].size() == head.size());
     CHECK(rows[i + 1][0] == labels[i]);
@@ -269,7 +269,9 @@ TEST_CASE("chapter options bench_parallel writes the time budget of its five run
   CHECK(valueOf(values, "par.budget_n") == "20000");
   for (const char* key : {"par.budget_share_cost", "par.budget_share_cost_locks", "par.budget_second_thread",
                           "par.budget_second_thread_locks", "par.budget_serial", "par.budget_best2",
-                          "par.budget_best2_locks", "par.budget_k4", "par.budget_k8", "par.hw_threads"}) {
+                          "par.budget_best2_locks", "par.budget_k4", "par.budget_k8", "par.hw_threads",
+                          "par.budget_wall2_parts", "par.budget_seam_parts", "par.budget_parts_k4",
+                          "par.budget_parts_k8"}) {
     CAPTURE(key);
     const std::string v = valueOf(values, key);
     CHECK(!v.empty());
@@ -279,6 +281,9 @@ TEST_CASE("chapter options bench_parallel writes the time budget of its five run
   // time: more threads, a clearly smaller share (more than the values' two decimals).
   CHECK(std::atof(valueOf(values, "par.budget_k8").c_str()) < std::atof(valueOf(values, "par.budget_k4").c_str()));
   CHECK(std::atof(valueOf(values, "par.budget_k4").c_str()) < std::atof(valueOf(values, "par.budget_best2").c_str()));
+  // The parts' model: their busy time shared by more threads, the seam grown with the cuts.
+  CHECK(std::atof(valueOf(values, "par.budget_parts_k4").c_str()) > 0);
+  CHECK(std::atof(valueOf(values, "par.budget_parts_k8").c_str()) > 0);
   const std::string verdict = valueOf(values, "par.budget_best2_verdict");
   CHECK((verdict.rfind("even a perfect split", 0) == 0 || verdict.rfind("a perfect split would meet it", 0) == 0));
 

@@ -591,7 +591,7 @@ void tableParallelBudget(const Run& s, const std::vector<std::vector<double>>& b
                "point: busy time per point of the concurrent rounds, over the sequential "
                "kernel's time after the sort per point. Two threads (parts and seam): sort is the "
                "longest part's sort, inside the part's time; concurrent rounds is the parts' wall "
-               "time (gathering, sorting, inserting, sorting the triangles), busy the threads' time "
+               "time (gathering, sorting, inserting, classifying the triangles), busy the threads' time "
                "in their parts, lone the seam (B and its triangulation, one thread), output the "
                "writing of the triangles." + machineNote(hw);
   bt.emit(o, "table_parallel_budget");

@@ -74,7 +74,7 @@ struct alignas(64) Part {
   std::vector<int> inNo;  // the input number of each (of the kept one, for merged duplicates)
   std::size_t offset = 0;  // where its points start in the run's insertion order
   std::unique_ptr<Store> S;  // its triangulation T, kept until the output is written
-  std::vector<unsigned char> safe;  // of each slot of T: a safe triangle (sortPart)
+  std::vector<unsigned char> safe;  // of each slot of T: a safe triangle (classifyPart)
   std::size_t safeCount = 0;
   FastStats stats;
   double sortSeconds = 0, busySeconds = 0;
@@ -85,12 +85,12 @@ struct alignas(64) Part {
 };
 
 //! [partSafe]
-// The part's triangulation T, from its store, sorted for the merge. A triangle of T is safe when
+// The part's triangulation T, from its store, classified for the merge. A triangle of T is safe when
 // its closed circumdisk lies inside the part's open slab: no point of another part is in it, so
 // it is a triangle of DT(S). Every other face of T (a ghost too) puts its vertices in B (the
 // part's list border, each vertex once). The safe triangles
 // are kept, with their edges to a face that is not safe: the seam (book/parallel.md).
-void sortPart(Part& part) {
+void classifyPart(Part& part) {
   const Store& S = *part.S;
   const std::size_t count = std::size_t(S.count.load(std::memory_order_relaxed));
   const int INF = S.INF;
@@ -130,7 +130,7 @@ void sortPart(Part& part) {
 
 // Thread k's work: gather the slab's points, sort them (the one-thread kernel's order, in the
 // memory of the adjacency array, as fastDelaunay does), triangulate them with the one-thread
-// core, merge duplicates into the smallest input number, sort the triangles. tick(i, stats)
+// core, merge duplicates into the smallest input number, classify the triangles. tick(i, stats)
 // reports progress (the calling thread's part only).
 template <class Tick>
 void runPart(Part& part, const std::vector<double>& xy, const FastOptions& opt, int threads, bool v3,
@@ -186,7 +186,7 @@ void runPart(Part& part, const std::vector<double>& xy, const FastOptions& opt, 
     if (a < b) std::swap(a, b);
     part.named.emplace_back(a, d);
   }
-  sortPart(part);
+  classifyPart(part);
   part.busySeconds = secondsSince(t0);
 }
 
@@ -214,10 +214,11 @@ void writePart(Part& part, bool insertionNumbering, Tri* at, FastResult& res) {
 
 //! [mergeSeam]
 // The triangles of DT(B) outside the safe triangles' union U, appended to out (input numbers);
-// false if the seam does not separate DT(B) as it must (the caller then falls back). Every seam
-// edge is an edge of DT(B) (sortPart), and cuts it into triangles inside U and outside: a
-// triangle on the left of a seam edge a -> b is inside, one on its right outside, and the labels
-// spread across the edges that are not on the seam.
+// false if the seam does not separate DT(B) as it must (the caller then falls back). Each seam
+// edge must be an edge of DT(B) (it is, unless the seam runs between cocircular points: checked
+// here); the seam then cuts DT(B) into triangles inside U and outside: a triangle on the left of
+// a seam edge a -> b is inside, one on its right outside, and the labels spread across the
+// edges that are not on the seam (two labels for one triangle: false).
 bool mergeSeam(const std::vector<double>& xy, std::vector<int> bid,
                const std::unordered_set<std::uint64_t>& seam, bool v3, FastStats& st,
                std::vector<Tri>& out) {
