@@ -371,6 +371,11 @@ struct Tally {
   std::size_t pairsBeat = 0, pairs = 0;
   double worstTwo = 0, decisionShare = 0;
   std::string worstTwoFamily, lostOn;
+  // Where the model ran one thread, the same kernel ran in both columns: a ratio beyond the
+  // noise there is the machine's, unless the decision itself (its forecast) cost that much. The
+  // sets where that happened, and the largest share of the wall time a decision took there.
+  std::string sameKernelOn;
+  double worstOneDecision = 0;
   std::size_t worstTwoN = 0;
   // For the page's targets: at the largest n where CGAL runs (not at 10^8; a family measured
   // at one size only: there), the speed-up on uniform points, the worst time and peak ratios
@@ -408,12 +413,15 @@ ch::Table threadModelTable(const Bench& b) {
   const int cores = b.cores;
   ch::Table mt;
   mt.caption = "The cost model of the parallel kernel on bench_kernels' sets (this run): the share "
-               "of a sample's vertices on a triangle no slab can take, against uniform points "
+               "of a sample's vertices on a triangle across the parts' cut or on the hull, against uniform points "
                "(computed for every set; it decides only at the model's size and above), "
                "the threads it chose of " + std::to_string(cores) +
                " and why, and the wall time of " + std::to_string(cores) +
                " threads against one, median and spread of the runs paired in turn, forced and as "
-               "the model chose";
+               "the model chose. Where the model chose one thread, both columns ran the sequential "
+               "kernel and only the decision differs: a ratio beyond the margin there is marked "
+               "the same kernel (noise) when the decision took less than the margin of the wall "
+               "time";
   mt.header = {"points", "n", "cut share", "against uniform", "threads used", "reason",
                "forced / 1 thread", "forced min-max", "model / 1 thread", "model min-max",
                "model slower than 1 thread by over 5 %"};
@@ -519,10 +527,15 @@ void addThreadModelRow(const Bench& b, Family f, std::size_t n, const std::vecto
       tally.worstTwoFamily = familyName(f);
       tally.worstTwoN = familySize(f, n);
     }
-    if (med > noise)
-      tally.lostOn += std::string(tally.lostOn.empty() ? "" : ", ") + familyName(f) + " at " +
-                std::to_string(familySize(f, n));
     const Measure& d = model->all.front();  // the decision is the same in every run
+    std::vector<double> shares;
+    for (const Measure& x : model->all) shares.push_back(x.decisionSeconds / x.wall);
+    // One thread chosen: only the decision differs from the column of one thread.
+    const bool sameKernel = d.threadsUsed == 1 && median(shares) < noise - 1;
+    if (d.threadsUsed == 1) tally.worstOneDecision = std::max(tally.worstOneDecision, median(shares));
+    std::string& list = sameKernel ? tally.sameKernelOn : tally.lostOn;
+    if (med > noise)
+      list += std::string(list.empty() ? "" : ", ") + familyName(f) + " at " + std::to_string(familySize(f, n));
     if (f == Family::Uniform && n == verdictN)
       tally.decisionShare = median([&] {
         std::vector<double> v;
@@ -534,7 +547,8 @@ void addThreadModelRow(const Bench& b, Family f, std::size_t n, const std::vecto
             d.cutShare > 0 ? ch::fmt("%.2f", d.cutRatio) : "-",
             std::to_string(d.threadsUsed), dt::parallelReasonName(d.reason),
             fr.empty() ? "-" : ch::fmt("%.2f", median(fr)), spread(fr, "%.2f"),
-            ch::fmt("%.2f", med), spread(mr, "%.2f"), med > noise ? "yes" : "no"});
+            ch::fmt("%.2f", med), spread(mr, "%.2f"),
+            med <= noise ? "no" : sameKernel ? "yes: the same kernel (noise)" : "yes"});
   }
 }
 
@@ -587,6 +601,8 @@ void writeKernelValues(const Bench& b, const Tally& tally) {
             "never slower than one thread beyond the noise margin",
             "slower than one thread beyond the noise margin");
   v.set("threads.lost_on", tally.lostOn.empty() ? "none" : tally.lostOn);
+  v.set("threads.same_kernel_on", tally.sameKernelOn.empty() ? "none" : tally.sameKernelOn);
+  v.num("threads.one_decision_percent", 100 * tally.worstOneDecision, "%.2f");
   if (haveCgal && tally.uniformSpeedup > 0) {
     v.num("kernel.uniform_speedup", tally.uniformSpeedup, "%.2f");
     v.verdict("kernel.speed_target", tally.uniformSpeedup >= speedBound, "met", "missed");

@@ -194,15 +194,35 @@ double cutShareOf(const std::vector<double>& sample, int threads) {
   return nUsed ? double(std::count(onCut.begin(), onCut.end(), 1)) / double(nUsed) : 1;
 }
 
-// Uniform points' cut share for a thread count: computed once per count (a fixed sample).
-double uniformCutShare(int threads) {
+// Uniform points' cut share for a thread count and a sample size: computed once each (a fixed
+// sample).
+double uniformCutShare(int threads, std::size_t size) {
   static std::mutex mu;
-  static std::map<int, double> known;
+  static std::map<std::pair<int, std::size_t>, double> known;
   std::lock_guard<std::mutex> hold(mu);
-  auto it = known.find(threads);
+  auto it = known.find({threads, size});
   if (it == known.end())
-    it = known.emplace(threads, cutShareOf(uniformPoints(ParallelModel::sampleSize, 47), threads)).first;
+    it = known.emplace(std::make_pair(threads, size), cutShareOf(uniformPoints(size, 47), threads)).first;
   return it->second;
+}
+
+// The forecast from an evenly spaced sample of m points of the input (for a set given in any
+// order, spread over all of it), against uniform points' share for a sample of `reference`.
+SplitForecast forecastOf(const std::vector<double>& xy, int threads, std::size_t m,
+                         std::size_t reference) {
+  const std::size_t n = xy.size() / 2;
+  std::vector<double> sample;
+  sample.reserve(2 * m);
+  for (std::size_t j = 0; j < m; ++j) {
+    const std::size_t i = j * n / m;
+    sample.push_back(xy[2 * i]);
+    sample.push_back(xy[2 * i + 1]);
+  }
+  SplitForecast f;
+  f.cutShare = cutShareOf(sample, threads);
+  f.uniformCutShare = uniformCutShare(threads, reference);
+  f.ratio = f.cutShare / f.uniformCutShare;
+  return f;
 }
 
 void requireDefaultOrder(const FastOptions& opt) {
@@ -213,20 +233,17 @@ void requireDefaultOrder(const FastOptions& opt) {
 }  // namespace
 
 SplitForecast forecastSplit(const std::vector<double>& xy, int threads) {
-  // An evenly spaced sample of the input: for a set given in any order, spread over all of it.
-  const std::size_t n = xy.size() / 2, m = std::min(n, ParallelModel::sampleSize);
-  std::vector<double> sample;
-  sample.reserve(2 * m);
-  for (std::size_t j = 0; j < m; ++j) {
-    const std::size_t i = j * n / m;
-    sample.push_back(xy[2 * i]);
-    sample.push_back(xy[2 * i + 1]);
+  const std::size_t n = xy.size() / 2;
+  // A glance first, on a smaller sample: an input hopeless at a glance (nearly every vertex on
+  // the hull or across a cut, as on a circle, where every incircle test of the cocircular points
+  // is decided by an exact stage: the dearest sample to triangulate) is judged from it, at a
+  // fraction of the cost. (Its share is compared with the full sample's uniform share: at least
+  // glanceHopeless of the vertices is far over the model's bound.)
+  if (n > ParallelModel::sampleSize) {
+    const SplitForecast g = forecastOf(xy, threads, ParallelModel::glanceSize, ParallelModel::sampleSize);
+    if (g.cutShare >= ParallelModel::glanceHopeless) return g;
   }
-  SplitForecast f;
-  f.cutShare = cutShareOf(sample, threads);
-  f.uniformCutShare = uniformCutShare(threads);
-  f.ratio = f.cutShare / f.uniformCutShare;
-  return f;
+  return forecastOf(xy, threads, std::min(n, ParallelModel::sampleSize), ParallelModel::sampleSize);
 }
 
 //! [decideThreads]

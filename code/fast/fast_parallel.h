@@ -52,7 +52,11 @@ enum class ParallelMode {
 struct ParallelModel {
   static constexpr std::size_t minPointsPerThread = 50000;
   static constexpr std::size_t sampleSize = 2048;
-  static constexpr double maxCutShareRatio = 3.0;
+  /// A first sample of glanceSize points decides alone when at least glanceHopeless of its
+  /// vertices are on a triangle across a cut or on the hull (uniform points: about a fifth).
+  static constexpr std::size_t glanceSize = 256;
+  static constexpr double glanceHopeless = 0.9;
+  static constexpr double maxCutShareRatio = 6.0;
 };
 
 /// The predictor of how well slabs split a point set (ParallelModel, (2)).
