@@ -977,14 +977,14 @@ void tableThreadConstants(const Run& s, ch::Values& values) {
             ch::fmt("%.2f", c.forecast), ch::fmt("%.2f", m), ch::spread(c.ratios, "%.2f"),
             m < 1 ? "yes" : "no"});
   }
-  mc.caption = "The cost model's two constants, measured: two threads (the concurrent rounds, "
+  mc.caption = "The cost model's two constants, measured: two threads (the parts and their seam, "
                "whatever the model would choose) against the sequential kernel, each run in its "
                "own process, in turn, " + std::to_string(mreps) +
                " runs each; the median of the paired wall-time ratios and their spread "
                "(min-max). Size: uniform points in the unit square. Split: the same number "
                "of points with x squeezed into [0, w), so that more and more triangles cross "
                "the slabs' cut; forecast: dt::forecastSplit for two threads, the share of a "
-               "sample's vertices no slab can take over uniform points'." + machineNote(hw);
+               "sample's vertices on a triangle across the cut or on the hull over uniform points'." + machineNote(hw);
   mc.emit(o, "table_thread_constants");
   const std::size_t modelSize = 2 * dt::ParallelModel::minPointsPerThread;
   values.set("model.n", std::to_string(nTop));
