@@ -194,22 +194,20 @@ double cutShareOf(const std::vector<double>& sample, int threads) {
   return nUsed ? double(std::count(onCut.begin(), onCut.end(), 1)) / double(nUsed) : 1;
 }
 
-// Uniform points' cut share for a thread count and a sample size: computed once each (a fixed
-// sample).
-double uniformCutShare(int threads, std::size_t size) {
+// Uniform points' cut share for a thread count: computed once per count (a fixed sample).
+double uniformCutShare(int threads) {
   static std::mutex mu;
-  static std::map<std::pair<int, std::size_t>, double> known;
+  static std::map<int, double> known;
   std::lock_guard<std::mutex> hold(mu);
-  auto it = known.find({threads, size});
+  auto it = known.find(threads);
   if (it == known.end())
-    it = known.emplace(std::make_pair(threads, size), cutShareOf(uniformPoints(size, 47), threads)).first;
+    it = known.emplace(threads, cutShareOf(uniformPoints(ParallelModel::sampleSize, 47), threads)).first;
   return it->second;
 }
 
 // The forecast from an evenly spaced sample of m points of the input (for a set given in any
-// order, spread over all of it), against uniform points' share for a sample of `reference`.
-SplitForecast forecastOf(const std::vector<double>& xy, int threads, std::size_t m,
-                         std::size_t reference) {
+// order, spread over all of it), against uniform points' share (uniformCutShare).
+SplitForecast forecastOf(const std::vector<double>& xy, int threads, std::size_t m) {
   const std::size_t n = xy.size() / 2;
   std::vector<double> sample;
   sample.reserve(2 * m);
@@ -220,7 +218,7 @@ SplitForecast forecastOf(const std::vector<double>& xy, int threads, std::size_t
   }
   SplitForecast f;
   f.cutShare = cutShareOf(sample, threads);
-  f.uniformCutShare = uniformCutShare(threads, reference);
+  f.uniformCutShare = uniformCutShare(threads);
   f.ratio = f.cutShare / f.uniformCutShare;
   return f;
 }
@@ -240,10 +238,10 @@ SplitForecast forecastSplit(const std::vector<double>& xy, int threads) {
   // fraction of the cost. (Its share is compared with the full sample's uniform share: at least
   // glanceHopeless of the vertices is far over the model's bound.)
   if (n > ParallelModel::sampleSize) {
-    const SplitForecast g = forecastOf(xy, threads, ParallelModel::glanceSize, ParallelModel::sampleSize);
+    const SplitForecast g = forecastOf(xy, threads, ParallelModel::glanceSize);
     if (g.cutShare >= ParallelModel::glanceHopeless) return g;
   }
-  return forecastOf(xy, threads, std::min(n, ParallelModel::sampleSize), ParallelModel::sampleSize);
+  return forecastOf(xy, threads, std::min(n, ParallelModel::sampleSize));
 }
 
 //! [decideThreads]
