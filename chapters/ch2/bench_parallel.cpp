@@ -878,6 +878,9 @@ std::string figTimePerPoint(const Run& s, ch::Values& values) {
   values.set("tpp.flat_up_to", std::to_string(flatUpTo));
   values.set("tpp.n_last", std::to_string(last.first));
   values.num("tpp.ratio_last", last.second / lo, "%.2f");
+  // The page's words for that ratio: computed here, with the same quarter as flat_up_to.
+  values.verdict("tpp.trend", last.second > 1.25 * lo, "rises by more than a quarter",
+                 "stays within a quarter of its smallest value");
   if (curve.size() > 1) {
     values.num("tpp.steep", curve[steep].second / curve[steep - 1].second, "%.2f");
     values.set("tpp.steep_from", std::to_string(curve[steep - 1].first));

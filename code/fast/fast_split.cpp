@@ -90,11 +90,19 @@ struct alignas(64) Part {
 // it is a triangle of DT(S). Every other face of T (a ghost too) puts its vertices in B (the
 // part's list border, each vertex once). The safe triangles
 // are kept, with their edges to a face that is not safe: the seam (book/parallel.md).
+//
+// Only the triangles near T's hull are tested. A triangle t whose closed circumdisk D meets the
+// complement of the open slab (at a point q) is joined to the hull by triangles like it: walk
+// from inside t to q. q is outside T's hull, or on it (a point on x = lo); each triangle the
+// walk enters has q in its closed circumdisk too, since across a Delaunay edge the neighbour's
+// disk holds the part of D beyond the edge. So a search from the ghosts' neighbours, which goes
+// on only across the triangles diskInSlab does not call safe, meets every triangle that is not
+// safe; those it never reaches are safe without a test. (diskInSlab never calls safe a disk
+// that is not: the triangles it doubts are only more triangles the search crosses.)
 void classifyPart(Part& part) {
   const Store& S = *part.S;
   const std::size_t count = std::size_t(S.count.load(std::memory_order_relaxed));
   const int INF = S.INF;
-  const std::vector<int>& id = part.inNo;
   auto pt = [&](int v) { return part.Q.data() + 2 * std::size_t(v); };
   std::vector<unsigned char> inB(part.inNo.size(), 0);
   auto toB = [&](const Tri& w) {
@@ -104,19 +112,47 @@ void classifyPart(Part& part) {
         part.border.push_back(v);
       }
   };
+  // safe[t]: 0 a face that is not safe (or an unused slot), 1 a triangle not reached (safe),
+  // 2 a triangle tested and safe.
   part.safe.assign(count, 0);
   std::vector<int> unsafe;  // the faces that are not safe, ghosts included: few (near the cuts and the hull)
+  std::vector<int> todo;    // triangles to test: the ghosts' neighbours, then the neighbours of those not safe
+  std::size_t triangles = 0, notSafe = 0;  // triangles of T; of them, those found not safe
   for (std::size_t t = 0; t < count; ++t) {
     const Tri& w = S.V[t];
     if (w[0] == INF) continue;  // a slot no triangle uses
-    if (w[2] != INF && diskInSlabInline(pt(w[0]), pt(w[1]), pt(w[2]), part.lo, part.hi)) {
+    if (w[2] != INF) {
       part.safe[t] = 1;
-      ++part.safeCount;
+      ++triangles;
     } else {
       toB(w);
       unsafe.push_back(int(t));
     }
   }
+  auto reach = [&](int u) {
+    for (int k = 0; k < 3; ++k) {
+      const int nb = S.A[3 * std::size_t(u) + std::size_t(k)] / 3;
+      if (part.safe[std::size_t(nb)] == 1) todo.push_back(nb);
+    }
+  };
+  for (int g : unsafe) reach(g);
+  while (!todo.empty()) {
+    const int t = todo.back();
+    todo.pop_back();
+    if (part.safe[std::size_t(t)] != 1) continue;  // met twice
+    const Tri& w = S.V[std::size_t(t)];
+    if (diskInSlabInline(pt(w[0]), pt(w[1]), pt(w[2]), part.lo, part.hi)) {
+      part.safe[std::size_t(t)] = 2;
+    } else {
+      part.safe[std::size_t(t)] = 0;
+      ++notSafe;
+      toB(w);
+      unsafe.push_back(t);
+      reach(t);
+    }
+  }
+  part.safeCount = triangles - notSafe;
+  const std::vector<int>& id = part.inNo;
   // The seam: each edge between a face that is not safe and a safe triangle, as the safe one
   // sees it (the reverse of the other's edge).
   for (int u : unsafe) {
