@@ -334,7 +334,7 @@ struct Bench {
 Bench benchOf(const ch::Options& o) {
   const int reps = int(o.number("--reps", o.quick ? 3 : 5));
   std::vector<std::size_t> sizes = o.quick ? std::vector<std::size_t>{10000, 100000}
-                                           : std::vector<std::size_t>{100000, 1000000};
+                                           : std::vector<std::size_t>{10000, 100000, 1000000};
   const std::size_t maxN = o.maxN > 0 ? std::size_t(o.maxN) : (o.quick ? 100000 : 1000000);
   if (maxN >= 10000000) sizes.push_back(10000000);
   if (maxN >= 100000000) sizes.push_back(100000000);
