@@ -126,6 +126,44 @@ inline std::string withFigures(const std::string& html, const std::string& page,
   return out + html.substr(last);
 }
 
+/// True for a page of the test suite: a source or file page whose path starts with the tests
+/// directory (Doxygen's navigation path, "tests" first).
+inline bool isSuitePage(const std::string& html) {
+  const std::string item = "<li class=\"navelem\">";
+  const std::size_t at = html.find(item);
+  if (at == std::string::npos) return false;
+  const std::size_t close = html.find("</li>", at);
+  const std::string first = html.substr(at, close == std::string::npos ? std::string::npos : close - at);
+  return first.find(">tests</a>") != std::string::npos;
+}
+
+/// Doxygen links every name in a listing to a symbol of that name wherever it finds one, and the
+/// suite's helpers share short names with the library's locals (a variable `out`, a function
+/// `key`): a listing of the library then linked them into the tests, a wrong target and, in
+/// the student's edition, a page of tests. In a page that is not the suite's, a listing's link to
+/// a page of `suite` (isSuitePage), or of the namespaces dttest and doctest, becomes its text.
+inline std::string withoutLinksIntoSuite(const std::string& html, const std::set<std::string>& suite) {
+  const std::string open = "<a class=\"code";
+  std::string out;
+  std::size_t i = 0;
+  for (std::size_t at = html.find(open); at != std::string::npos; at = html.find(open, i)) {
+    const std::size_t gt = html.find('>', at), end = html.find("</a>", at);
+    if (gt == std::string::npos || end == std::string::npos || end < gt) break;
+    const std::string tag = html.substr(at, gt - at);
+    const std::size_t h = tag.find("href=\"");
+    std::string page = h == std::string::npos ? "" : tag.substr(h + 6, tag.find('"', h + 6) - h - 6);
+    page = page.substr(0, page.find('#'));
+    bool intoSuite = suite.count(page) > 0;
+    for (const char* ns : {"namespacedttest", "structdttest", "classdttest", "namespacedoctest",
+                           "structdoctest", "classdoctest"})
+      intoSuite = intoSuite || page.rfind(ns, 0) == 0;
+    out += html.substr(i, at - i);
+    out += intoSuite ? html.substr(gt + 1, end - gt - 1) : html.substr(at, end + 4 - at);
+    i = end + 4;
+  }
+  return out + html.substr(i);
+}
+
 /// A link first in the page, shown when focused, to the text: a keyboard reaches the page's
 /// text without passing every link of the menu and the navigation tree (WCAG 2.4.1).
 inline std::string withSkipLink(const std::string& html) {

@@ -340,9 +340,13 @@ int access(const std::string& htmlDir, const std::string& altFile) {
   }
   std::vector<std::string> errors;
   int figures = 0, pages = 0;
+  std::set<std::string> suite;  // the test suite's own pages (bookaccess::isSuitePage)
+  for (const std::string& f : listDir(htmlDir, ".html"))
+    if (bookaccess::isSuitePage(booktool::readFile(htmlDir + "/" + f))) suite.insert(f);
   for (const std::string& f : listDir(htmlDir, ".html")) {
     const std::string html = booktool::readFile(htmlDir + "/" + f);
     std::string out = bookaccess::withSkipLink(bookaccess::withSearchLabel(bookaccess::withLang(html)));
+    if (!suite.count(f)) out = bookaccess::withoutLinksIntoSuite(out, suite);
     if (booktool::isBookPage(out)) {
       out = bookaccess::withoutNestedMarkers(bookaccess::withTableCaptions(bookaccess::withFigures(out, f, alts, errors)));
       for (std::size_t at = out.find("<figure class=\"image\""); at != std::string::npos;

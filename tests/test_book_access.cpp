@@ -126,3 +126,34 @@ TEST_CASE("book access a listing shows no marker of a snippet nested in the quot
   CHECK(out.find("// a comment") != std::string::npos);
   CHECK(out.find("int a;") != std::string::npos);
 }
+
+TEST_CASE("book access a listing of the library links no name into the test suite") {
+  // A suite page is known by its navigation path (the tests directory first).
+  const std::string suitePage =
+      "<div id=\"nav-path\" class=\"navpath\"><ul><li class=\"navelem\"><a class=\"el\" href=\"dir_1.html\">tests</a></li>"
+      "<li class=\"navelem\"><a class=\"el\" href=\"test__x_8cpp.html\">test_x.cpp</a></li></ul></div>";
+  const std::string libraryPage =
+      "<div id=\"nav-path\" class=\"navpath\"><ul><li class=\"navelem\"><a class=\"el\" href=\"dir_2.html\">code</a></li>"
+      "<li class=\"navelem\"><a class=\"el\" href=\"tests_8cpp.html\">tests.cpp</a></li></ul></div>";
+  CHECK(bookaccess::isSuitePage(suitePage));
+  CHECK_FALSE(bookaccess::isSuitePage(libraryPage));
+  CHECK_FALSE(bookaccess::isSuitePage("<p>no navigation path</p>"));
+  // Links into the suite's pages and namespaces become their text; the library's stay.
+  const std::set<std::string> suite = {"test__x_8cpp.html"};
+  const std::string html =
+      "<div class=\"line\"><a class=\"code hl_variable\" href=\"test__x_8cpp.html#a1\">out</a>.push_back("
+      "<a class=\"code hl_function\" href=\"namespacedttest_1_1detail.html#a2\">key</a>(w, k));"
+      " <a class=\"code hl_struct\" href=\"namespacedt.html#a3\">Tri</a> "
+      "<a class=\"code hl_function\" href=\"namespacedoctest.html#a4\">check</a>"
+      " <a class=\"el\" href=\"test__x_8cpp.html\">the test</a></div>";
+  const std::string out = bookaccess::withoutLinksIntoSuite(html, suite);
+  INFO(out);
+  CHECK(out.find("test__x_8cpp.html#a1") == std::string::npos);
+  CHECK(out.find("namespacedttest_1_1detail.html") == std::string::npos);
+  CHECK(out.find("namespacedoctest.html") == std::string::npos);
+  CHECK(out.find(">out</a>") == std::string::npos);
+  CHECK(out.find("<div class=\"line\">out.push_back(key(w, k)); ") != std::string::npos);
+  CHECK(out.find("<a class=\"code hl_struct\" href=\"namespacedt.html#a3\">Tri</a>") != std::string::npos);
+  // A prose link (class "el") to a test is the claim's one click: kept.
+  CHECK(out.find("<a class=\"el\" href=\"test__x_8cpp.html\">the test</a>") != std::string::npos);
+}
