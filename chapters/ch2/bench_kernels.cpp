@@ -81,6 +81,15 @@ std::size_t familySize(Family f, std::size_t n) {
   return f == Family::ExponentSpread ? std::min<std::size_t>(n, 20000) : n;
 }
 
+// Whether the set is measured at the size n of the run's sizes: every set at every size, but the
+// exponent spread, whose size is fixed, once, at the first size that reaches it (or the last).
+bool measuredAt(Family f, std::size_t n, const std::vector<std::size_t>& sizes) {
+  if (f != Family::ExponentSpread) return true;
+  for (std::size_t s : sizes)
+    if (familySize(f, s) == familySize(f, std::size_t(-1)) || s == sizes.back()) return n == s;
+  return false;
+}
+
 double wallSeconds() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
@@ -525,7 +534,7 @@ void addThreadModelRow(const Bench& b, Family f, std::size_t n, const std::vecto
     if (med > tally.worstTwo) {
       tally.worstTwo = med;
       tally.worstTwoFamily = familyName(f);
-      tally.worstTwoN = familySize(f, n);
+      tally.worstTwoN = model->all.front().points;
     }
     const Measure& d = model->all.front();  // the decision is the same in every run
     std::vector<double> shares;
@@ -535,14 +544,15 @@ void addThreadModelRow(const Bench& b, Family f, std::size_t n, const std::vecto
     if (d.threadsUsed == 1) tally.worstOneDecision = std::max(tally.worstOneDecision, median(shares));
     std::string& list = sameKernel ? tally.sameKernelOn : tally.lostOn;
     if (med > noise)
-      list += std::string(list.empty() ? "" : ", ") + familyName(f) + " at " + std::to_string(familySize(f, n));
+      list += std::string(list.empty() ? "" : ", ") + familyName(f) + " at " + std::to_string(model->all.front().points);
     if (f == Family::Uniform && n == verdictN)
       tally.decisionShare = median([&] {
         std::vector<double> v;
         for (const Measure& x : model->all) v.push_back(x.decisionSeconds / x.wall);
         return v;
       }());
-    mt.add({familyName(f), std::to_string(familySize(f, n)),
+    // The points the set has (a grid has the square nearest n: fewer than n, perhaps).
+    mt.add({familyName(f), std::to_string(d.points),
             d.cutShare > 0 ? ch::fmt("%.3f", d.cutShare) : "-",
             d.cutShare > 0 ? ch::fmt("%.2f", d.cutRatio) : "-",
             std::to_string(d.threadsUsed), dt::parallelReasonName(d.reason),
@@ -642,14 +652,16 @@ int main(int argc, char** argv) {
   const Bench b = benchOf(o);
   ch::Table t = benchTable(b), mt = threadModelTable(b);
   Tally tally;
-  const std::size_t nFamilies = std::size(kFamilies);
   std::uint64_t runs = 0;
-  for (std::size_t n : b.sizes) runs += n >= 100000000 ? 2 : nFamilies * b.methods.size();
+  for (std::size_t n : b.sizes)
+    for (Family f : kFamilies)
+      if (measuredAt(f, n, b.sizes) && (n < 100000000 || f == Family::Uniform))
+        runs += n >= 100000000 ? 2 : b.methods.size();
   ch::Progress progress("bench_kernels", runs);
   std::uint64_t done = 0;
   for (std::size_t n : b.sizes) {
     for (Family f : kFamilies) {
-      if (familySize(f, n) < n && n != b.sizes.front()) continue;  // its one size: measured once
+      if (!measuredAt(f, n, b.sizes)) continue;  // a set of one size: measured once
       // 10^8: the fast kernels on uniform points only (CGAL and the listings would take long).
       if (n >= 100000000 && f != Family::Uniform) continue;
       std::vector<Method> ran;

@@ -445,7 +445,7 @@ void setParallelValues(ch::Values& values, const ThreadRuns& r) {
   values.set("par.two_target_verdict", !ceil ? "not measured" : wall2 <= kTwoTarget ? "met" : "missed");
   values.set("par.ceiling_verdict",
              !ceil ? "was not measured"
-                   : ceiling <= kTwoTarget ? "allows it: what is missing is the kernel's"
+                   : ceiling <= kTwoTarget ? "allows it"
                                            : "does not allow it, whatever the kernel");
   const bool lk = lockRun && seq;
   values.set("par.locks_wall_ratio2", lk ? ch::fmt("%.2f", (*lockRun)[0] / (*seq)[0]) : "(not measured)");
@@ -621,6 +621,8 @@ void setBudgetValues(const Run& s, const std::vector<std::vector<double>>& b, ch
   // the k - 1 cuts, the output shared by k threads.
   const bool ranP = !twoP.empty() && twoP[bParallelPoints] > 0;
   values.set("par.budget_wall2_parts", ranP ? ch::fmt("%.2f", twoP[bWall] / seq[bWall]) : none);
+  values.set("par.budget_parts_target", !ranP ? "not measured"
+                                        : twoP[bWall] / seq[bWall] <= kTwoTarget ? "met" : "missed");
   values.set("par.budget_seam_parts", ranP ? pct(twoP[bLone] / twoP[bWall]) : none);
   for (const auto& [k, key] : {std::pair{4.0, "par.budget_parts_k4"}, std::pair{8.0, "par.budget_parts_k8"}})
     values.set(key, ranP ? ch::fmt("%.2f", (twoP[bBusy] / k + twoP[bLone] * (k - 1) + twoP[bFinish] * 2 / k) /
