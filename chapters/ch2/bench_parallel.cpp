@@ -302,7 +302,7 @@ struct Run {
   const ch::Options& o;
   bool ownCaches;        // this machine's cache sizes, or those of --cache-dir
   std::string cacheDir;
-  int reps;              // alternating runs, the best kept
+  int reps;              // alternating runs: the median kept (the budget: the best)
   int hw;                // the machine's hardware threads
   std::vector<int> threadList;
   std::size_t maxN;
@@ -316,7 +316,7 @@ Run runOf(const ch::Options& o) {
   // figure test plants one whose caches all fall within its small run's sizes).
   const bool ownCaches = !o.has("--cache-dir");
   const std::string cacheDir = ownCaches ? std::string(kSysCacheDir) : o.extra.at("--cache-dir");
-  const int reps = int(o.number("--reps", o.quick ? 1 : 3));
+  const int reps = int(o.number("--reps", o.quick ? 1 : 5));
   const int hw = dt::defaultThreadCount();
   std::vector<int> threadList = {1, 2};
   if (hw > 2) threadList.push_back(hw);
@@ -335,19 +335,44 @@ Run runOf(const ch::Options& o) {
 
 // ---- 1. time against threads (table_parallel) ----------------------------------------------
 
+using ch::median;
+
 // One size of the table against threads: its runs (a thread count; -2 two sequential runs at
-// once; -3 two threads with a lock per triangle; 0 CGAL) and the best of each.
+// once; -3 two threads with a lock per triangle; -4 with slabs; 0 CGAL), every repetition of
+// each (all[j][k], in the order they ran) and the one with the median wall time (best[j]).
 struct ThreadRuns {
   std::size_t n;
   std::vector<int> runs;
   std::vector<std::vector<double>> best;
-  // The best of a run, or null when it did not run (the last, if listed twice).
-  const std::vector<double>* of(int run) const {
+  std::vector<std::vector<std::vector<double>>> all;
+  std::size_t index(int run) const {
     for (std::size_t j = runs.size(); j-- > 0;)
-      if (runs[j] == run) return &best[j];
-    return nullptr;
+      if (runs[j] == run) return j;
+    return runs.size();
+  }
+  // The median run of a kind, or null when it did not run (the last, if listed twice).
+  const std::vector<double>* of(int run) const {
+    const std::size_t j = index(run);
+    return j < runs.size() ? &best[j] : nullptr;
+  }
+  // The ratios of field f (0 wall, 1 CPU) of run a to run b, repetition by repetition: the two
+  // ran one after the other in the same round, so a burst of load hits both. scale divides b.
+  std::vector<double> paired(int a, int b, int f = 0, double scale = 1) const {
+    const std::size_t i = index(a), j = index(b);
+    std::vector<double> v;
+    if (i == runs.size() || j == runs.size()) return v;
+    for (std::size_t k = 0; k < all[i].size() && k < all[j].size(); ++k)
+      v.push_back(all[i][k][std::size_t(f)] / (scale * all[j][k][std::size_t(f)]));
+    return v;
   }
 };
+
+// "min-max" of some ratios.
+std::string ratioSpread(const std::vector<double>& v) {
+  if (v.empty()) return "-";
+  return ch::fmt("%.2f", *std::min_element(v.begin(), v.end())) + "-" +
+         ch::fmt("%.2f", *std::max_element(v.begin(), v.end()));
+}
 
 ThreadRuns measureThreads(const Run& s, std::size_t n) {
   const std::vector<int>& threadList = s.threadList;
@@ -361,7 +386,7 @@ ThreadRuns measureThreads(const Run& s, std::size_t n) {
   if (pair) runs.push_back(-3);  // two threads on one shared mesh, a lock per triangle
   if (pair) runs.push_back(-4);  // two threads on one shared mesh, slabs
   if (haveCgal) runs.push_back(0);
-  std::vector<std::vector<double>> best(runs.size());
+  std::vector<std::vector<std::vector<double>>> all(runs.size());
   // Alternate the runs (all kernels once, then again): a burst of load hits them all.
   for (int k = 0; k < reps; ++k)
     for (std::size_t j = 0; j < runs.size(); ++j) {
@@ -372,14 +397,19 @@ ThreadRuns measureThreads(const Run& s, std::size_t n) {
           threadsJob(n, runs[j], k == 0, out);
       });
       if (r.empty()) throw std::runtime_error("a run failed (n = " + std::to_string(n) + ")");
-      if (best[j].empty() || r[0] < best[j][0]) {  // the best wall time, with its CPU time
-        // (every run's triangles are the same: the first run's were validated)
-        const double peak = best[j].empty() ? r[5] : std::max(best[j][5], r[5]);
-        best[j] = r;
-        best[j][5] = peak;
-      }
+      all[j].push_back(r);
     }
-  return {n, runs, best};
+  // The run with the median wall time, with its CPU time, and the largest peak of all (every
+  // run's triangles are the same: the first run's were validated).
+  std::vector<std::vector<double>> best(runs.size());
+  for (std::size_t j = 0; j < runs.size(); ++j) {
+    std::vector<std::vector<double>> byWall = all[j];
+    std::sort(byWall.begin(), byWall.end(),
+              [](const std::vector<double>& a, const std::vector<double>& b) { return a[0] < b[0]; });
+    best[j] = byWall[byWall.size() / 2];
+    for (const std::vector<double>& r : all[j]) best[j][5] = std::max(best[j][5], r[5]);
+  }
+  return {n, runs, best, all};
 }
 
 // The verdicts on the speed targets at one size, as a paragraph (parallel_verdict.html).
@@ -387,19 +417,20 @@ void sayParallelVerdict(std::ostream& pv, const ThreadRuns& r) {
   const std::size_t n = r.n;
   const std::vector<double>*seq = r.of(1), *two = r.of(2), *pairRun = r.of(-2), *cg = r.of(0);
   if (seq && two) {
-    pv << "<p>Measured in this run at n&nbsp;=&nbsp;" << n << ": with 2 threads the wall time is "
-       << ch::fmt("%.2f", (*two)[0] / (*seq)[0]) << " of the sequential kernel's (a speedup of "
-       << ch::fmt("%.2f", (*seq)[0] / (*two)[0]) << "), and the CPU time "
-       << ch::fmt("%.2f", (*two)[1] / (*seq)[1]) << " of it.";
+    const double wall2 = median(r.paired(2, 1));
+    pv << "<p>Measured in this run at n&nbsp;=&nbsp;" << n << " (medians of the runs' ratios, "
+       << "paired in turn): with 2 threads the wall time is " << ch::fmt("%.2f", wall2)
+       << " of the sequential kernel's (a speedup of " << ch::fmt("%.2f", 1 / wall2)
+       << "), and the CPU time " << ch::fmt("%.2f", median(r.paired(2, 1, 1))) << " of it.";
     if (pairRun) {
-      const double ceiling = (*pairRun)[0] / (2 * (*seq)[0]);
-      pv << " Two sequential runs at once each took up to " << ch::fmt("%.2f", (*pairRun)[0] / (*seq)[0])
+      const double ceiling = median(r.paired(-2, 1, 0, 2));
+      pv << " Two sequential runs at once each took up to " << ch::fmt("%.2f", 2 * ceiling)
          << " times a lone run's wall time, so a perfect split of the work between the two "
             "cores could reach " << ch::fmt("%.2f", ceiling) << " of one thread's wall time on "
             "this machine (the target: at most " << ch::fmt("%.2f", kTwoTarget)
          << ", which this machine " << (ceiling <= kTwoTarget ? "allows" : "does not allow")
-         << "; the parallel kernel: " << ch::fmt("%.2f", (*two)[0] / (*seq)[0]) << ", "
-         << ((*two)[0] / (*seq)[0] <= kTwoTarget ? "met" : "missed") << ").";
+         << "; the parallel kernel: " << ch::fmt("%.2f", wall2) << ", "
+         << (wall2 <= kTwoTarget ? "met" : "missed") << ").";
     }
     if (cg) {
       const double w2 = (*two)[0] / (*cg)[0], c1 = (*seq)[1] / (*cg)[1];
@@ -420,15 +451,19 @@ void setParallelValues(ch::Values& values, const ThreadRuns& r) {
   const std::vector<double>*seq = r.of(1), *two = r.of(2), *pairRun = r.of(-2), *lockRun = r.of(-3),
                             *slabRun = r.of(-4), *cg = r.of(0);
   const bool both = seq && two;
+  // Ratios between kernels: the medians of the runs' ratios, paired in turn (ThreadRuns::paired).
+  auto med = [&](int a, int b, int f = 0, double scale = 1) { return median(r.paired(a, b, f, scale)); };
   values.set("par.n", std::to_string(n));
   values.set("par.load", loadAverage());
-  values.set("par.speedup2", both ? ch::fmt("%.2f", (*seq)[0] / (*two)[0]) : "(not measured)");
-  values.set("par.cpu_ratio2", both ? ch::fmt("%.2f", (*two)[1] / (*seq)[1]) : "(not measured)");
+  values.set("par.speedup2", both ? ch::fmt("%.2f", 1 / med(2, 1)) : "(not measured)");
+  values.set("par.cpu_ratio2", both ? ch::fmt("%.2f", med(2, 1, 1)) : "(not measured)");
   values.set("par.two_verdict",
              !both ? "not measured"
-                   : ((*two)[0] < (*seq)[0] ? "faster than one thread" : "slower than one thread"));
+                   : (med(2, 1) < 1 ? "faster than one thread" : "slower than one thread"));
+  values.set("par.wall_ratio2_spread", both ? ratioSpread(r.paired(2, 1)) : "(not measured)");
+  values.set("par.reps", std::to_string(both ? r.paired(2, 1).size() : 0));
   const bool ref = both && cg;
-  const double w2 = ref ? (*two)[0] / (*cg)[0] : 0, c1 = ref ? (*seq)[1] / (*cg)[1] : 0;
+  const double w2 = ref ? med(2, 0) : 0, c1 = ref ? med(1, 0, 1) : 0;
   values.set("par.cgal_wall2", ref ? ch::fmt("%.2f", w2) : "(not measured)");
   values.set("par.cgal_cpu1", ref ? ch::fmt("%.2f", c1) : "(not measured)");
   values.set("par.target2", ref ? (w2 <= 0.5 ? "met" : "missed") : "not measured");
@@ -436,9 +471,9 @@ void setParallelValues(ch::Values& values, const ThreadRuns& r) {
   values.num("par.target1_bound", kCpuTarget1, "%.2f");
   // The machine's ceiling for two threads, and the kernel against it.
   const bool ceil = pairRun && seq && two;
-  const double ceiling = ceil ? (*pairRun)[0] / (2 * (*seq)[0]) : 0;
-  const double wall2 = ceil ? (*two)[0] / (*seq)[0] : 0;
-  values.set("par.pair_slowdown", ceil ? ch::fmt("%.2f", (*pairRun)[0] / (*seq)[0]) : "(not measured)");
+  const double ceiling = ceil ? med(-2, 1, 0, 2) : 0;
+  const double wall2 = ceil ? med(2, 1) : 0;
+  values.set("par.pair_slowdown", ceil ? ch::fmt("%.2f", med(-2, 1)) : "(not measured)");
   values.set("par.ceiling2", ceil ? ch::fmt("%.2f", ceiling) : "(not measured)");
   values.set("par.wall_ratio2", ceil ? ch::fmt("%.2f", wall2) : "(not measured)");
   values.num("par.two_target", kTwoTarget, "%.2f");
@@ -448,29 +483,36 @@ void setParallelValues(ch::Values& values, const ThreadRuns& r) {
                    : ceiling <= kTwoTarget ? "allows it"
                                            : "does not allow it, whatever the kernel");
   const bool lk = lockRun && seq;
-  values.set("par.locks_wall_ratio2", lk ? ch::fmt("%.2f", (*lockRun)[0] / (*seq)[0]) : "(not measured)");
+  values.set("par.locks_wall_ratio2", lk ? ch::fmt("%.2f", med(-3, 1)) : "(not measured)");
   values.set("par.locks_cpu_extra2",
-             lk ? ch::fmt("%.0f%%", 100 * ((*lockRun)[1] / (*seq)[1] - 1)) : "(not measured)");
+             lk ? ch::fmt("%.0f%%", 100 * (med(-3, 1, 1) - 1)) : "(not measured)");
   const bool sl = slabRun && seq;
-  values.set("par.slabs_wall_ratio2", sl ? ch::fmt("%.2f", (*slabRun)[0] / (*seq)[0]) : "(not measured)");
+  values.set("par.slabs_wall_ratio2", sl ? ch::fmt("%.2f", med(-4, 1)) : "(not measured)");
   values.set("par.slabs_vs_locks",
              !(lk && sl) ? "was not measured"
-             : (*slabRun)[1] < (*lockRun)[1] ? "took less CPU time than the locks"
-                                             : "did not take less CPU time than the locks");
+             : med(-4, -3, 1) < 1 ? "took less CPU time than the locks"
+                                  : "did not take less CPU time than the locks");
   values.set("par.parts_vs_shared",
              !(lk && sl && two) ? "was not measured"
-             : (*two)[0] < std::min((*slabRun)[0], (*lockRun)[0])
+             : med(2, -4) < 1 && med(2, -3) < 1
                  ? "took less wall time than both designs of the shared mesh"
                  : "did not take less wall time than both designs of the shared mesh");
   values.set("par.cpu_extra2",
-             ceil ? ch::fmt("%.0f%%", 100 * ((*two)[1] / (*seq)[1] - 1)) : "(not measured)");
+             ceil ? ch::fmt("%.0f%%", 100 * (med(2, 1, 1) - 1)) : "(not measured)");
 }
 
-void addParallelRows(ch::Table& t, const ThreadRuns& r) {
-  const std::size_t n = r.n;
-  const std::vector<int>& runs = r.runs;
-  const std::vector<std::vector<double>>& best = r.best;
-  const std::vector<double>* cg = r.of(0);
+// "min-max" of the wall times of a run's repetitions.
+std::string wallSpread(const std::vector<std::vector<double>>& reps) {
+  double lo = 1e300, hi = 0;
+  for (const std::vector<double>& x : reps) lo = std::min(lo, x[0]), hi = std::max(hi, x[0]);
+  return ch::fmt("%.3f", lo) + "-" + ch::fmt("%.3f", hi);
+}
+
+void addParallelRows(ch::Table& t, const ThreadRuns& rr) {
+  const std::size_t n = rr.n;
+  const std::vector<int>& runs = rr.runs;
+  const std::vector<std::vector<double>>& best = rr.best;
+  const std::vector<double>* cg = rr.of(0);
   for (std::size_t j = 0; j < runs.size(); ++j) {
     const std::vector<double>& r = best[j];
     const bool cgal = runs[j] == 0;
@@ -482,8 +524,9 @@ void addParallelRows(ch::Table& t, const ThreadRuns& r) {
                 : slabs ? "fast parallel, shared mesh, slabs"
                         : (runs[j] == 1 ? "fast (sequential)" : "fast parallel, parts and seam"),
            cgal ? "1" : twice ? "2 x 1" : locks || slabs ? "2" : std::to_string(runs[j]), ch::fmt("%.3f", r[0]),
-           ch::fmt("%.3f", r[1]),
-           cg ? ch::fmt("%.2f", r[0] / (*cg)[0]) : "-", cg ? ch::fmt("%.2f", r[1] / (*cg)[1]) : "-",
+           wallSpread(rr.all[j]), ch::fmt("%.3f", r[1]),
+           cg ? ch::fmt("%.2f", median(rr.paired(runs[j], 0))) : "-",
+           cg ? ch::fmt("%.2f", median(rr.paired(runs[j], 0, 1))) : "-",
            cgal || twice || runs[j] == 1 ? "-" : ch::fmt("%.3f", 100 * r[3] / std::max(1.0, r[4])),
            ch::fmt("%.0f", r[5]), ch::fmt("%.0f", r[2]), cgal ? "-" : "exact"});
   }
@@ -495,16 +538,17 @@ void tableParallel(const Run& s, ch::Values& values) {
   const std::string loadBefore = loadAverage();
   std::ostringstream pv;  // the verdicts on the speed targets, computed
   ch::Table t;
-  t.header = {"n", "kernel", "threads", "wall (s)", "CPU (s)", "wall / CGAL", "CPU / CGAL",
-              "deferred (%)", "peak (MB)", "triangles", "checked"};
+  t.header = {"n", "kernel", "threads", "wall (s)", "wall min-max (s)", "CPU (s)", "wall / CGAL",
+              "CPU / CGAL", "deferred (%)", "peak (MB)", "triangles", "checked"};
   for (std::size_t n : s.sizes) {
     const ThreadRuns r = measureThreads(s, n);
     sayParallelVerdict(pv, r);
     if (n == s.sizes.back()) setParallelValues(values, r);
     addParallelRows(t, r);
   }
-  t.caption = "Uniform random points, one process per run, runs alternated, best wall time of " +
-              std::to_string(reps) + " (with that run's CPU time, all threads); the machine has " +
+  t.caption = "Uniform random points, one process per run, runs alternated, the median wall time of " +
+              std::to_string(reps) + " (with that run's CPU time, all threads) and the spread of the wall times; "
+              "the ratios to CGAL are the medians of the runs' ratios, paired in turn; the machine has " +
               std::to_string(hw) + " hardware threads; load average before / after: " +
               loadBefore + " / " + loadAverage() +
               ". Fast parallel, parts and seam: the default design, each thread triangulating one slab's "
@@ -1023,7 +1067,7 @@ int main(int argc, char** argv) {
   const ch::Program p{"bench_parallel",
                       "The parallel kernel against threads, and time per point (--max-n 100000000: up to 10^8).",
                       1000, 100000000, {"fig_time_per_point"},
-                      {{"--reps", "N", "alternating runs, the best kept (default 3, 1 with --quick)", 1, 1000},
+                      {{"--reps", "N", "alternating runs: the median kept, the time budget the best (default 5, 1 with --quick)", 1, 1000},
                        {"--threads", "LIST", "thread counts to measure, e.g. 1,2,4 (each 1 to 64)"},
                        {"--cache-dir", "DIR",
                         "read the cache sizes the chart marks from DIR (index*/level, type, size, as Linux "
