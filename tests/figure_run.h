@@ -35,14 +35,16 @@ struct PlantedCache {
 /// The caches bench_parallel marks in the figure run (--cache-dir): an instruction cache, which
 /// it leaves out, and three data or unified ones small enough that the n at which the kernel's
 /// data fills each is within the run's sizes. That n is the size over the bytes per point of the
-/// largest n, and a small run's peak memory is mostly the process's own (about 3 MB in a
-/// Release build, 60 MB with the sanitizers): with --max-n 100000 the three fall between about
-/// 800 and 20000 points in both builds, inside the chart's sizes (from about 316 to 10^5).
+/// largest n, and a small run's peak memory is mostly the process's own, inherited from the
+/// parent it is forked from (about 11 MB at 10^5 points in a Release build, about 110 bytes a
+/// point; 60 to 165 MB with the sanitizers, up to about 1700 bytes a point). With --max-n 100000
+/// the chart's sizes run from about 316 to 10^5, so 1, 2 and 4 MiB fall inside them for any
+/// bytes per point from about 42 to 3300: between about 600 and 40000 points in both builds.
 inline const std::vector<PlantedCache>& figureRunCaches() {
   static const std::vector<PlantedCache> caches = {{"index0", "1", "Instruction", "32K"},
-                                                   {"index1", "1", "Data", "512K"},
-                                                   {"index2", "2", "Unified", "1024K"},
-                                                   {"index3", "3", "Unified", "2M"}};
+                                                   {"index1", "1", "Data", "1024K"},
+                                                   {"index2", "2", "Unified", "2M"},
+                                                   {"index3", "3", "Unified", "4M"}};
   return caches;
 }
 
