@@ -116,7 +116,7 @@ void classifyPart(Part& part) {
   // 2 a triangle tested and safe.
   part.safe.assign(count, 0);
   std::vector<int> unsafe;  // the faces that are not safe, ghosts included: few (near the cuts and the hull)
-  std::vector<int> todo;    // triangles to test: the ghosts' neighbours, then the neighbours of those not safe
+  std::vector<int> toTest;  // triangles to test: the ghosts' neighbours, then the neighbours of those not safe
   std::size_t triangles = 0, notSafe = 0;  // triangles of T; of them, those found not safe
   for (std::size_t t = 0; t < count; ++t) {
     const Tri& w = S.V[t];
@@ -132,13 +132,13 @@ void classifyPart(Part& part) {
   auto reach = [&](int u) {
     for (int k = 0; k < 3; ++k) {
       const int nb = S.A[3 * std::size_t(u) + std::size_t(k)] / 3;
-      if (part.safe[std::size_t(nb)] == 1) todo.push_back(nb);
+      if (part.safe[std::size_t(nb)] == 1) toTest.push_back(nb);
     }
   };
   for (int g : unsafe) reach(g);
-  while (!todo.empty()) {
-    const int t = todo.back();
-    todo.pop_back();
+  while (!toTest.empty()) {
+    const int t = toTest.back();
+    toTest.pop_back();
     if (part.safe[std::size_t(t)] != 1) continue;  // met twice
     const Tri& w = S.V[std::size_t(t)];
     if (diskInSlabInline(pt(w[0]), pt(w[1]), pt(w[2]), part.lo, part.hi)) {
