@@ -77,8 +77,10 @@ const char* familyName(Family f) {
   }
 }
 // Exponent spread: 2.3.1's GMP-heavy case; 20,000 points whatever the size asked.
+constexpr std::size_t kSpreadPoints = 20000;  // the exponent spread's one size
+
 std::size_t familySize(Family f, std::size_t n) {
-  return f == Family::ExponentSpread ? std::min<std::size_t>(n, 20000) : n;
+  return f == Family::ExponentSpread ? std::min(n, kSpreadPoints) : n;
 }
 
 // Whether the set is measured at the size n of the run's sizes: every set at every size, but the
@@ -86,7 +88,7 @@ std::size_t familySize(Family f, std::size_t n) {
 bool measuredAt(Family f, std::size_t n, const std::vector<std::size_t>& sizes) {
   if (f != Family::ExponentSpread) return true;
   for (std::size_t s : sizes)
-    if (familySize(f, s) == familySize(f, std::size_t(-1)) || s == sizes.back()) return n == s;
+    if (s >= kSpreadPoints || s == sizes.back()) return n == s;
   return false;
 }
 
@@ -531,12 +533,12 @@ void addThreadModelRow(const Bench& b, Family f, std::size_t n, const std::vecto
     for (double r : mr) tally.pairsBeat += r < 1.0;
     tally.pairs += mr.size();
     const double med = median(mr);
+    const Measure& d = model->all.front();  // the decision is the same in every run
     if (med > tally.worstTwo) {
       tally.worstTwo = med;
       tally.worstTwoFamily = familyName(f);
-      tally.worstTwoN = model->all.front().points;
+      tally.worstTwoN = d.points;
     }
-    const Measure& d = model->all.front();  // the decision is the same in every run
     std::vector<double> shares;
     for (const Measure& x : model->all) shares.push_back(x.decisionSeconds / x.wall);
     // One thread chosen: only the decision differs from the column of one thread.
@@ -544,7 +546,7 @@ void addThreadModelRow(const Bench& b, Family f, std::size_t n, const std::vecto
     if (d.threadsUsed == 1) tally.worstOneDecision = std::max(tally.worstOneDecision, median(shares));
     std::string& list = sameKernel ? tally.sameKernelOn : tally.lostOn;
     if (med > noise)
-      list += std::string(list.empty() ? "" : ", ") + familyName(f) + " at " + std::to_string(model->all.front().points);
+      list += std::string(list.empty() ? "" : ", ") + familyName(f) + " at " + std::to_string(d.points);
     if (f == Family::Uniform && n == verdictN)
       tally.decisionShare = median([&] {
         std::vector<double> v;
