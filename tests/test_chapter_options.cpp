@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <sstream>
@@ -333,7 +334,9 @@ TEST_CASE("chapter options bench_parallel measures the cost model's constants an
     got.push_back({std::size_t(std::atol(rows[i][cn].c_str())), rows[i][cw] == "1 (uniform)",
                    std::atof(rows[i][cf].c_str()), std::atof(rows[i][cr].c_str()), rows[i][cb] == "yes"});
     CHECK(got.back().ratio > 0);
-    CHECK(got.back().beat == (got.back().ratio < 1));
+    // The column shows the ratio to two decimals; the verdict is taken on the ratio itself, so a
+    // ratio shown as 1.00 may have beaten one thread (0.996) or not (1.004).
+    if (std::fabs(got.back().ratio - 1) > 0.005) CHECK(got.back().beat == (got.back().ratio < 1));
   }
   // The forecast is computed, not timed: uniform points give about the reference share, the
   // narrowest band far more than the model's bound.
